@@ -1,0 +1,84 @@
+//! The course's pinhole camera: a position, a yaw/pitch/roll orientation in degrees and a field of view.
+//!
+//! Conventions (the same as the course's C++ `Camera`, so its scenes carry over unchanged):
+//! - With zero angles the camera looks along +Z, +Y is up and +X is to the right.
+//! - The orientation is applied as roll (about Z), then pitch (about X; positive looks up), then yaw (about Y;
+//!   positive turns to the left, towards -X).
+//! - `fov` is the angle, in degrees, across the image's **diagonal** (the course measures it from the centre
+//!   to a corner); `aspect` is width / height and is set from the image size when a frame begins.
+
+use crate::math::Vector;
+use crate::ray::Ray;
+use glam::Mat3A;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Camera {
+    pub position: Vector,
+    /// Degrees; positive turns left.
+    pub yaw: f32,
+    /// Degrees; positive looks up.
+    pub pitch: f32,
+    /// Degrees; positive tilts the picture clockwise.
+    pub roll: f32,
+    /// Degrees, across the diagonal of the image.
+    pub fov: f32,
+    /// Width / height.
+    pub aspect: f32,
+}
+
+impl Default for Camera {
+    fn default() -> Camera {
+        Camera { position: Vector::ZERO, yaw: 0.0, pitch: 0.0, roll: 0.0, fov: 90.0, aspect: 4.0 / 3.0 }
+    }
+}
+
+/// The course's rotation: roll, then pitch, then yaw, with the course's signs.
+pub fn rotation(yaw: f32, pitch: f32, roll: f32) -> Mat3A {
+    Mat3A::from_rotation_y(-yaw.to_radians())
+        * Mat3A::from_rotation_x(-pitch.to_radians())
+        * Mat3A::from_rotation_z(-roll.to_radians())
+}
+
+/// A camera prepared for one frame of a given size (the course's `Camera::frameBegin`).
+#[derive(Clone, Copy, Debug)]
+pub struct CameraFrame {
+    position: Vector,
+    up_left: Vector,
+    /// From the left edge to the right edge of the image plane.
+    across: Vector,
+    /// From the top edge to the bottom edge.
+    down: Vector,
+    width: f32,
+    height: f32,
+}
+
+impl Camera {
+    /// Prepares the camera for a `width` x `height` image (sets `aspect`).
+    pub fn frame(&self, width: u32, height: u32) -> CameraFrame {
+        let aspect = width as f32 / height as f32;
+        // The corner (-aspect, 1, 1) of the unscaled image plane must lie fov/2 from the axis.
+        let scaling = (self.fov.to_radians() * 0.5).tan() / aspect.hypot(1.0);
+        let (x, y) = (-aspect * scaling, scaling);
+        let r = rotation(self.yaw, self.pitch, self.roll);
+        let up_left = r * Vector::new(x, y, 1.0);
+        let up_right = r * Vector::new(-x, y, 1.0);
+        let down_left = r * Vector::new(x, -y, 1.0);
+        CameraFrame {
+            position: self.position,
+            up_left,
+            across: up_right - up_left,
+            down: down_left - up_left,
+            width: width as f32,
+            height: height as f32,
+        }
+    }
+}
+
+impl CameraFrame {
+    /// The camera ray through the image point (x, y), measured in pixels from the top-left corner
+    /// (pixel (i, j) covers [i, i+1) x [j, j+1); its centre is (i + 0.5, j + 0.5)).
+    pub fn get_screen_ray(&self, x: f32, y: f32) -> Ray {
+        let through = self.up_left + self.across * (x / self.width) + self.down * (y / self.height);
+        Ray::new(self.position, through.normalize())
+    }
+}

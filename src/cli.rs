@@ -1,0 +1,141 @@
+//! The command line every example shares, and the one function that runs an example end to end:
+//! parse the options, build the scene, render, write the picture, compare it with a reference if asked,
+//! and print one summary line. The regression tests go through [`render_example`], the same path.
+//!
+//! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
+//! unknown options), never a panic.
+
+use crate::compare;
+use crate::error::{Error, Result};
+use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically};
+use crate::scene::Scene;
+use clap::Parser;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Options every example accepts.
+#[derive(clap::Args, Clone, Debug)]
+#[command(next_help_heading = "Common options")]
+pub struct CommonArgs {
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 640)]
+    pub width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 480)]
+    pub height: u32,
+    /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
+    /// grid, any other count N-rooks stratification. [default: the example's own, see its --help text]
+    #[arg(long)]
+    pub spp: Option<u32>,
+    /// Worker threads [default: all cores]. The picture is the same for any count.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Maximum ray depth (the slides' MAX_RAY_DEPTH): deeper rays return black. [default: the scene's own]
+    #[arg(long)]
+    pub max_depth: Option<u32>,
+    /// Seed of every random choice; the same seed gives the same picture, byte for byte.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
+    /// [default: out/<example>.png]
+    #[arg(long, short)]
+    pub output: Option<PathBuf>,
+    /// Print nothing but errors: no progress bar, no summary.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Compare the picture with a reference PNG: print RMSE, PSNR and the largest difference, and write a
+    /// heat map of the difference next to the output (<output stem>-diff.png).
+    #[arg(long, value_name = "REFERENCE.png")]
+    pub compare: Option<PathBuf>,
+}
+
+/// An example: its options (clap) and how they turn into a scene.
+pub trait Example: Parser {
+    /// The example's name: its binary, its default output `out/<NAME>.png`, its `expected/<NAME>.png`.
+    const NAME: &'static str;
+    /// Samples per pixel when `--spp` is not given.
+    const DEFAULT_SPP: u32;
+    fn common(&self) -> &CommonArgs;
+    /// Builds the scene the options describe. Bad files or values are errors, not panics.
+    fn build_scene(&self) -> Result<Scene>;
+}
+
+/// The render settings the options ask for.
+pub fn settings<E: Example>(args: &E) -> RenderSettings {
+    let c = args.common();
+    RenderSettings {
+        width: c.width,
+        height: c.height,
+        spp: c.spp.unwrap_or(E::DEFAULT_SPP),
+        threads: c.threads,
+        seed: c.seed,
+        progress: !c.quiet,
+    }
+}
+
+/// Builds and renders an example's scene as its options say (the path both `main` and the tests use).
+pub fn render_example<E: Example>(args: &E) -> Result<(Frame, RenderStats)> {
+    let settings = settings(args);
+    settings.check()?;
+    let mut scene = args.build_scene()?;
+    if let Some(depth) = args.common().max_depth {
+        scene.max_depth = depth;
+    }
+    render(&scene, &settings)
+}
+
+/// Where the picture goes.
+pub fn output_path<E: Example>(args: &E) -> PathBuf {
+    args.common().output.clone().unwrap_or_else(|| Path::new("out").join(format!("{}.png", E::NAME)))
+}
+
+/// Runs an example end to end; the whole `main` of every example.
+pub fn main<E: Example>() -> ExitCode {
+    let args = E::parse();
+    match run(&args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("{}: error: {e}", E::NAME);
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run<E: Example>(args: &E) -> Result<()> {
+    let output = output_path(args);
+    let (frame, stats) = render_example(args)?;
+    frame.save(&output)?;
+    let settings = settings(args);
+    if !args.common().quiet {
+        let rays = stats.counters.total();
+        let secs = stats.elapsed.as_secs_f64();
+        println!(
+            "{}: {}x{}, {} spp, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
+            E::NAME,
+            settings.width,
+            settings.height,
+            settings.spp,
+            secs,
+            stats.threads,
+            rays as f64 * 1e-6,
+            rays as f64 * 1e-6 / secs.max(1e-9),
+            output.display()
+        );
+    }
+    if let Some(reference) = &args.common().compare {
+        let expected = compare::load_reference(reference)?;
+        let actual = frame.to_rgb8();
+        let diff = compare::difference(&actual, &expected).map_err(|e| match e {
+            Error::Parameter { value, reason, .. } => {
+                Error::file("cannot compare with", reference, format!("the render is {value}, {reason}"))
+            }
+            e => e,
+        })?;
+        let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
+        let heat_path = output.with_file_name(format!("{stem}-diff.png"));
+        let heat = compare::heat_map(&actual, &expected)?;
+        save_atomically(&heat_path, |tmp| heat.save_with_format(tmp, image::ImageFormat::Png))?;
+        println!("compared with {}: {diff}; heat map -> {}", reference.display(), heat_path.display());
+    }
+    Ok(())
+}

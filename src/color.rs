@@ -1,0 +1,130 @@
+//! Linear RGB colour (lectures 1-6: `Color`), and the sRGB transfer function used when images are read and
+//! written.
+//!
+//! All shading happens in *linear* light: adding two colours or scaling one by a light's intensity is
+//! physically meaningful only there. 8-bit images (textures, the PNG output) store sRGB-encoded values,
+//! so bitmap textures are decoded with [`srgb_to_linear`] when loaded and the frame is encoded with
+//! [`linear_to_srgb`] when written. The course's C++ code applies a 2.2 gamma; the exact sRGB curve is used
+//! here instead, so that PNGs round-trip.
+
+use glam::Vec3A;
+use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Sub};
+
+/// A linear RGB colour. Components are usually in [0, 1] but may exceed 1 (bright lights, HDR environments).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Color(pub Vec3A);
+
+impl Color {
+    pub const BLACK: Color = Color(Vec3A::ZERO);
+    pub const WHITE: Color = Color(Vec3A::ONE);
+
+    pub const fn new(r: f32, g: f32, b: f32) -> Color {
+        Color(Vec3A::new(r, g, b))
+    }
+    /// A grey colour with all three channels equal to `v`.
+    pub const fn gray(v: f32) -> Color {
+        Color(Vec3A::splat(v))
+    }
+    pub fn r(self) -> f32 {
+        self.0.x
+    }
+    pub fn g(self) -> f32 {
+        self.0.y
+    }
+    pub fn b(self) -> f32 {
+        self.0.z
+    }
+    pub fn to_array(self) -> [f32; 3] {
+        self.0.to_array()
+    }
+    /// The largest of the three channels: how much a colour can still change a result.
+    pub fn max_channel(self) -> f32 {
+        self.0.max_element()
+    }
+    /// Rec. 709 luminance of linear RGB.
+    pub fn luminance(self) -> f32 {
+        self.0.dot(Vec3A::new(0.2126, 0.7152, 0.0722))
+    }
+    pub fn is_finite(self) -> bool {
+        self.0.is_finite()
+    }
+    /// True when every channel is exactly zero.
+    pub fn is_black(self) -> bool {
+        self.0 == Vec3A::ZERO
+    }
+    /// Replaces NaN and negative channels by zero and infinities by `f32::MAX`, so that one broken sample
+    /// can never poison a pixel average.
+    pub fn sanitized(self) -> Color {
+        let c = self.0.to_array().map(|v| if v.is_nan() || v < 0.0 { 0.0 } else { v.min(f32::MAX) });
+        Color(Vec3A::from_array(c))
+    }
+}
+
+impl Add for Color {
+    type Output = Color;
+    fn add(self, o: Color) -> Color {
+        Color(self.0 + o.0)
+    }
+}
+impl AddAssign for Color {
+    fn add_assign(&mut self, o: Color) {
+        self.0 += o.0;
+    }
+}
+impl Sub for Color {
+    type Output = Color;
+    fn sub(self, o: Color) -> Color {
+        Color(self.0 - o.0)
+    }
+}
+impl Mul for Color {
+    type Output = Color;
+    fn mul(self, o: Color) -> Color {
+        Color(self.0 * o.0)
+    }
+}
+impl MulAssign for Color {
+    fn mul_assign(&mut self, o: Color) {
+        self.0 *= o.0;
+    }
+}
+impl Mul<f32> for Color {
+    type Output = Color;
+    fn mul(self, s: f32) -> Color {
+        Color(self.0 * s)
+    }
+}
+impl MulAssign<f32> for Color {
+    fn mul_assign(&mut self, s: f32) {
+        self.0 *= s;
+    }
+}
+impl Div<f32> for Color {
+    type Output = Color;
+    fn div(self, s: f32) -> Color {
+        Color(self.0 / s)
+    }
+}
+
+/// The sRGB electro-optical transfer function: an encoded value in [0, 1] to linear light.
+pub fn srgb_to_linear(v: f32) -> f32 {
+    if v <= 0.04045 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+}
+
+/// Linear light to an sRGB-encoded value; the input is clamped to [0, 1] first.
+pub fn linear_to_srgb(v: f32) -> f32 {
+    let v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+    if v <= 0.003_130_8 { v * 12.92 } else { 1.055 * v.powf(1.0 / 2.4) - 0.055 }
+}
+
+/// The 256 linear values of the 8-bit sRGB codes, so texture decoding is a table look-up.
+pub fn srgb8_to_linear_table() -> &'static [f32; 256] {
+    use std::sync::OnceLock;
+    static TABLE: OnceLock<[f32; 256]> = OnceLock::new();
+    TABLE.get_or_init(|| std::array::from_fn(|i| srgb_to_linear(i as f32 / 255.0)))
+}
+
+/// Encodes a linear colour as three 8-bit sRGB codes (round to nearest).
+pub fn to_srgb8(c: Color) -> [u8; 3] {
+    c.to_array().map(|v| (linear_to_srgb(v) * 255.0 + 0.5) as u8)
+}

@@ -1,0 +1,74 @@
+//! The course's `Sphere`: a centre and a radius, with u/v from spherical coordinates
+//! (u = longitude / 2 pi, measured from -X through +Z; v = 0 at the top, 1 at the bottom), as in the course.
+//! Scale it with a node transform to get an ellipsoid.
+
+use super::{Aabb, Geometry, IntersectionInfo};
+use crate::math::{Vector, gamma, max_abs};
+use crate::ray::Ray;
+use std::f32::consts::{FRAC_1_PI, PI};
+
+#[derive(Clone, Copy, Debug)]
+pub struct Sphere {
+    pub center: Vector,
+    pub radius: f32,
+}
+
+impl Sphere {
+    pub fn new(center: Vector, radius: f32) -> Sphere {
+        Sphere { center, radius }
+    }
+
+    /// The two ray parameters where the ray meets the sphere, smaller first.
+    ///
+    /// The discriminant is computed as r^2 - |f|^2 with f the offset from the centre to the ray's closest
+    /// point (pbrt-v4, section 6.8.4), and the roots by the cancellation-free form, so that rays starting
+    /// far away or right on the surface still get accurate parameters.
+    fn roots(&self, ray: &Ray) -> Option<(f32, f32)> {
+        let oc = ray.start - self.center;
+        let a = ray.dir.length_squared();
+        let b = oc.dot(ray.dir);
+        let f = oc - (b / a) * ray.dir;
+        let disc = a * (self.radius - f.length()) * (self.radius + f.length());
+        // `disc` is NaN for a degenerate ray: treat that as a miss too.
+        if disc.is_nan() || disc < 0.0 {
+            return None;
+        }
+        let c = oc.length_squared() - self.radius * self.radius;
+        let q = -(b + disc.sqrt().copysign(b));
+        let (t0, t1) = (q / a, c / q);
+        Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
+    }
+}
+
+impl Geometry for Sphere {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        let (t0, t1) = self.roots(ray)?;
+        let t = if t0 > 0.0 { t0 } else { t1 };
+        if !(t > 0.0 && t < t_max) {
+            return None;
+        }
+        // Re-project the hit onto the sphere: the error is then that of the projection, not of t.
+        let d = ray.at(t) - self.center;
+        let normal = d / d.length();
+        let ip = self.center + normal * self.radius;
+        let u = (PI + normal.z.atan2(normal.x)) * (0.5 * FRAC_1_PI);
+        let v = 1.0 - (0.5 * PI + normal.y.clamp(-1.0, 1.0).asin()) * FRAC_1_PI;
+        Some(IntersectionInfo {
+            ip,
+            normal,
+            geometric_normal: normal,
+            distance: t,
+            u,
+            v,
+            error: gamma(5) * (max_abs(self.center) + self.radius),
+        })
+    }
+
+    fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        self.roots(ray).is_some_and(|(t0, t1)| (t0 > 0.0 && t0 < t_max) || (t1 > 0.0 && t1 < t_max))
+    }
+
+    fn bounds(&self) -> Option<Aabb> {
+        Some(Aabb::new(self.center - self.radius, self.center + self.radius))
+    }
+}

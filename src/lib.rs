@@ -1,0 +1,42 @@
+//! # lecture6: a teaching ray tracer for lecture 6 of the ray-tracing course
+//!
+//! Each module implements the slide it is named after; its documentation says which, and where the Rust
+//! differs from the slide's C++ and why.
+//!
+//! | module | slides |
+//! |---|---|
+//! | [`math`] | faceforward, reflect, refract, Fresnel (Schlick and exact), orthonormal basis |
+//! | [`color`], [`ray`], [`camera`], [`rng`] | the course's basic types |
+//! | [`geometry`], [`transform`], [`node`] | geometry in canonical form; model transform; nodes and instancing |
+//! | [`bitmap`], [`texture`] | bitmap textures; textures that drive shader properties; the Fresnel texture |
+//! | [`shader`] | Lambert, Phong, reflection, refraction, the Layered shader |
+//! | [`environment`] | what rays that hit nothing see |
+//! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
+//! | [`render`] | the parallel, deterministic renderer |
+//! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
+//! | [`compare`], [`assets`] | image differences; the generated textures |
+
+pub mod assets;
+pub mod bitmap;
+pub mod camera;
+pub mod cli;
+pub mod color;
+pub mod compare;
+pub mod environment;
+pub mod error;
+pub mod geometry;
+pub mod light;
+pub mod math;
+pub mod node;
+pub mod ray;
+pub mod render;
+pub mod rng;
+pub mod scene;
+pub mod scenes;
+pub mod shader;
+pub mod texture;
+pub mod transform;
+
+pub use color::Color;
+pub use error::{Error, Result};
+pub use math::Vector;

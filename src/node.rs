@@ -1,0 +1,68 @@
+//! `Node` (slide "Model трансформация"): a geometry, the shader that colours it, and the transform that
+//! places it. Rays are intersected with nodes, not with bare geometry; a node takes its transform into
+//! account (`Node::intersect` on the slide). Geometry and shaders are shared through `Arc`, so two nodes can
+//! show the same mesh with different transforms and shaders (instancing) without a copy.
+
+use crate::geometry::{Aabb, Geometry, IntersectionInfo};
+use crate::math::Vector;
+use crate::ray::Ray;
+use crate::shader::Shader;
+use crate::transform::Transform;
+use std::sync::Arc;
+
+#[derive(Clone)]
+pub struct Node {
+    pub geometry: Arc<dyn Geometry>,
+    pub shader: Arc<dyn Shader>,
+    /// `None` is the identity, and skips the two matrix products per ray.
+    pub transform: Option<Transform>,
+}
+
+impl Node {
+    pub fn new(geometry: Arc<dyn Geometry>, shader: Arc<dyn Shader>) -> Node {
+        Node { geometry, shader, transform: None }
+    }
+
+    fn with_transform(mut self, f: impl FnOnce(Transform) -> Transform) -> Node {
+        self.transform = Some(f(self.transform.unwrap_or_default()));
+        self
+    }
+    /// Scales the node by (x, y, z) after its current transform.
+    pub fn scale(self, s: Vector) -> Node {
+        self.with_transform(|t| t.scale(s))
+    }
+    /// Rotates the node by yaw, pitch and roll (degrees) after its current transform.
+    pub fn rotate(self, yaw: f32, pitch: f32, roll: f32) -> Node {
+        self.with_transform(|t| t.rotate(yaw, pitch, roll))
+    }
+    /// Moves the node by `offset` after its current transform.
+    pub fn translate(self, offset: Vector) -> Node {
+        self.with_transform(|t| t.translate(offset))
+    }
+
+    /// The slide's `Node::intersect`: the ray goes to canonical space, meets the geometry there, and the hit
+    /// comes back to world space.
+    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        match &self.transform {
+            None => self.geometry.intersect(ray, t_max),
+            Some(t) => self.geometry.intersect(&t.ray_to_canonical(ray), t_max).map(|info| t.info_to_world(&info)),
+        }
+    }
+
+    /// Whether the ray hits this node before `t_max` (shadow rays).
+    pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        match &self.transform {
+            None => self.geometry.intersects(ray, t_max),
+            Some(t) => self.geometry.intersects(&t.ray_to_canonical(ray), t_max),
+        }
+    }
+
+    /// The node's bounding box in world space, if its geometry is bounded.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let b = self.geometry.bounds()?;
+        Some(match &self.transform {
+            None => b,
+            Some(t) => Aabb::from_points(b.corners().map(|c| t.point_to_world(c))),
+        })
+    }
+}

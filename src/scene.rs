@@ -1,0 +1,130 @@
+//! The scene and the slides' global `raytrace()`.
+//!
+//! `TraceContext` is what the course's C++ keeps in globals: the scene, the ray-depth limit, the random
+//! generator of the pixel being rendered and the ray counters. Shaders receive it and call
+//! [`TraceContext::raytrace`] to follow reflected and refracted rays, and [`TraceContext::visible`] for
+//! shadow rays. One context exists per pixel row being rendered, so threads never share one.
+
+use crate::camera::Camera;
+use crate::color::Color;
+use crate::environment::Environment;
+use crate::error::Result;
+use crate::geometry::IntersectionInfo;
+use crate::light::PointLight;
+use crate::math::Vector;
+use crate::node::Node;
+use crate::ray::{Ray, spawn_point};
+use crate::rng::Rng;
+use std::sync::Arc;
+
+/// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
+pub const MAX_RAY_DEPTH: u32 = 2;
+
+#[derive(Clone)]
+pub struct Scene {
+    pub camera: Camera,
+    pub nodes: Vec<Node>,
+    pub lights: Vec<PointLight>,
+    /// What rays that hit nothing see; black when `None`.
+    pub environment: Option<Arc<dyn Environment>>,
+    /// Ambient light added by the diffuse shaders (the course's `ambientLight`).
+    pub ambient: Color,
+    /// Rays deeper than this return black (the slide's `MAX_RAY_DEPTH`).
+    pub max_depth: u32,
+}
+
+impl Scene {
+    pub fn new(camera: Camera) -> Scene {
+        Scene {
+            camera,
+            nodes: Vec::new(),
+            lights: Vec::new(),
+            environment: None,
+            ambient: Color::BLACK,
+            max_depth: MAX_RAY_DEPTH,
+        }
+    }
+
+    /// Adds a node and returns the scene, for building scenes in one expression.
+    pub fn add(&mut self, node: Node) -> &mut Scene {
+        self.nodes.push(node);
+        self
+    }
+
+    /// Checks what can only be checked once the scene is complete: every node's transform is invertible.
+    pub fn check(&self) -> Result<()> {
+        self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
+    }
+
+    /// The closest node hit by the ray, and where.
+    pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
+        let mut best: Option<(IntersectionInfo, &Node)> = None;
+        let mut t_max = f32::INFINITY;
+        for node in &self.nodes {
+            if let Some(info) = node.intersect(ray, t_max) {
+                t_max = info.distance;
+                best = Some((info, node));
+            }
+        }
+        best
+    }
+}
+
+/// Rays traced, for the summary line and for tests that count them.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// Rays passed to `raytrace`, by depth (the last entry counts every depth from there on).
+    pub rays_by_depth: [u64; 16],
+    /// Shadow rays.
+    pub shadow_rays: u64,
+}
+
+impl Counters {
+    /// All rays traced: camera, secondary and shadow rays.
+    pub fn total(&self) -> u64 {
+        self.rays_by_depth.iter().sum::<u64>() + self.shadow_rays
+    }
+    pub fn add(&mut self, other: &Counters) {
+        for (a, b) in self.rays_by_depth.iter_mut().zip(&other.rays_by_depth) {
+            *a += b;
+        }
+        self.shadow_rays += other.shadow_rays;
+    }
+}
+
+/// The state a shader sees while one pixel is being rendered.
+pub struct TraceContext<'a> {
+    pub scene: &'a Scene,
+    /// The random generator of the current pixel.
+    pub rng: Rng,
+    pub counters: Counters,
+}
+
+impl<'a> TraceContext<'a> {
+    pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
+        TraceContext { scene, rng, counters: Counters::default() }
+    }
+
+    /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit; the
+    /// environment when nothing is hit; otherwise whatever the hit node's shader says.
+    pub fn raytrace(&mut self, ray: &Ray) -> Color {
+        if ray.depth > self.scene.max_depth {
+            return Color::BLACK;
+        }
+        self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
+        match self.scene.closest_hit(ray) {
+            Some((info, node)) => node.shader.shade(ray, &info, self),
+            None => self.scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)),
+        }
+    }
+
+    /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
+    pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
+        self.counters.shadow_rays += 1;
+        let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
+        let to_light = to - start;
+        let t_max = to_light.length();
+        let ray = Ray::new(start, to_light / t_max);
+        !self.scene.nodes.iter().any(|node| node.intersects(&ray, t_max))
+    }
+}

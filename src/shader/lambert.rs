@@ -1,0 +1,31 @@
+//! `Lambert`: a perfectly diffuse surface. Its colour is the diffuse colour times (the scene's ambient light
+//! plus, for each light that reaches the point, the light's irradiance times the cosine of its angle).
+
+use super::{ColorSource, Shader};
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::light::for_each_light;
+use crate::math::faceforward;
+use crate::ray::Ray;
+use crate::scene::TraceContext;
+
+#[derive(Clone)]
+pub struct Lambert {
+    pub color: ColorSource,
+}
+
+impl Lambert {
+    pub fn new(color: impl Into<ColorSource>) -> Lambert {
+        Lambert { color: color.into() }
+    }
+}
+
+impl Shader for Lambert {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let diffuse = self.color.get(ray, info);
+        let n = faceforward(info.normal, ray.dir);
+        let mut light = ctx.scene.ambient;
+        for_each_light(ctx, info, n, |l, irradiance| light += irradiance * n.dot(l));
+        diffuse * light
+    }
+}

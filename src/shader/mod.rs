@@ -1,0 +1,56 @@
+//! Shaders (lectures 2-6): what colour a surface has where a ray hits it. A shader may trace further rays
+//! through the context (`ctx.raytrace`, the slides' global `raytrace()`), which is how reflection,
+//! refraction and layering recurse.
+
+mod lambert;
+mod layered;
+mod phong;
+mod reflection;
+mod refraction;
+
+pub use lambert::Lambert;
+pub use layered::Layered;
+pub use phong::Phong;
+pub use reflection::Reflection;
+pub use refraction::Refraction;
+
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::ray::Ray;
+use crate::scene::TraceContext;
+use crate::texture::Texture;
+use std::sync::Arc;
+
+/// The course's `Shader` interface.
+pub trait Shader: Send + Sync {
+    /// The colour seen along `ray`, which hit a surface as described by `info`.
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
+}
+
+/// A constant colour or a texture: how the course's shaders take their diffuse colour.
+#[derive(Clone)]
+pub enum ColorSource {
+    Color(Color),
+    Texture(Arc<dyn Texture>),
+}
+
+impl ColorSource {
+    pub fn get(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        match self {
+            ColorSource::Color(c) => *c,
+            ColorSource::Texture(t) => t.get_tex_color(ray, info),
+        }
+    }
+}
+
+impl From<Color> for ColorSource {
+    fn from(c: Color) -> ColorSource {
+        ColorSource::Color(c)
+    }
+}
+
+impl<T: Texture + 'static> From<T> for ColorSource {
+    fn from(t: T) -> ColorSource {
+        ColorSource::Texture(Arc::new(t))
+    }
+}

@@ -1,0 +1,43 @@
+//! `Phong`: Lambert's diffuse term plus a specular highlight `specular * irradiance * cos(gamma)^exponent`,
+//! where gamma is the angle between the light's mirror direction and the direction to the eye (as in the
+//! course's Phong shader).
+
+use super::{ColorSource, Shader};
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::light::for_each_light;
+use crate::math::{faceforward, reflect};
+use crate::ray::Ray;
+use crate::scene::TraceContext;
+
+#[derive(Clone)]
+pub struct Phong {
+    pub color: ColorSource,
+    /// Strength of the highlight.
+    pub specular: f32,
+    /// Sharpness of the highlight: larger is smaller and sharper.
+    pub exponent: f32,
+}
+
+impl Phong {
+    pub fn new(color: impl Into<ColorSource>, specular: f32, exponent: f32) -> Phong {
+        Phong { color: color.into(), specular, exponent }
+    }
+}
+
+impl Shader for Phong {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let diffuse_color = self.color.get(ray, info);
+        let n = faceforward(info.normal, ray.dir);
+        let mut diffuse = ctx.scene.ambient;
+        let mut specular = Color::BLACK;
+        for_each_light(ctx, info, n, |l, irradiance| {
+            diffuse += irradiance * n.dot(l);
+            let cos_gamma = (-ray.dir).dot(reflect(-l, n));
+            if cos_gamma > 0.0 {
+                specular += irradiance * (self.specular * cos_gamma.powf(self.exponent));
+            }
+        });
+        diffuse_color * diffuse + specular
+    }
+}

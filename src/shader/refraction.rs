@@ -1,0 +1,43 @@
+//! `Refraction` (slides "Refract", "Refraction 0.2"): a transparent surface that bends rays by Snell's law.
+//! Whether the ray enters or leaves the object is decided from the normal *before* it is face-forwarded (so
+//! this shader needs outward normals and closed objects); entering, light goes from air into the material,
+//! so the ratio passed to `refract` is 1 / ior; leaving, it is ior. Under total internal reflection the
+//! shader returns black, as on the slide (a Fresnel-blended glass, built with `Layered`, sends that light
+//! into its reflection layer instead).
+//!
+//! Deviation from the slides: the new ray starts at the hit point offset by its error bound to the side the
+//! refracted ray goes to ([`Ray::spawn`](crate::ray::Ray::spawn)), instead of `1e-6 * ray.dir`.
+
+use super::Shader;
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::math::{faceforward, refract};
+use crate::ray::Ray;
+use crate::scene::TraceContext;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Refraction {
+    /// Index of refraction of the material (glass about 1.5); the outside is air (1.0).
+    pub ior: f32,
+    /// Fraction of the light that passes.
+    pub multiplier: f32,
+}
+
+impl Refraction {
+    pub fn new(ior: f32, multiplier: f32) -> Refraction {
+        Refraction { ior, multiplier }
+    }
+}
+
+impl Shader for Refraction {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let entering = info.normal.dot(ray.dir) < 0.0;
+        let eta = if entering { 1.0 / self.ior } else { self.ior };
+        let n = faceforward(info.normal, ray.dir);
+        let Some(dir) = refract(ray.dir, n, eta) else {
+            return Color::BLACK; // total internal reflection
+        };
+        let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir.normalize(), self.multiplier);
+        ctx.raytrace(&new_ray) * self.multiplier
+    }
+}

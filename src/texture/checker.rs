@@ -1,0 +1,23 @@
+//! `CheckerTexture`: two colours alternating in squares of 1 / `scaling` texture units (the course's first
+//! procedural texture, kept for comparison with bitmaps).
+
+use super::Texture;
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::ray::Ray;
+
+#[derive(Clone, Copy, Debug)]
+pub struct CheckerTexture {
+    pub color1: Color,
+    pub color2: Color,
+    /// Squares per texture unit.
+    pub scaling: f32,
+}
+
+impl Texture for CheckerTexture {
+    fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
+        let x = (info.u * self.scaling).floor() as i64;
+        let y = (info.v * self.scaling).floor() as i64;
+        if (x + y).rem_euclid(2) == 0 { self.color1 } else { self.color2 }
+    }
+}

@@ -1,0 +1,48 @@
+//! The `Fresnel` texture (slides "Fresnel", "Fresnel Texture"): the fraction of light a dielectric surface
+//! reflects at the angle the ray meets it, as a grey colour, meant to drive a `Layered` shader's reflection
+//! layer. Schlick's approximation is the slide's; the exact equations are a second mode for comparison.
+
+use super::Texture;
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::math::{faceforward, fresnel, fresnel_exact};
+use crate::ray::Ray;
+
+/// Which formula the Fresnel texture uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum FresnelMode {
+    /// Schlick's approximation, as on the slide.
+    #[default]
+    Schlick,
+    /// The exact Fresnel equations for unpolarised light.
+    Exact,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Fresnel {
+    /// Index of refraction of the object (outside is air, 1.0).
+    pub ior: f32,
+    pub mode: FresnelMode,
+}
+
+impl Fresnel {
+    pub fn new(ior: f32, mode: FresnelMode) -> Fresnel {
+        Fresnel { ior, mode }
+    }
+    /// The reflectance for this ray and hit (the slide's `getTexColor`, as a number).
+    pub fn reflectance(&self, ray: &Ray, info: &IntersectionInfo) -> f32 {
+        // Entering: light goes from air (1) into the object (ior); leaving: the other way round.
+        let eta = if info.normal.dot(ray.dir) > 0.0 { self.ior } else { 1.0 / self.ior };
+        let n = faceforward(info.normal, ray.dir);
+        match self.mode {
+            FresnelMode::Schlick => fresnel(ray.dir, n, eta),
+            FresnelMode::Exact => fresnel_exact(ray.dir, n, eta),
+        }
+    }
+}
+
+impl Texture for Fresnel {
+    fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        Color::gray(self.reflectance(ray, info))
+    }
+}

@@ -1,0 +1,21 @@
+//! Textures (slides "Bitmap текстури", "Текстури", "Fresnel Texture"): anything that gives a colour for a
+//! point of a surface. A texture can colour a surface (a diffuse texture) or drive any other property of a
+//! shader: a layer's blend, a reflection's colour, ... (slide "Примери за текстури").
+
+mod bitmap;
+mod checker;
+mod fresnel;
+
+pub use bitmap::BitmapTexture;
+pub use checker::CheckerTexture;
+pub use fresnel::{Fresnel, FresnelMode};
+
+use crate::color::Color;
+use crate::geometry::IntersectionInfo;
+use crate::ray::Ray;
+
+/// The course's `Texture` interface.
+pub trait Texture: Send + Sync {
+    /// The texture's colour where `ray` hit the surface described by `info`.
+    fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
+}

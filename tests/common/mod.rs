@@ -1,0 +1,66 @@
+//! Shared by the integration tests: rendering an example exactly as `cargo run --example` does, the
+//! regression check against `expected/`, and running the example binaries.
+
+#![allow(dead_code)] // each test file uses its own part of this module
+
+use lecture6::cli::{Example, render_example};
+use lecture6::compare::{Difference, difference, heat_map};
+use lecture6::render::Frame;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// The package root.
+pub fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Parses the example's options from `args` (as its `main` would) and renders it.
+pub fn render<E: Example>(args: &[&str]) -> Frame {
+    let argv = std::iter::once(E::NAME).chain(args.iter().copied());
+    let parsed = E::try_parse_from(argv).unwrap_or_else(|e| panic!("{}: bad test arguments: {e}", E::NAME));
+    render_example(&parsed).unwrap_or_else(|e| panic!("{}: {e}", E::NAME)).0
+}
+
+/// The regression rule for the examples' pictures at 640 x 480: at most one pixel in 5000 may differ by
+/// more than `Difference::LARGE` (8) levels in any channel, and the RMSE over all channels may be at most
+/// 1 level. A one-pixel-wide change along an object's silhouette moves hundreds of pixels by far more than
+/// 8 levels and fails; the last-bit differences of `sin`/`pow` between x86-64 C libraries do not.
+pub fn within_regression_tolerance(d: &Difference) -> bool {
+    d.within(d.pixels / 5000, 1.0)
+}
+
+/// Renders an example with its default options and compares it with `expected/<name>.png`. On a mismatch the
+/// actual picture and a heat map go to `target/regression/`. With `UPDATE_EXPECTED=1` the expected picture
+/// is rewritten instead.
+pub fn check_expected<E: Example>() {
+    let actual = render::<E>(&[]).to_rgb8();
+    let expected_path = root().join("expected").join(format!("{}.png", E::NAME));
+    if std::env::var_os("UPDATE_EXPECTED").is_some_and(|v| v == "1") {
+        actual.save(&expected_path).expect("write expected image");
+        eprintln!("rewrote {}", expected_path.display());
+        return;
+    }
+    let expected = image::open(&expected_path)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e} (UPDATE_EXPECTED=1 creates it)", expected_path.display()))
+        .to_rgb8();
+    let d = difference(&actual, &expected).expect("same size");
+    if !within_regression_tolerance(&d) {
+        let dir = root().join("target").join("regression");
+        std::fs::create_dir_all(&dir).expect("create target/regression");
+        actual.save(dir.join(format!("{}.png", E::NAME))).expect("write actual");
+        heat_map(&actual, &expected).unwrap().save(dir.join(format!("{}-diff.png", E::NAME))).expect("write heat map");
+        panic!("{} differs from {}: {d}; see target/regression/", E::NAME, expected_path.display());
+    }
+}
+
+/// The path of a built example binary (cargo builds the examples before it runs the tests).
+pub fn example_binary(name: &str) -> PathBuf {
+    let exe = std::env::current_exe().expect("test binary path");
+    let profile_dir = exe.parent().and_then(Path::parent).expect("target/<profile>");
+    profile_dir.join("examples").join(format!("{name}{}", std::env::consts::EXE_SUFFIX))
+}
+
+/// Runs an example binary with arguments, from the package root.
+pub fn run_example(name: &str, args: &[&str]) -> Output {
+    Command::new(example_binary(name)).args(args).current_dir(root()).output().expect("run example")
+}

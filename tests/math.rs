@@ -1,0 +1,135 @@
+//! Invariants of the slides' vector helpers, colour conversions, texture look-ups and the u/v of the
+//! canonical shapes.
+
+use lecture6::Color;
+use lecture6::bitmap::{Bitmap, Filter, Wrap};
+use lecture6::camera::Camera;
+use lecture6::color::{linear_to_srgb, srgb_to_linear, to_srgb8};
+use lecture6::geometry::{Cube, Geometry, Plane, Sphere};
+use lecture6::math::{OrthonormalBasis, Vector, faceforward, reflect};
+use lecture6::ray::Ray;
+
+fn unit(x: f32, y: f32, z: f32) -> Vector {
+    Vector::new(x, y, z).normalize()
+}
+
+#[test]
+fn reflect_keeps_the_angle_and_the_length() {
+    let n = unit(0.2, 1.0, -0.3);
+    for i in [unit(1.0, -1.0, 0.0), unit(-0.3, -0.2, 0.9), unit(0.0, -1.0, 0.0)] {
+        let r = reflect(i, n);
+        assert!((r.length() - 1.0).abs() < 1e-6);
+        // Angle of incidence equals angle of reflection, and r lies in the plane of i and n.
+        assert!(((-i).dot(n) - r.dot(n)).abs() < 1e-6);
+        assert!(i.cross(n).dot(r).abs() < 1e-6);
+    }
+}
+
+#[test]
+fn faceforward_turns_the_normal_towards_the_ray() {
+    let n = Vector::Y;
+    assert_eq!(faceforward(n, unit(0.0, -1.0, 1.0)), n);
+    assert_eq!(faceforward(n, unit(0.0, 1.0, 1.0)), -n);
+    assert!(faceforward(-n, unit(0.3, -0.5, 0.1)).dot(unit(0.3, -0.5, 0.1)) < 0.0);
+}
+
+#[test]
+fn orthonormal_basis_is_orthonormal_everywhere() {
+    for n in [Vector::Z, -Vector::Z, Vector::X, unit(1.0, 2.0, 3.0), unit(0.0, 1e-7, -1.0)] {
+        let b = OrthonormalBasis::new(n);
+        for v in [b.tangent, b.bitangent] {
+            assert!((v.length() - 1.0).abs() < 1e-5 && v.dot(n).abs() < 1e-5);
+        }
+        assert!(b.tangent.dot(b.bitangent).abs() < 1e-5);
+    }
+}
+
+#[test]
+fn srgb_round_trips_every_8_bit_code() {
+    for code in 0..=255u8 {
+        let linear = srgb_to_linear(code as f32 / 255.0);
+        assert_eq!(to_srgb8(Color::gray(linear))[0], code);
+    }
+    assert!((linear_to_srgb(2.0) - 1.0).abs() < 1e-6);
+    assert_eq!(linear_to_srgb(f32::NAN), 0.0);
+}
+
+#[test]
+fn bilinear_filtering_of_a_2x2_image() {
+    let px = [Color::gray(0.0), Color::gray(1.0), Color::gray(0.5), Color::gray(0.25)];
+    let bmp = Bitmap::from_pixels(2, 2, px.to_vec());
+    let clamp = (Wrap::Clamp, Wrap::Clamp);
+    // Texel centres return the texel itself.
+    assert_eq!(bmp.sample(0.25, 0.25, Filter::Bilinear, clamp), px[0]);
+    assert_eq!(bmp.sample(0.75, 0.75, Filter::Bilinear, clamp), px[3]);
+    // The centre of the image is the average of the four.
+    let mid = bmp.sample(0.5, 0.5, Filter::Bilinear, clamp);
+    assert!((mid.r() - 0.4375).abs() < 1e-6);
+    // Halfway between the top two texel centres.
+    assert!((bmp.sample(0.5, 0.25, Filter::Bilinear, clamp).r() - 0.5).abs() < 1e-6);
+    // Nearest picks the texel the point falls in; repeat wraps around.
+    assert_eq!(bmp.sample(0.6, 0.1, Filter::Nearest, clamp), px[1]);
+    assert_eq!(bmp.sample(1.1, 0.1, Filter::Nearest, (Wrap::Repeat, Wrap::Repeat)), px[0]);
+    assert_eq!(bmp.sample(1.1, 0.1, Filter::Nearest, (Wrap::Mirror, Wrap::Mirror)), px[1]);
+    // Repeat blends across the seam: halfway between the last and the first column.
+    let seam = bmp.sample(0.0, 0.25, Filter::Bilinear, (Wrap::Repeat, Wrap::Repeat));
+    assert!((seam.r() - 0.5).abs() < 1e-6);
+}
+
+#[test]
+fn plane_uv_are_world_x_and_z() {
+    let plane = Plane::new(1.0, 100.0);
+    let hit = plane.intersect(&Ray::new(Vector::new(3.0, 10.0, -7.0), -Vector::Y), f32::INFINITY).unwrap();
+    assert_eq!((hit.u, hit.v, hit.ip.y), (3.0, -7.0, 1.0));
+    assert!((hit.distance - 9.0).abs() < 1e-6);
+    // Outside the limit, or parallel to the plane: no hit.
+    assert!(plane.intersect(&Ray::new(Vector::new(300.0, 10.0, 0.0), -Vector::Y), f32::INFINITY).is_none());
+    assert!(plane.intersect(&Ray::new(Vector::new(0.0, 1.0, 0.0), Vector::X), f32::INFINITY).is_none());
+}
+
+#[test]
+fn sphere_uv_are_longitude_and_latitude() {
+    let s = Sphere::new(Vector::new(0.0, 5.0, 0.0), 2.0);
+    let hit_at = |dir: Vector| {
+        let start = Vector::new(0.0, 5.0, 0.0) + dir * 10.0;
+        s.intersect(&Ray::new(start, -dir), f32::INFINITY).unwrap()
+    };
+    let top = hit_at(Vector::Y);
+    assert!(top.v.abs() < 1e-6 && (top.normal - Vector::Y).length() < 1e-6);
+    let bottom = hit_at(-Vector::Y);
+    assert!((bottom.v - 1.0).abs() < 1e-6);
+    let minus_x = hit_at(-Vector::X);
+    assert!(minus_x.u.min(1.0 - minus_x.u) < 1e-6 && (minus_x.v - 0.5).abs() < 1e-6);
+    let plus_z = hit_at(Vector::Z);
+    assert!((plus_z.u - 0.75).abs() < 1e-6);
+    assert!((hit_at(Vector::X).u - 0.5).abs() < 1e-6);
+    assert!((top.distance - 8.0).abs() < 1e-5);
+}
+
+#[test]
+fn cube_uv_span_each_face() {
+    let c = Cube::new(Vector::ZERO, 1.0);
+    // Hit the +Z face at x = 0.5, y = -0.5.
+    let hit = c.intersect(&Ray::new(Vector::new(0.5, -0.5, 5.0), -Vector::Z), f32::INFINITY).unwrap();
+    assert_eq!(hit.normal, Vector::Z);
+    assert!((hit.u - 0.75).abs() < 1e-6 && (hit.v - 0.25).abs() < 1e-6);
+    // From inside, the exit face and its outward normal.
+    let inside = c.intersect(&Ray::new(Vector::ZERO, Vector::X), f32::INFINITY).unwrap();
+    assert_eq!((inside.normal, inside.distance), (Vector::X, 1.0));
+    // The +X face: u follows z, v follows y.
+    let x_face = c.intersect(&Ray::new(Vector::new(5.0, 0.5, -0.5), -Vector::X), f32::INFINITY).unwrap();
+    assert!((x_face.u - 0.25).abs() < 1e-6 && (x_face.v - 0.75).abs() < 1e-6);
+}
+
+#[test]
+fn camera_follows_the_course_conventions() {
+    let cam = Camera { pitch: -30.0, ..Camera::default() };
+    let centre = cam.frame(640, 480).get_screen_ray(320.0, 240.0).dir;
+    assert!((centre - unit(0.0, -0.5, 0.75f32.sqrt())).length() < 1e-5, "pitch -30 looks down: {centre}");
+    let yawed = Camera { yaw: 90.0, ..Camera::default() }.frame(640, 480).get_screen_ray(320.0, 240.0).dir;
+    assert!((yawed + Vector::X).length() < 1e-5, "positive yaw turns left: {yawed}");
+    // fov is measured across the diagonal: the corner ray is fov / 2 from the axis.
+    let corner = Camera::default().frame(640, 480).get_screen_ray(0.0, 0.0).dir;
+    assert!((corner.dot(Vector::Z) - 45f32.to_radians().cos()).abs() < 1e-6);
+    assert!(corner.x < 0.0 && corner.y > 0.0, "pixel (0, 0) is the top left");
+}

@@ -1,0 +1,15 @@
+//! Every example's default picture against `expected/<example>.png` (see `common::check_expected` for the
+//! rule and for `UPDATE_EXPECTED=1`).
+
+mod common;
+
+macro_rules! regression {
+    ($($name:ident),* $(,)?) => {$(
+        #[test]
+        fn $name() {
+            common::check_expected::<lecture6::scenes::$name::Args>();
+        }
+    )*};
+}
+
+regression!(bitmap_textures);
