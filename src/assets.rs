@@ -1,9 +1,16 @@
 //! The workbook's own pictures: every image under `textures/` is drawn here, procedurally and
 //! deterministically, and written by `cargo run --release --bin make-assets`. Nothing is downloaded.
 //! A test checks that the files under `textures/` are what this code draws.
+//!
+//! Most textures are 8-bit sRGB PNGs ([`ASSETS`]); the environments are linear-light Radiance HDR images
+//! ([`HDR_ASSETS`]), so that the sun can be brighter than white.
+
+mod sky;
+
+pub use sky::{sky_equirect, sky_face, sky_radiance, sun_direction};
 
 use crate::rng::mix64;
-use image::{Rgb, RgbImage};
+use image::{Rgb, Rgb32FImage, RgbImage};
 use std::f32::consts::PI;
 
 /// One file under `textures/`: its name and how to draw it.
@@ -18,6 +25,23 @@ pub const ASSETS: &[Asset] = &[
     Asset { name: "wood.png", draw: wood },
     Asset { name: "world.png", draw: world },
     Asset { name: "checker8.png", draw: checker8 },
+];
+
+/// One linear-light file under `textures/`, written as Radiance HDR: its name and how to draw it.
+pub struct HdrAsset {
+    pub name: &'static str,
+    pub draw: fn() -> Rgb32FImage,
+}
+
+/// Every generated HDR image: the sky as one equirectangular image and as a cube map made from it.
+pub const HDR_ASSETS: &[HdrAsset] = &[
+    HdrAsset { name: "sky.hdr", draw: sky_equirect },
+    HdrAsset { name: "sky_cubemap/posx.hdr", draw: sky_face::<0> },
+    HdrAsset { name: "sky_cubemap/negx.hdr", draw: sky_face::<1> },
+    HdrAsset { name: "sky_cubemap/posy.hdr", draw: sky_face::<2> },
+    HdrAsset { name: "sky_cubemap/negy.hdr", draw: sky_face::<3> },
+    HdrAsset { name: "sky_cubemap/posz.hdr", draw: sky_face::<4> },
+    HdrAsset { name: "sky_cubemap/negz.hdr", draw: sky_face::<5> },
 ];
 
 /// A pseudo-random value in [0, 1) for an integer lattice point.

@@ -6,6 +6,7 @@
 //! unknown options), never a panic.
 
 use crate::compare;
+use crate::environment;
 use crate::error::{Error, Result};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically};
 use crate::scene::Scene;
@@ -47,6 +48,11 @@ pub struct CommonArgs {
     /// heat map of the difference next to the output (<output stem>-diff.png).
     #[arg(long, value_name = "REFERENCE.png")]
     pub compare: Option<PathBuf>,
+    /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
+    /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
+    /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
+    #[arg(long, value_name = "FILE|FOLDER")]
+    pub env: Option<PathBuf>,
 }
 
 /// An example: its options (clap) and how they turn into a scene.
@@ -80,6 +86,9 @@ pub fn render_example<E: Example>(args: &E) -> Result<(Frame, RenderStats)> {
     let mut scene = args.build_scene()?;
     if let Some(depth) = args.common().max_depth {
         scene.max_depth = depth;
+    }
+    if let Some(path) = &args.common().env {
+        scene.environment = Some(environment::load(path)?);
     }
     render(&scene, &settings)
 }

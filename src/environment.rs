@@ -1,8 +1,51 @@
 //! The environment (slides "Заден фон", "Интерфейс за заден фон"): what a ray that hits nothing sees. It
 //! depends on the ray's direction only, never on where the ray starts.
+//!
+//! Two image-based environments, as on the slides:
+//! - [`SphericalEnvironment`]: one equirectangular image (longitude across, latitude down);
+//! - [`CubemapEnvironment`]: six square images, the faces of a cube around the scene; the largest absolute
+//!   component of the direction picks the face and the other two index it.
+//!
+//! Both read any format [`Bitmap`] reads (PNG, JPEG, BMP in sRGB; Radiance HDR and OpenEXR in linear light,
+//! keeping values above 1, so a sun can be much brighter than white) and filter bilinearly by default.
+//!
+//! # Conventions
+//!
+//! The world is the camera's: +Y is up and, with zero angles, the camera looks along +Z with +X to its
+//! right. Every image is seen **from the inside, unmirrored**: looking at some part of the image from the
+//! centre of the scene, the picture appears as it does in an image viewer.
+//!
+//! **Equirectangular** (2:1): the **centre of the image faces +Z** (what the default camera looks at).
+//! `u = 0.5 + atan2(x, z) / 2π` runs left to right: -Z at the left and right edges (the seam), -X at a
+//! quarter, +Z at the middle, +X at three quarters. `v = 0.5 - asin(y) / π` runs top to bottom: the top row
+//! is straight up (+Y), the middle row the horizon, the bottom row straight down.
+//!
+//! **Cube map**: files `posx, negx, posy, negy, posz, negz` with any of the extensions in
+//! [`FACE_EXTENSIONS`]. Each face spans 90° and its centre is its axis (the direction +X lands in the
+//! middle of `posx`). Within a face, u runs left to right and v top to bottom along these directions:
+//!
+//! | face | centre | u (left → right) | v (top → bottom) |
+//! |---|---|---|---|
+//! | `posx` | +X | -Z | -Y |
+//! | `negx` | -X | +Z | -Y |
+//! | `posy` | +Y | +X | +Z |
+//! | `negy` | -Y | +X | -Z |
+//! | `posz` | +Z | +X | -Y |
+//! | `negz` | -Z | -X | -Y |
+//!
+//! This is the layout of OpenGL and Direct3D cube maps, so skyboxes made for them (with these names) work
+//! as they are. A camera with a 90° square view pointed along an axis sees exactly that face.
+//!
+//! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
+//! matters), and a degenerate direction returns a colour of the image rather than failing.
 
+use crate::bitmap::{Bitmap, Filter, Wrap};
 use crate::color::Color;
+use crate::error::{Error, Result};
 use crate::math::Vector;
+use std::f32::consts::{FRAC_1_PI, PI};
+use std::path::Path;
+use std::sync::Arc;
 
 /// The course's `Environment` interface (`getEnvironment(dir)`).
 pub trait Environment: Send + Sync {
@@ -17,5 +60,170 @@ pub struct ConstantEnvironment(pub Color);
 impl Environment for ConstantEnvironment {
     fn get(&self, _dir: Vector) -> Color {
         self.0
+    }
+}
+
+/// Loads the environment at `path`: a folder is a cube map (see [`CubemapEnvironment::load`]), a file an
+/// equirectangular image (see [`SphericalEnvironment::load`]).
+pub fn load(path: &Path) -> Result<Arc<dyn Environment>> {
+    Ok(if path.is_dir() {
+        Arc::new(CubemapEnvironment::load(path)?)
+    } else {
+        Arc::new(SphericalEnvironment::load(path)?)
+    })
+}
+
+/// Where the direction `dir` lands in an equirectangular image: (u, v) in [0, 1] (see the module docs).
+pub fn equirect_uv(dir: Vector) -> (f32, f32) {
+    let u = 0.5 + dir.x.atan2(dir.z) * (0.5 * FRAC_1_PI);
+    let v = 0.5 - dir.y.atan2(dir.x.hypot(dir.z)) * FRAC_1_PI;
+    (u, v)
+}
+
+/// The unit direction that lands at (u, v) of an equirectangular image: the inverse of [`equirect_uv`].
+pub fn equirect_direction(u: f32, v: f32) -> Vector {
+    let longitude = (u - 0.5) * 2.0 * PI;
+    let latitude = (0.5 - v) * PI;
+    Vector::new(latitude.cos() * longitude.sin(), latitude.sin(), latitude.cos() * longitude.cos())
+}
+
+/// An environment from one equirectangular image (the slides' spherical environment).
+#[derive(Clone, Debug)]
+pub struct SphericalEnvironment {
+    pub bitmap: Arc<Bitmap>,
+    pub filter: Filter,
+}
+
+impl SphericalEnvironment {
+    /// A bilinearly filtered environment from an image in linear light.
+    pub fn new(bitmap: Arc<Bitmap>) -> SphericalEnvironment {
+        SphericalEnvironment { bitmap, filter: Filter::Bilinear }
+    }
+
+    /// Loads an equirectangular image file.
+    pub fn load(path: &Path) -> Result<SphericalEnvironment> {
+        Ok(SphericalEnvironment::new(Arc::new(Bitmap::load(path)?)))
+    }
+
+    pub fn with_filter(self, filter: Filter) -> SphericalEnvironment {
+        SphericalEnvironment { filter, ..self }
+    }
+}
+
+impl Environment for SphericalEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        let (u, v) = equirect_uv(dir);
+        // Longitude goes round (repeat); latitude stops at the poles (clamp).
+        self.bitmap.sample(u, v, self.filter, (Wrap::Repeat, Wrap::Clamp))
+    }
+}
+
+/// One face of a cube map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CubeFace {
+    PosX,
+    NegX,
+    PosY,
+    NegY,
+    PosZ,
+    NegZ,
+}
+
+impl CubeFace {
+    /// The faces in the order [`CubemapEnvironment::new`] takes them.
+    pub const ALL: [CubeFace; 6] =
+        [CubeFace::PosX, CubeFace::NegX, CubeFace::PosY, CubeFace::NegY, CubeFace::PosZ, CubeFace::NegZ];
+
+    /// The face's file name without extension.
+    pub fn name(self) -> &'static str {
+        ["posx", "negx", "posy", "negy", "posz", "negz"][self as usize]
+    }
+
+    /// The face's centre direction and the directions its u and v run along (the table in the module docs).
+    pub fn axes(self) -> (Vector, Vector, Vector) {
+        let (x, y, z) = (Vector::X, Vector::Y, Vector::Z);
+        match self {
+            CubeFace::PosX => (x, -z, -y),
+            CubeFace::NegX => (-x, z, -y),
+            CubeFace::PosY => (y, x, z),
+            CubeFace::NegY => (-y, x, -z),
+            CubeFace::PosZ => (z, x, -y),
+            CubeFace::NegZ => (-z, -x, -y),
+        }
+    }
+}
+
+/// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
+pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
+    let a = dir.abs();
+    let face = if a.x >= a.y && a.x >= a.z {
+        if dir.x >= 0.0 { CubeFace::PosX } else { CubeFace::NegX }
+    } else if a.y >= a.z {
+        if dir.y >= 0.0 { CubeFace::PosY } else { CubeFace::NegY }
+    } else if dir.z >= 0.0 {
+        CubeFace::PosZ
+    } else {
+        CubeFace::NegZ
+    };
+    let (centre, u_axis, v_axis) = face.axes();
+    // Project onto the face's plane at distance 1: the major component becomes 1.
+    let major = dir.dot(centre);
+    (face, 0.5 + 0.5 * dir.dot(u_axis) / major, 0.5 + 0.5 * dir.dot(v_axis) / major)
+}
+
+/// The unit direction through (u, v) of a cube face: the inverse of [`cube_face_uv`].
+pub fn cube_face_direction(face: CubeFace, u: f32, v: f32) -> Vector {
+    let (centre, u_axis, v_axis) = face.axes();
+    (centre + (2.0 * u - 1.0) * u_axis + (2.0 * v - 1.0) * v_axis).normalize()
+}
+
+/// The extensions a cube face file may have, tried in this order.
+pub const FACE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr"];
+
+/// An environment from six images on the faces of a cube (the slides' cube map).
+#[derive(Clone, Debug)]
+pub struct CubemapEnvironment {
+    /// In the order of [`CubeFace::ALL`].
+    pub faces: [Arc<Bitmap>; 6],
+    pub filter: Filter,
+}
+
+impl CubemapEnvironment {
+    /// A bilinearly filtered cube map from six images in linear light, in the order of [`CubeFace::ALL`].
+    pub fn new(faces: [Arc<Bitmap>; 6]) -> CubemapEnvironment {
+        CubemapEnvironment { faces, filter: Filter::Bilinear }
+    }
+
+    /// Loads the six faces `posx, negx, posy, negy, posz, negz` (each with one of [`FACE_EXTENSIONS`]) from
+    /// the folder `dir`. A missing or unreadable face is an error naming its file.
+    pub fn load(dir: &Path) -> Result<CubemapEnvironment> {
+        let load_face = |face: CubeFace| {
+            let path = FACE_EXTENSIONS
+                .iter()
+                .map(|ext| dir.join(format!("{}.{ext}", face.name())))
+                .find(|p| p.is_file())
+                .ok_or_else(|| {
+                    Error::file(
+                        "cannot find cube face",
+                        &dir.join(face.name()),
+                        format!("no {}.png, .jpg, .jpeg, .bmp, .hdr or .exr in the folder", face.name()),
+                    )
+                })?;
+            Bitmap::load(&path).map(Arc::new)
+        };
+        let [a, b, c, d, e, f] = CubeFace::ALL.map(load_face);
+        Ok(CubemapEnvironment::new([a?, b?, c?, d?, e?, f?]))
+    }
+
+    pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {
+        CubemapEnvironment { filter, ..self }
+    }
+}
+
+impl Environment for CubemapEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        let (face, u, v) = cube_face_uv(dir);
+        // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.
+        self.faces[face as usize].sample(u, v, self.filter, (Wrap::Clamp, Wrap::Clamp))
     }
 }

@@ -1,21 +1,34 @@
 //! Draws every texture of the workbook into `textures/` (see `lecture6::assets`). Deterministic: running it
 //! again writes the same pictures.
 
-use lecture6::assets::ASSETS;
+use lecture6::Result;
+use lecture6::assets::{ASSETS, HDR_ASSETS};
 use lecture6::render::save_atomically;
 use std::path::Path;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let dir = Path::new("textures");
+    match write_all(Path::new("textures")) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("make-assets: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn write_all(dir: &Path) -> Result<()> {
     for asset in ASSETS {
         let path = dir.join(asset.name);
         let img = (asset.draw)();
-        if let Err(e) = save_atomically(&path, |tmp| img.save_with_format(tmp, image::ImageFormat::Png)) {
-            eprintln!("make-assets: error: {e}");
-            return ExitCode::from(2);
-        }
+        save_atomically(&path, |tmp| img.save_with_format(tmp, image::ImageFormat::Png))?;
         println!("{} ({}x{})", path.display(), img.width(), img.height());
     }
-    ExitCode::SUCCESS
+    for asset in HDR_ASSETS {
+        let path = dir.join(asset.name);
+        let img = (asset.draw)();
+        save_atomically(&path, |tmp| img.save_with_format(tmp, image::ImageFormat::Hdr))?;
+        println!("{} ({}x{}, linear HDR)", path.display(), img.width(), img.height());
+    }
+    Ok(())
 }
