@@ -49,7 +49,9 @@ impl Geometry for Sphere {
         }
         // Re-project the hit onto the sphere: the error is then that of the projection, not of t.
         let d = ray.at(t) - self.center;
-        let normal = d / d.length();
+        // A sphere smaller than the spacing of floats where it stands can round the hit onto its centre:
+        // then the side facing the ray is the only sensible normal.
+        let normal = d.try_normalize().unwrap_or_else(|| -ray.dir.normalize());
         let ip = self.center + normal * self.radius;
         let u = (PI + normal.z.atan2(normal.x)) * (0.5 * FRAC_1_PI);
         let v = 1.0 - (0.5 * PI + normal.y.clamp(-1.0, 1.0).asin()) * FRAC_1_PI;

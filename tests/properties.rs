@@ -1,0 +1,117 @@
+//! Property tests: random rays, including degenerate ones, through every geometry and shader. Whatever the
+//! ray, nothing panics, every hit is finite and every colour finite and non-negative.
+
+use lecture6::Color;
+use lecture6::camera::Camera;
+use lecture6::environment::ConstantEnvironment;
+use lecture6::geometry::{Cube, Geometry, Plane, Sphere};
+use lecture6::light::PointLight;
+use lecture6::math::Vector;
+use lecture6::node::Node;
+use lecture6::ray::Ray;
+use lecture6::rng::Rng;
+use lecture6::scene::{Scene, TraceContext};
+use lecture6::shader::{Lambert, Layered, Phong, Reflection, Refraction, Shader};
+use lecture6::texture::{CheckerTexture, Fresnel, FresnelMode};
+use proptest::prelude::*;
+use std::sync::Arc;
+
+/// Coordinates from tiny to huge, both signs, and exact zeros.
+fn coordinate() -> impl Strategy<Value = f32> {
+    prop_oneof![Just(0.0f32), -1e3f32..1e3, -1e6f32..1e6, -1e-3f32..1e-3]
+}
+
+fn vector() -> impl Strategy<Value = Vector> {
+    (coordinate(), coordinate(), coordinate()).prop_map(|(x, y, z)| Vector::new(x, y, z))
+}
+
+/// Directions: random, axis-aligned, and almost parallel to an axis (grazing).
+fn direction() -> impl Strategy<Value = Vector> {
+    prop_oneof![
+        vector(),
+        (0usize..3, prop::bool::ANY).prop_map(|(axis, neg)| {
+            let mut v = Vector::ZERO;
+            v[axis] = if neg { -1.0 } else { 1.0 };
+            v
+        }),
+        (0usize..3, -1e-30f32..1e-30).prop_map(|(axis, tiny)| {
+            let mut v = Vector::splat(tiny);
+            v[axis] = 1.0;
+            v
+        }),
+    ]
+    .prop_filter("a direction needs a length", |v| v.length_squared() > 0.0 && v.is_finite())
+    .prop_map(|v| v.normalize())
+}
+
+fn geometries() -> Vec<Arc<dyn Geometry>> {
+    vec![
+        Arc::new(Plane::new(1.0, 100.0)),
+        Arc::new(Plane::new(-3.0, f32::INFINITY)),
+        Arc::new(Sphere::new(Vector::new(0.0, 30.0, -30.0), 27.0)),
+        Arc::new(Sphere::new(Vector::new(1e5, 0.0, 0.0), 1e-3)),
+        Arc::new(Cube::new(Vector::new(5.0, 5.0, 5.0), 5.0)),
+    ]
+}
+
+/// A scene with every shader: a Fresnel glass holding a second glass (nested dielectrics), a mirror box
+/// touching the floor, a Phong sphere, a checkered Lambert floor, and a transformed (non-uniformly scaled)
+/// glass ellipsoid.
+fn all_shaders_scene() -> Scene {
+    let mut scene = Scene::new(Camera::default());
+    scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.8, 0.9, 1.0))));
+    scene.ambient = Color::gray(0.1);
+    scene.max_depth = 8;
+    scene.lights.push(PointLight::new(Vector::new(10.0, 40.0, -10.0), Color::WHITE, 2000.0));
+    let mut glass = Layered::new();
+    glass.add_layer(Arc::new(Refraction::new(1.5, 1.0)), Color::WHITE, None).add_layer(
+        Arc::new(Reflection::new(1.0)),
+        Color::WHITE,
+        Some(Arc::new(Fresnel::new(1.5, FresnelMode::Exact))),
+    );
+    let glass: Arc<dyn Shader> = Arc::new(glass);
+    let checker = CheckerTexture { color1: Color::gray(0.9), color2: Color::gray(0.2), scaling: 0.1 };
+    scene
+        .add(Node::new(Arc::new(Plane::new(0.0, 100.0)), Arc::new(Lambert::new(checker))))
+        .add(Node::new(Arc::new(Sphere::new(Vector::new(0.0, 10.0, 20.0), 10.0)), glass.clone()))
+        .add(Node::new(Arc::new(Sphere::new(Vector::new(0.0, 10.0, 20.0), 5.0)), Arc::new(Refraction::new(2.4, 0.9))))
+        .add(Node::new(Arc::new(Cube::new(Vector::new(25.0, 5.0, 20.0), 5.0)), Arc::new(Reflection::new(0.9))))
+        .add(Node::new(
+            Arc::new(Sphere::new(Vector::new(-25.0, 8.0, 20.0), 8.0)),
+            Arc::new(Phong::new(Color::new(0.8, 0.2, 0.2), 0.5, 30.0)),
+        ))
+        .add(
+            Node::new(Arc::new(Sphere::new(Vector::ZERO, 1.0)), glass)
+                .scale(Vector::new(6.0, 2.0, 3.0))
+                .rotate(30.0, 10.0, 5.0)
+                .translate(Vector::new(0.0, 4.0, 0.0)),
+        );
+    scene
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    #[test]
+    fn every_hit_is_finite(start in vector(), dir in direction()) {
+        let ray = Ray::new(start, dir);
+        for g in geometries() {
+            if let Some(hit) = g.intersect(&ray, f32::INFINITY) {
+                prop_assert!(hit.distance > 0.0 && hit.distance.is_finite());
+                prop_assert!(hit.ip.is_finite() && hit.u.is_finite() && hit.v.is_finite());
+                prop_assert!(hit.error.is_finite() && hit.error >= 0.0);
+                prop_assert!((hit.normal.length() - 1.0).abs() < 1e-4, "normal {}", hit.normal);
+            }
+            // The any-hit test agrees with the closest-hit test.
+            prop_assert_eq!(g.intersects(&ray, f32::INFINITY), g.intersect(&ray, f32::INFINITY).is_some());
+        }
+    }
+
+    #[test]
+    fn every_colour_is_finite_and_non_negative(start in vector(), dir in direction(), seed in any::<u64>()) {
+        let scene = all_shaders_scene();
+        let mut ctx = TraceContext::new(&scene, Rng::for_keys(&[seed]));
+        let c = ctx.raytrace(&Ray::new(start, dir));
+        prop_assert!(c.is_finite() && c.0.min_element() >= 0.0, "{c:?}");
+    }
+}
