@@ -10,6 +10,7 @@ use crate::environment;
 use crate::error::{Error, Result};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically};
 use crate::scene::Scene;
+use crate::spectral::{SpectralMode, SpectralPlan};
 use clap::Parser;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -53,6 +54,15 @@ pub struct CommonArgs {
     /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
     #[arg(long, value_name = "FILE|FOLDER")]
     pub env: Option<PathBuf>,
+    /// Wavelength passes K for scenes with dispersive materials (the slide's method): the frame is traced K
+    /// times, once per band of the spectrum, and the passes are added with the bands' colours. Scenes
+    /// without dispersive materials are traced once whatever K is.
+    #[arg(long, default_value_t = 8)]
+    pub wavelengths: u32,
+    /// How scenes with dispersive materials are traced: `passes` (K wavelength passes, the slide's method)
+    /// or `sampled` (one pass; every anti-aliasing sample carries its own band of the spectrum).
+    #[arg(long, value_enum, default_value_t = SpectralMode::Passes)]
+    pub spectral: SpectralMode,
 }
 
 /// An example: its options (clap) and how they turn into a scene.
@@ -76,6 +86,8 @@ pub fn settings<E: Example>(args: &E) -> RenderSettings {
         threads: c.threads,
         seed: c.seed,
         progress: !c.quiet,
+        wavelengths: c.wavelengths,
+        spectral: c.spectral,
     }
 }
 
@@ -118,12 +130,17 @@ fn run<E: Example>(args: &E) -> Result<()> {
     if !args.common().quiet {
         let rays = stats.counters.total();
         let secs = stats.elapsed.as_secs_f64();
+        let spectral = match &stats.spectral {
+            SpectralPlan::White => String::new(),
+            plan => format!(" ({plan})"),
+        };
         println!(
-            "{}: {}x{}, {} spp, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
+            "{}: {}x{}, {} spp{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
             E::NAME,
             settings.width,
             settings.height,
             settings.spp,
+            spectral,
             secs,
             stats.threads,
             rays as f64 * 1e-6,

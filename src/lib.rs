@@ -13,6 +13,7 @@
 //! | [`environment`] | what rays that hit nothing see |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`] | the parallel, deterministic renderer |
+//! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
 //! | [`compare`], [`assets`] | image differences; the generated textures |
 
@@ -34,6 +35,7 @@ pub mod rng;
 pub mod scene;
 pub mod scenes;
 pub mod shader;
+pub mod spectral;
 pub mod texture;
 pub mod transform;
 

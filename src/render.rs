@@ -7,11 +7,20 @@
 //! Anti-aliasing: with `spp` samples per pixel, a square `spp` (4, 9, 16, ...) is a jittered k x k grid;
 //! any other count uses N-rooks (Latin hypercube) stratification, one sample in each column and each row
 //! of an N x N grid. One sample per pixel goes through the pixel's centre.
+//!
+//! Dispersion (see [`crate::spectral`]): a scene whose shaders depend on the wavelength is traced once per
+//! wavelength band (the slide's K passes; each pass of a pixel has its own random stream, keyed by the pass)
+//! or, with spectral sampling, once with a band of its own for every anti-aliasing sample. The bands'
+//! colours are added in double precision, so a surface that looks the same in every band keeps its colour
+//! exactly. A scene with nothing dispersive is traced once, in white light, whatever `wavelengths` says.
 
+use crate::camera::CameraFrame;
 use crate::color::{Color, to_srgb8};
 use crate::error::{Error, Result};
+use crate::ray::Ray;
 use crate::rng::Rng;
 use crate::scene::{Counters, Scene, TraceContext};
+use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
@@ -34,11 +43,24 @@ pub struct RenderSettings {
     pub seed: u64,
     /// Show a progress bar on stderr (only when stderr is a terminal).
     pub progress: bool,
+    /// Wavelength passes for a dispersive scene (the slide's K); ignored by other scenes and by spectral sampling.
+    pub wavelengths: u32,
+    /// How a dispersive scene is traced: K wavelength passes or one wavelength per sample.
+    pub spectral: SpectralMode,
 }
 
 impl Default for RenderSettings {
     fn default() -> RenderSettings {
-        RenderSettings { width: 640, height: 480, spp: 1, threads: None, seed: 1, progress: false }
+        RenderSettings {
+            width: 640,
+            height: 480,
+            spp: 1,
+            threads: None,
+            seed: 1,
+            progress: false,
+            wavelengths: 8,
+            spectral: SpectralMode::Passes,
+        }
     }
 }
 
@@ -57,6 +79,13 @@ impl RenderSettings {
         }
         if self.spp == 0 {
             return Err(Error::parameter("samples per pixel", 0, "must be at least 1"));
+        }
+        if !(1..=MAX_WAVELENGTHS).contains(&self.wavelengths) {
+            return Err(Error::parameter(
+                "wavelength passes",
+                self.wavelengths,
+                format!("must be 1 to {MAX_WAVELENGTHS}"),
+            ));
         }
         if self.threads == Some(0) {
             return Err(Error::parameter("thread count", 0, "must be at least 1"));
@@ -137,7 +166,10 @@ pub fn save_atomically(path: &Path, write: impl FnOnce(&Path) -> image::ImageRes
 pub struct RenderStats {
     pub elapsed: Duration,
     pub threads: usize,
+    /// Rays of all passes.
     pub counters: Counters,
+    /// How wavelengths were traced (white light when the scene has nothing dispersive).
+    pub spectral: SpectralPlan,
 }
 
 /// Where in its pixel each anti-aliasing sample goes (see the module documentation).
@@ -177,8 +209,17 @@ impl Stratifier {
     }
 }
 
-/// Renders the scene. Fails, before any work, on settings or a scene that cannot be rendered.
+/// Renders the scene. Fails, before any work, on settings or a scene that cannot be rendered. A dispersive
+/// scene is traced as `settings.spectral` says; any other in one white pass.
 pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, RenderStats)> {
+    settings.check()?;
+    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    render_with_plan(scene, settings, plan)
+}
+
+/// Renders the scene with the given wavelength plan, whether or not the scene needs it (tests use this to
+/// check that a non-dispersive material gives the same picture in every plan).
+pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: SpectralPlan) -> Result<(Frame, RenderStats)> {
     settings.check()?;
     scene.check()?;
     let pool = rayon::ThreadPoolBuilder::new()
@@ -206,22 +247,12 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
             .par_chunks_mut(w as usize)
             .enumerate()
             .map(|(y, row)| {
-                let mut counters = Counters::default();
-                let mut stratifier = Stratifier::new(settings.spp);
+                let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
                 for (x, pixel) in row.iter_mut().enumerate() {
-                    let mut ctx = TraceContext::new(scene, Rng::for_pixel(settings.seed, x as u32, y as u32));
-                    stratifier.start_pixel(&mut ctx.rng);
-                    let mut sum = Color::BLACK;
-                    for s in 0..settings.spp {
-                        let (dx, dy) = stratifier.offset(s, &mut ctx.rng);
-                        let ray = camera.get_screen_ray(x as f32 + dx, y as f32 + dy);
-                        sum += ctx.raytrace(&ray).sanitized();
-                    }
-                    *pixel = sum / settings.spp as f32;
-                    counters.add(&ctx.counters);
+                    *pixel = tracer.pixel(x as u32, y as u32);
                 }
                 bar.inc(1);
-                counters
+                tracer.counters
             })
             .reduce(Counters::default, |mut a, b| {
                 a.add(&b);
@@ -229,6 +260,90 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
             })
     });
     bar.finish_and_clear();
-    let stats = RenderStats { elapsed: start.elapsed(), threads: pool.current_num_threads(), counters };
+    let stats = RenderStats { elapsed: start.elapsed(), threads: pool.current_num_threads(), counters, spectral: plan };
     Ok((frame, stats))
+}
+
+/// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
+const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
+
+/// Renders the pixels of one row: the samples of each pixel, in every wavelength pass the plan asks for.
+struct PixelTracer<'a> {
+    scene: &'a Scene,
+    camera: &'a CameraFrame,
+    settings: &'a RenderSettings,
+    plan: &'a SpectralPlan,
+    stratifier: Stratifier,
+    /// Spectral sampling: which band sample s of the current pixel traces (a fresh permutation per pixel).
+    band_of_sample: Vec<u32>,
+    counters: Counters,
+}
+
+impl<'a> PixelTracer<'a> {
+    fn new(scene: &'a Scene, camera: &'a CameraFrame, settings: &'a RenderSettings, plan: &'a SpectralPlan) -> Self {
+        let band_of_sample = match plan {
+            SpectralPlan::Sampled => (0..settings.spp).collect(),
+            _ => Vec::new(),
+        };
+        let stratifier = Stratifier::new(settings.spp);
+        PixelTracer { scene, camera, settings, plan, stratifier, band_of_sample, counters: Counters::default() }
+    }
+
+    /// The average of the pixel's samples, all traced at `wavelength`, with the random stream `rng`.
+    fn samples(&mut self, x: u32, y: u32, rng: Rng, wavelength: Option<f32>) -> Color {
+        let mut ctx = TraceContext::new(self.scene, rng);
+        self.stratifier.start_pixel(&mut ctx.rng);
+        let mut sum = Color::BLACK;
+        for s in 0..self.settings.spp {
+            let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
+            let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
+            sum += ctx.raytrace(&ray).sanitized();
+        }
+        self.counters.add(&ctx.counters);
+        sum / self.settings.spp as f32
+    }
+
+    fn pixel(&mut self, x: u32, y: u32) -> Color {
+        let seed = self.settings.seed;
+        match self.plan {
+            SpectralPlan::White => self.samples(x, y, Rng::for_pixel(seed, x, y), None),
+            SpectralPlan::Passes(bands) => {
+                let mut sum = [0.0f64; 3];
+                for (k, band) in bands.iter().enumerate() {
+                    let rng = Rng::for_keys(&[seed, x as u64, y as u64, PASS_KEY, k as u64]);
+                    add_weighted(&mut sum, band, self.samples(x, y, rng, Some(band.centre())));
+                }
+                fit_to_gamut(to_color(sum))
+            }
+            SpectralPlan::Sampled => {
+                let spp = self.settings.spp;
+                let mut ctx = TraceContext::new(self.scene, Rng::for_pixel(seed, x, y));
+                self.stratifier.start_pixel(&mut ctx.rng);
+                for i in (1..spp).rev() {
+                    self.band_of_sample.swap(i as usize, ctx.rng.below(i + 1) as usize);
+                }
+                let mut sum = [0.0f64; 3];
+                for s in 0..spp {
+                    let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
+                    let band = Band::nth(self.band_of_sample[s as usize], spp);
+                    let wavelength = Some(band.at(ctx.rng.next_f32()));
+                    let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
+                    add_weighted(&mut sum, &band, ctx.raytrace(&ray).sanitized());
+                }
+                self.counters.add(&ctx.counters);
+                fit_to_gamut(to_color(sum))
+            }
+        }
+    }
+}
+
+/// Adds a colour seen in `band`, multiplied by the band's colour, to a double-precision sum.
+fn add_weighted(sum: &mut [f64; 3], band: &Band, c: Color) {
+    for ((s, w), v) in sum.iter_mut().zip(band.weight).zip(c.to_array()) {
+        *s += w * v as f64;
+    }
+}
+
+fn to_color(sum: [f64; 3]) -> Color {
+    Color::new(sum[0] as f32, sum[1] as f32, sum[2] as f32)
 }

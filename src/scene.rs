@@ -56,6 +56,11 @@ impl Scene {
         self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
     }
 
+    /// Whether some node's shader depends on the wavelength: only then does the renderer trace wavelengths.
+    pub fn is_dispersive(&self) -> bool {
+        self.nodes.iter().any(|n| n.shader.is_dispersive())
+    }
+
     /// The closest node hit by the ray, and where.
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
         let mut best: Option<(IntersectionInfo, &Node)> = None;

@@ -12,4 +12,4 @@ macro_rules! regression {
     )*};
 }
 
-regression!(bitmap_textures);
+regression!(bitmap_textures, dispersion);

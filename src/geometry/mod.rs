@@ -8,10 +8,12 @@
 
 mod cube;
 mod plane;
+mod prism;
 mod sphere;
 
 pub use cube::Cube;
 pub use plane::Plane;
+pub use prism::Prism;
 pub use sphere::Sphere;
 
 use crate::math::Vector;

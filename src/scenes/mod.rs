@@ -2,6 +2,7 @@
 //! the regression tests and the benchmarks all build their scenes here, so they render the same thing.
 
 pub mod bitmap_textures;
+pub mod dispersion;
 
 use crate::bitmap::{Bitmap, Filter};
 use crate::error::Result;

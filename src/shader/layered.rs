@@ -84,4 +84,8 @@ impl Shader for Layered {
         }
         res
     }
+
+    fn is_dispersive(&self) -> bool {
+        self.layers.iter().any(|l| l.shader.is_dispersive() || l.blend_tex.as_ref().is_some_and(|t| t.is_dispersive()))
+    }
 }

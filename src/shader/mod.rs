@@ -25,6 +25,12 @@ use std::sync::Arc;
 pub trait Shader: Send + Sync {
     /// The colour seen along `ray`, which hit a surface as described by `info`.
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
+
+    /// Whether the result depends on the ray's wavelength (a dispersive refraction, or a layer holding one).
+    /// The renderer traces wavelengths separately only for scenes where some shader says so.
+    fn is_dispersive(&self) -> bool {
+        false
+    }
 }
 
 /// A constant colour or a texture: how the course's shaders take their diffuse colour.

@@ -5,6 +5,9 @@
 //! shader returns black, as on the slide (a Fresnel-blended glass, built with `Layered`, sends that light
 //! into its reflection layer instead).
 //!
+//! Dispersion (slide "Хроматично пречупване"): the index may depend on the wavelength ([`Ior`]); the shader
+//! uses the index at the ray's wavelength, and white rays (no wavelength) see n_d.
+//!
 //! Deviation from the slides: the new ray starts at the hit point offset by its error bound to the side the
 //! refracted ray goes to ([`Ray::spawn`](crate::ray::Ray::spawn)), instead of `1e-6 * ray.dir`.
 
@@ -14,17 +17,23 @@ use crate::geometry::IntersectionInfo;
 use crate::math::{faceforward, refract};
 use crate::ray::Ray;
 use crate::scene::TraceContext;
+use crate::spectral::Ior;
 
 #[derive(Clone, Copy, Debug)]
 pub struct Refraction {
-    /// Index of refraction of the material (glass about 1.5); the outside is air (1.0).
-    pub ior: f32,
+    /// Index of refraction of the material (glass about 1.5), possibly depending on the wavelength; the
+    /// outside is air (1.0).
+    pub ior: Ior,
     /// Fraction of the light that passes.
     pub multiplier: f32,
 }
 
 impl Refraction {
     pub fn new(ior: f32, multiplier: f32) -> Refraction {
+        Refraction { ior: Ior::Constant(ior), multiplier }
+    }
+    /// A refraction whose index may depend on the wavelength (a dispersive glass).
+    pub fn with_ior(ior: Ior, multiplier: f32) -> Refraction {
         Refraction { ior, multiplier }
     }
 }
@@ -32,12 +41,17 @@ impl Refraction {
 impl Shader for Refraction {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let entering = info.normal.dot(ray.dir) < 0.0;
-        let eta = if entering { 1.0 / self.ior } else { self.ior };
+        let ior = self.ior.at(ray.wavelength);
+        let eta = if entering { 1.0 / ior } else { ior };
         let n = faceforward(info.normal, ray.dir);
         let Some(dir) = refract(ray.dir, n, eta) else {
             return Color::BLACK; // total internal reflection
         };
         let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir.normalize(), self.multiplier);
         ctx.raytrace(&new_ray) * self.multiplier
+    }
+
+    fn is_dispersive(&self) -> bool {
+        self.ior.is_dispersive()
     }
 }

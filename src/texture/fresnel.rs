@@ -1,12 +1,14 @@
 //! The `Fresnel` texture (slides "Fresnel", "Fresnel Texture"): the fraction of light a dielectric surface
 //! reflects at the angle the ray meets it, as a grey colour, meant to drive a `Layered` shader's reflection
 //! layer. Schlick's approximation is the slide's; the exact equations are a second mode for comparison.
+//! With a dispersive [`Ior`] the reflectance is that of the ray's wavelength.
 
 use super::Texture;
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
 use crate::math::{faceforward, fresnel, fresnel_exact};
 use crate::ray::Ray;
+use crate::spectral::Ior;
 
 /// Which formula the Fresnel texture uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
@@ -20,19 +22,24 @@ pub enum FresnelMode {
 
 #[derive(Clone, Copy, Debug)]
 pub struct Fresnel {
-    /// Index of refraction of the object (outside is air, 1.0).
-    pub ior: f32,
+    /// Index of refraction of the object (outside is air, 1.0), possibly depending on the wavelength.
+    pub ior: Ior,
     pub mode: FresnelMode,
 }
 
 impl Fresnel {
     pub fn new(ior: f32, mode: FresnelMode) -> Fresnel {
+        Fresnel { ior: Ior::Constant(ior), mode }
+    }
+    /// A Fresnel texture whose index may depend on the wavelength (a dispersive glass).
+    pub fn with_ior(ior: Ior, mode: FresnelMode) -> Fresnel {
         Fresnel { ior, mode }
     }
     /// The reflectance for this ray and hit (the slide's `getTexColor`, as a number).
     pub fn reflectance(&self, ray: &Ray, info: &IntersectionInfo) -> f32 {
         // Entering: light goes from air (1) into the object (ior); leaving: the other way round.
-        let eta = if info.normal.dot(ray.dir) > 0.0 { self.ior } else { 1.0 / self.ior };
+        let ior = self.ior.at(ray.wavelength);
+        let eta = if info.normal.dot(ray.dir) > 0.0 { ior } else { 1.0 / ior };
         let n = faceforward(info.normal, ray.dir);
         match self.mode {
             FresnelMode::Schlick => fresnel(ray.dir, n, eta),
@@ -44,5 +51,9 @@ impl Fresnel {
 impl Texture for Fresnel {
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
         Color::gray(self.reflectance(ray, info))
+    }
+
+    fn is_dispersive(&self) -> bool {
+        self.ior.is_dispersive()
     }
 }

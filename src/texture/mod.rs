@@ -18,4 +18,10 @@ use crate::ray::Ray;
 pub trait Texture: Send + Sync {
     /// The texture's colour where `ray` hit the surface described by `info`.
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
+
+    /// Whether the colour depends on the ray's wavelength (a dispersive Fresnel texture), so that the
+    /// renderer must trace wavelengths separately.
+    fn is_dispersive(&self) -> bool {
+        false
+    }
 }
