@@ -4,8 +4,9 @@
 //! - The environment is a dark studio with one bright white slit: a narrow vertical strip of light
 //!   ([`SlitEnvironment`]).
 //! - On the left stands a 60-degree prism, turned so that the ray from the camera through its middle passes
-//!   it at minimum deviation for the d line (587.6 nm); the slit is placed where that ray leaves. Looking
-//!   through the prism, the camera sees the slit spread into a spectrum: violet bent most, red least.
+//!   it at minimum deviation; the slit is placed where that ray leaves at [`SLIT_WAVELENGTH`], which centres
+//!   the spectrum in the face the camera looks through. Looking through the prism, the camera sees the slit
+//!   spread into a spectrum: violet bent most, red least.
 //! - On the right floats a glass sphere cut from the same glass, made as on the slides' Fresnel material:
 //!   a `Layered` shader with a refraction layer under a reflection layer blended by the Fresnel texture.
 //!   The slit seen through and in it is fringed with colour ("fire").
@@ -84,8 +85,8 @@ pub struct SlitEnvironment {
 
 /// The lamps: `LAMPS` squares of `LAMP_SIZE` degrees, evenly spaced around the horizon at `LAMP_ELEVATION`
 /// degrees above it.
-const LAMPS: f32 = 12.0;
-const LAMP_SIZE: f32 = 3.0;
+const LAMPS: f32 = 18.0;
+const LAMP_SIZE: f32 = 5.0;
 const LAMP_ELEVATION: f32 = 24.0;
 
 impl Environment for SlitEnvironment {
@@ -129,6 +130,9 @@ pub fn fresnel_glass(ior: Ior) -> Layered {
     glass
 }
 
+/// The wavelength (nm) whose minimum-deviation ray through the prism's centre meets the slit.
+pub const SLIT_WAVELENGTH: f32 = 560.0;
+
 /// The prism's apex angle, degrees.
 pub const APEX_ANGLE: f32 = 60.0;
 
@@ -154,14 +158,15 @@ impl Example for Args {
 
         // The prism, left of the view. The ray from the camera to its centre has azimuth `view`; at minimum
         // deviation it crosses the prism parallel to the base, turned by half the deviation, so the base faces
-        // the side it bends to. Turning the canonical prism (base towards -Z) by `yaw` puts it there.
+        // the side it bends to. Turning the canonical prism (base towards -Z) by `yaw` puts it there. (An
+        // index with no ray through the prism, n sin(A/2) >= 1, leaves the slit straight ahead.)
         let centre = Vector::new(-2.6, 0.0, 10.0);
         let view = centre.x.atan2(centre.z).to_degrees();
-        let deviation = minimum_deviation(APEX_ANGLE, ior.n_d()).unwrap_or(0.0);
+        let deviation = minimum_deviation(APEX_ANGLE, ior.at(Some(SLIT_WAVELENGTH))).unwrap_or(0.0);
         let inside = view + 0.5 * deviation;
         let yaw = 90.0 - inside;
         scene.add(
-            Node::new(Arc::new(Prism::new(APEX_ANGLE, 1.5, 2.4)), Arc::new(fresnel_glass(ior)))
+            Node::new(Arc::new(Prism::new(APEX_ANGLE, 1.8, 2.4)), Arc::new(fresnel_glass(ior)))
                 .rotate(yaw, 0.0, 0.0)
                 .translate(centre),
         );
