@@ -111,12 +111,15 @@ fn main() {
         let per_pixel = if mode == "passes" { k * spp } else { spp };
         let label = if mode == "passes" { format!("{k} x {spp}") } else { format!("1 per sample x {spp}") };
         println!("| {mode} | {label} | {per_pixel} | {t:.3} s | {e:.5} |");
-        rows.push((mode, per_pixel, t, e));
+        rows.push((mode, label, per_pixel, t, e));
     }
     println!("\nEqual cost (same camera rays per pixel): RMSE of K passes / RMSE of spectral sampling");
-    for &(_, n, tp, ep) in rows.iter().filter(|r| r.0 == "passes") {
-        if let Some(&(_, _, ts, es)) = rows.iter().find(|r| r.0 == "sampled" && r.1 == n) {
-            println!("  {n} rays/pixel: passes {ep:.5} in {tp:.3} s, sampled {es:.5} in {ts:.3} s: ratio {:.2}", ep / es);
+    for (_, label, n, tp, ep) in rows.iter().filter(|r| r.0 == "passes") {
+        if let Some((_, _, _, ts, es)) = rows.iter().find(|r| r.0 == "sampled" && r.2 == *n) {
+            println!(
+                "  {n} rays/pixel: passes {label}: {ep:.5} in {tp:.3} s; sampled: {es:.5} in {ts:.3} s; ratio {:.2}",
+                ep / es
+            );
         }
     }
 }
