@@ -13,8 +13,9 @@
 //!   `--spectral sampled --spp 32` instead gives every sample its own wavelength: a smooth spectrum, with
 //!   some colour noise.
 //!
-//! Try: `--glass n-bk7` (a crown glass: a third of the spread), `--glass abbe --nd 1.785 --abbe 10`,
-//! `--glass abbe --abbe inf` (no dispersion: one white slit, traced in one pass).
+//! Try: `--glass n-bk7` (a crown glass: about a quarter of the spread), `--glass abbe --nd 1.785 --abbe 10`,
+//! `--glass abbe --abbe inf` (no dispersion: one white slit, traced in one pass), `--env textures/sky.hdr`
+//! (the glass in another environment).
 //!
 //! Homework ideas: draw the spectrum on a diffuse wall with photons that carry a wavelength; make the
 //! sphere a brilliant-cut gem from planes; weight the passes by the Planck spectrum of a warm light.

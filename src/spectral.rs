@@ -271,6 +271,7 @@ impl std::fmt::Display for SpectralPlan {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
         match self {
             SpectralPlan::White => write!(f, "white light"),
+            SpectralPlan::Passes(bands) if bands.len() == 1 => write!(f, "1 wavelength pass"),
             SpectralPlan::Passes(bands) => write!(f, "{} wavelength passes", bands.len()),
             SpectralPlan::Sampled => write!(f, "one wavelength per sample"),
         }
