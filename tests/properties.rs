@@ -4,7 +4,7 @@
 use lecture6::Color;
 use lecture6::camera::Camera;
 use lecture6::environment::ConstantEnvironment;
-use lecture6::geometry::{Cube, Geometry, Plane, Sphere};
+use lecture6::geometry::{Cube, Geometry, Plane, Prism, Sphere};
 use lecture6::light::PointLight;
 use lecture6::math::Vector;
 use lecture6::node::Node;
@@ -12,6 +12,7 @@ use lecture6::ray::Ray;
 use lecture6::rng::Rng;
 use lecture6::scene::{Scene, TraceContext};
 use lecture6::shader::{Lambert, Layered, Phong, Reflection, Refraction, Shader};
+use lecture6::spectral::Ior;
 use lecture6::texture::{CheckerTexture, Fresnel, FresnelMode};
 use proptest::prelude::*;
 use std::sync::Arc;
@@ -51,12 +52,13 @@ fn geometries() -> Vec<Arc<dyn Geometry>> {
         Arc::new(Sphere::new(Vector::new(0.0, 30.0, -30.0), 27.0)),
         Arc::new(Sphere::new(Vector::new(1e5, 0.0, 0.0), 1e-3)),
         Arc::new(Cube::new(Vector::new(5.0, 5.0, 5.0), 5.0)),
+        Arc::new(Prism::new(60.0, 2.0, 3.0)),
     ]
 }
 
 /// A scene with every shader: a Fresnel glass holding a second glass (nested dielectrics), a mirror box
 /// touching the floor, a Phong sphere, a checkered Lambert floor, and a transformed (non-uniformly scaled)
-/// glass ellipsoid.
+/// glass ellipsoid, and a turned prism of dispersive flint glass.
 fn all_shaders_scene() -> Scene {
     let mut scene = Scene::new(Camera::default());
     scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.8, 0.9, 1.0))));
@@ -85,6 +87,11 @@ fn all_shaders_scene() -> Scene {
                 .scale(Vector::new(6.0, 2.0, 3.0))
                 .rotate(30.0, 10.0, 5.0)
                 .translate(Vector::new(0.0, 4.0, 0.0)),
+        )
+        .add(
+            Node::new(Arc::new(Prism::new(60.0, 3.0, 4.0)), Arc::new(Refraction::with_ior(Ior::SF11, 1.0)))
+                .rotate(20.0, 0.0, 0.0)
+                .translate(Vector::new(-10.0, 4.0, -5.0)),
         );
     scene
 }
@@ -108,10 +115,15 @@ proptest! {
     }
 
     #[test]
-    fn every_colour_is_finite_and_non_negative(start in vector(), dir in direction(), seed in any::<u64>()) {
+    fn every_colour_is_finite_and_non_negative(
+        start in vector(),
+        dir in direction(),
+        seed in any::<u64>(),
+        wavelength in prop::option::of(400.0f32..700.0),
+    ) {
         let scene = all_shaders_scene();
         let mut ctx = TraceContext::new(&scene, Rng::for_keys(&[seed]));
-        let c = ctx.raytrace(&Ray::new(start, dir));
+        let c = ctx.raytrace(&Ray { wavelength, ..Ray::new(start, dir) });
         prop_assert!(c.is_finite() && c.0.min_element() >= 0.0, "{c:?}");
     }
 }
