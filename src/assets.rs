@@ -1,9 +1,9 @@
-//! The workbook's own pictures: every image under `textures/` is drawn here, procedurally and
+//! The workbook's own pictures and meshes: every file under `textures/` is made here, procedurally and
 //! deterministically, and written by `cargo run --release --bin make-assets`. Nothing is downloaded.
-//! A test checks that the files under `textures/` are what this code draws.
+//! A test checks that the files under `textures/` are what this code makes.
 //!
 //! Most textures are 8-bit sRGB PNGs ([`ASSETS`]); the environments are linear-light Radiance HDR images
-//! ([`HDR_ASSETS`]), so that the sun can be brighter than white.
+//! ([`HDR_ASSETS`]), so that the sun can be brighter than white; the meshes are Wavefront OBJ text ([`MESHES`]).
 
 mod sky;
 
@@ -42,6 +42,18 @@ pub const HDR_ASSETS: &[HdrAsset] = &[
     HdrAsset { name: "sky_cubemap/negy.hdr", draw: sky_face::<3> },
     HdrAsset { name: "sky_cubemap/posz.hdr", draw: sky_face::<4> },
     HdrAsset { name: "sky_cubemap/negz.hdr", draw: sky_face::<5> },
+];
+
+/// One mesh under `textures/`: its name and its OBJ text.
+pub struct MeshAsset {
+    pub name: &'static str,
+    pub write: fn() -> String,
+}
+
+/// Every generated mesh: the Utah teapot at two resolutions (see [`crate::teapot`]).
+pub const MESHES: &[MeshAsset] = &[
+    MeshAsset { name: "teapot_low.obj", write: crate::teapot::low_resolution_obj },
+    MeshAsset { name: "teapot.obj", write: crate::teapot::high_resolution_obj },
 ];
 
 /// A pseudo-random value in [0, 1) for an integer lattice point.

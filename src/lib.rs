@@ -15,7 +15,7 @@
 //! | [`render`] | the parallel, deterministic renderer |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
-//! | [`compare`], [`assets`] | image differences; the generated textures |
+//! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
 
 pub mod assets;
 pub mod bitmap;
@@ -36,6 +36,7 @@ pub mod scene;
 pub mod scenes;
 pub mod shader;
 pub mod spectral;
+pub mod teapot;
 pub mod texture;
 pub mod transform;
 

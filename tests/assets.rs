@@ -1,4 +1,4 @@
-//! The textures under `textures/` are exactly what the asset generator draws.
+//! The textures and meshes under `textures/` are exactly what the asset generator makes.
 
 mod common;
 
@@ -28,5 +28,15 @@ fn bundled_hdr_images_match_the_generator() {
         assert!(on_disk == drawn, "{} is stale: run `cargo run --release --bin make-assets`", path.display());
         let bytes = std::fs::metadata(&path).unwrap().len();
         assert!(bytes < 500_000, "{} is {bytes} bytes: keep textures small", path.display());
+    }
+}
+
+#[test]
+fn bundled_meshes_match_the_generator() {
+    for mesh in lecture6::assets::MESHES {
+        let path = common::root().join("textures").join(mesh.name);
+        let on_disk = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert!(on_disk == (mesh.write)(), "{} is stale: run `cargo run --release --bin make-assets`", path.display());
+        assert!(on_disk.len() < 600_000, "{} is {} bytes: keep meshes small", path.display(), on_disk.len());
     }
 }

@@ -12,4 +12,4 @@ macro_rules! regression {
     )*};
 }
 
-regression!(bitmap_textures, dispersion);
+regression!(bitmap_textures, dispersion, model_transform);

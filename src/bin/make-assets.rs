@@ -1,8 +1,8 @@
-//! Draws every texture of the workbook into `textures/` (see `lecture6::assets`). Deterministic: running it
+//! Draws every texture and writes every mesh of the workbook into `textures/` (see `lecture6::assets`). Deterministic: running it
 //! again writes the same pictures.
 
 use lecture6::Result;
-use lecture6::assets::{ASSETS, HDR_ASSETS};
+use lecture6::assets::{ASSETS, HDR_ASSETS, MESHES};
 use lecture6::render::save_atomically;
 use std::path::Path;
 use std::process::ExitCode;
@@ -29,6 +29,12 @@ fn write_all(dir: &Path) -> Result<()> {
         let img = (asset.draw)();
         save_atomically(&path, |tmp| img.save_with_format(tmp, image::ImageFormat::Hdr))?;
         println!("{} ({}x{}, linear HDR)", path.display(), img.width(), img.height());
+    }
+    for mesh in MESHES {
+        let path = dir.join(mesh.name);
+        let text = (mesh.write)();
+        save_atomically(&path, |tmp| std::fs::write(tmp, &text).map_err(image::ImageError::IoError))?;
+        println!("{} ({} bytes)", path.display(), text.len());
     }
     Ok(())
 }

@@ -1,17 +1,20 @@
 //! Geometry (lectures 2-3, and slide "Model трансформация"): the shapes rays can hit, each in its canonical
-//! form. Placing a shape anywhere else is the job of a [`Node`](crate::node::Node)'s transform.
+//! form: plane, sphere, cube and triangle mesh (with its BVH). Placing a shape anywhere else is the job of a [`Node`](crate::node::Node)'s transform.
 //!
 //! Every shape reports, with the hit, an absolute bound on the floating-point error of the hit point
 //! (`IntersectionInfo::error`). Secondary rays start that far off the surface (see
 //! [`Ray::spawn`](crate::ray::Ray::spawn)) instead of the slides' fixed `1e-6`, which is too small for a
 //! scene at 1e6 and too large for one at 1e-4.
 
+pub mod bvh;
 mod cube;
+pub mod mesh;
 mod plane;
 mod prism;
 mod sphere;
 
 pub use cube::Cube;
+pub use mesh::Mesh;
 pub use plane::Plane;
 pub use prism::Prism;
 pub use sphere::Sphere;

@@ -3,6 +3,7 @@
 
 pub mod bitmap_textures;
 pub mod dispersion;
+pub mod model_transform;
 
 use crate::bitmap::{Bitmap, Filter};
 use crate::error::Result;

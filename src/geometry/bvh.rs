@@ -1,0 +1,298 @@
+//! A bounding volume hierarchy over a mesh's triangles (lecture "Acceleration structures", used here by
+//! [`Mesh`](super::Mesh)), built once when the mesh is loaded.
+//!
+//! - Build: top-down, binned surface area heuristic (16 bins on each axis over the primitives' centroids);
+//!   a node becomes a leaf when splitting it is not expected to be cheaper than testing its primitives.
+//! - Layout: one flat array of 32-byte nodes; the two children of an interior node are stored side by side
+//!   in one cache line, so a node needs one index and one memory access fetches both children. Primitives are reordered so that each leaf owns a contiguous range.
+//! - Traversal: both children's boxes are tested at each interior node; the nearer is visited first and the
+//!   farther is pushed with its entry distance, and skipped when popped if a closer hit has been found.
+//!   The slab test widens the exit distance by `1 + 2 gamma(3)` (pbrt-v4), so rounding never makes the box
+//!   test miss a triangle that the (watertight) triangle test would hit.
+
+use super::Aabb;
+use crate::math::{Vector, gamma};
+use glam::{Vec4, Vec4Swizzles};
+use std::ops::Range;
+
+/// Bins per axis of the binned SAH.
+const BINS: usize = 16;
+/// The deepest a tree may grow; the traversal stack holds this many nodes.
+const MAX_DEPTH: usize = 64;
+/// Cost of visiting a node, relative to one ray-triangle test.
+const TRAVERSAL_COST: f32 = 1.0;
+/// Leaves larger than this are split even when the heuristic would keep them.
+const MAX_LEAF: usize = 8;
+
+/// A node: its box, and either its two children (`count == 0`: the pair of nodes `first`) or its
+/// primitives (`first .. first + count`). The indices ride in the `w` lanes, so a node is two SIMD
+/// registers.
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
+struct Node {
+    min_first: Vec4,
+    max_count: Vec4,
+}
+
+impl Node {
+    fn new(b: Aabb, first: usize, count: usize) -> Node {
+        Node {
+            min_first: b.min.extend(f32::from_bits(first as u32)),
+            max_count: b.max.extend(f32::from_bits(count as u32)),
+        }
+    }
+    fn first(&self) -> usize {
+        self.min_first.w.to_bits() as usize
+    }
+    fn count(&self) -> usize {
+        self.max_count.w.to_bits() as usize
+    }
+    fn aabb(&self) -> Aabb {
+        Aabb::new(Vector::from_vec4(self.min_first), Vector::from_vec4(self.max_count))
+    }
+
+    /// Where the ray enters the box, if it meets it before `t_max`.
+    #[inline(always)]
+    fn entry(&self, start: Vector, inv_dir: Vector, t_max: f32) -> Option<f32> {
+        let t0 = (Vector::from_vec4(self.min_first) - start) * inv_dir;
+        let t1 = (Vector::from_vec4(self.max_count) - start) * inv_dir;
+        let near = t0.min(t1).max_element().max(0.0);
+        let far = t0.max(t1).min_element() * (1.0 + 2.0 * gamma(3));
+        (near <= far && near < t_max).then_some(near)
+    }
+}
+
+fn union(a: Aabb, b: Aabb) -> Aabb {
+    Aabb::new(a.min.min(b.min), a.max.max(b.max))
+}
+
+const EMPTY: Aabb = Aabb { min: Vector::INFINITY, max: Vector::NEG_INFINITY };
+
+/// Half the surface area of a box (the SAH only compares areas).
+fn half_area(b: &Aabb) -> f32 {
+    let d = b.max - b.min;
+    d.x * d.y + d.y * d.z + d.z * d.x
+}
+
+/// The two children of an interior node, side by side in one 64-byte cache line, their boxes stored axis
+/// by axis so that one SIMD operation per axis tests the ray against both.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
+struct Pair {
+    /// Per axis: (left min, right min, left max, right max).
+    x: Vec4,
+    y: Vec4,
+    z: Vec4,
+    /// Per child, as in [`Node`].
+    first: [u32; 2],
+    count: [u32; 2],
+}
+
+impl Pair {
+    fn new([a, b]: [Node; 2]) -> Pair {
+        let (ba, bb) = (a.aabb(), b.aabb());
+        let lanes = |k: usize| Vec4::new(ba.min[k], bb.min[k], ba.max[k], bb.max[k]);
+        Pair {
+            x: lanes(0),
+            y: lanes(1),
+            z: lanes(2),
+            first: [a.first() as u32, b.first() as u32],
+            count: [a.count() as u32, b.count() as u32],
+        }
+    }
+}
+
+/// A bounding volume hierarchy; see the module documentation.
+#[derive(Clone, Debug, Default)]
+pub struct Bvh {
+    /// The root; the children of an interior node are the pair its `first` names.
+    root: Option<Node>,
+    pairs: Vec<Pair>,
+}
+
+/// The chosen split of a node: primitives whose centroid falls in bins `..=bin` of `axis` go left.
+struct Split {
+    axis: usize,
+    bin: usize,
+    left: Aabb,
+    right: Aabb,
+}
+
+impl Bvh {
+    /// Builds the hierarchy over primitives given by their boxes. Returns it with the order in which the
+    /// primitives must be stored: leaf ranges index that order.
+    pub fn build(boxes: &[Aabb]) -> (Bvh, Vec<u32>) {
+        let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
+        if boxes.is_empty() {
+            return (Bvh::default(), order);
+        }
+        let centroids: Vec<Vector> = boxes.iter().map(Aabb::center).collect();
+        let mut root = Node::new(boxes.iter().copied().fold(EMPTY, union), 0, boxes.len());
+        let mut pairs: Vec<[Node; 2]> = Vec::with_capacity(boxes.len());
+        // Work items: a node (None for the root, else a pair and a side) and its depth.
+        let mut work: Vec<(Option<(usize, usize)>, usize)> = vec![(None, 0)];
+        while let Some((at, depth)) = work.pop() {
+            let node = match at {
+                None => root,
+                Some((pair, side)) => pairs[pair][side],
+            };
+            let (first, count) = (node.first(), node.count());
+            let prims = &mut order[first..first + count];
+            if count <= 1 || depth + 1 >= MAX_DEPTH {
+                continue;
+            }
+            let Some((split, bounds)) = best_split(prims, boxes, &centroids, &node.aabb()) else { continue };
+            // Partition in place: the left part first.
+            let scale = BINS as f32 / (bounds.max[split.axis] - bounds.min[split.axis]);
+            let bin = |p: u32| bin_of(centroids[p as usize][split.axis], bounds.min[split.axis], scale);
+            let mut mid = 0;
+            for i in 0..prims.len() {
+                if bin(prims[i]) <= split.bin {
+                    prims.swap(i, mid);
+                    mid += 1;
+                }
+            }
+            if mid == 0 || mid == count {
+                continue;
+            }
+            let children = pairs.len();
+            pairs.push([Node::new(split.left, first, mid), Node::new(split.right, first + mid, count - mid)]);
+            let interior = Node::new(node.aabb(), children, 0);
+            match at {
+                None => root = interior,
+                Some((pair, side)) => pairs[pair][side] = interior,
+            }
+            work.push((Some((children, 0)), depth + 1));
+            work.push((Some((children, 1)), depth + 1));
+        }
+        (Bvh { root: Some(root), pairs: pairs.into_iter().map(Pair::new).collect() }, order)
+    }
+
+    /// The box around everything, or `None` when there is nothing.
+    pub fn bounds(&self) -> Option<Aabb> {
+        self.root.as_ref().map(Node::aabb)
+    }
+
+    /// Walks the tree front to back along the ray, calling `leaf(range, t_max)` for each leaf whose box the
+    /// ray meets before `t_max`. `leaf` may lower `t_max` (closest hit) or return `true` to stop (any hit).
+    #[inline]
+    pub fn traverse(
+        &self,
+        start: Vector,
+        dir: Vector,
+        mut t_max: f32,
+        mut leaf: impl FnMut(Range<usize>, &mut f32) -> bool,
+    ) {
+        let Some(root) = &self.root else { return };
+        let inv_dir = dir.recip();
+        if root.entry(start, inv_dir, t_max).is_none() {
+            return;
+        }
+        let (o, inv) =
+            ([start.x, start.y, start.z].map(Vec4::splat), [inv_dir.x, inv_dir.y, inv_dir.z].map(Vec4::splat));
+        // Where a direction component is negative the max plane is met first: swap the min and max lanes.
+        let negative = [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0];
+        let slab = |planes: Vec4, k: usize| {
+            let t = (planes - o[k]) * inv[k];
+            if negative[k] { t.zwxy() } else { t }
+        };
+        let grow = Vec4::splat(1.0 + 2.0 * gamma(3));
+        let mut stack = [(0u32, 0u32, 0.0f32); MAX_DEPTH];
+        let mut top = 0;
+        let (mut first, mut count) = (root.first() as u32, root.count() as u32);
+        loop {
+            if count > 0 {
+                if leaf(first as usize..(first + count) as usize, &mut t_max) {
+                    return;
+                }
+            } else {
+                let pair = &self.pairs[first as usize];
+                let (tx, ty, tz) = (slab(pair.x, 0), slab(pair.y, 1), slab(pair.z, 2));
+                // Lanes 0 and 1: where the ray enters each child's box; lanes 2 and 3: where it leaves.
+                let near = tx.max(ty).max(tz).max(Vec4::ZERO);
+                let far = tx.min(ty).min(tz).zwxy() * grow;
+                let hit = (near.cmple(far) & near.cmplt(Vec4::splat(t_max))).bitmask() & 3;
+                if hit != 0 {
+                    let side = if hit == 3 {
+                        let (near_side, far_side) = if near.x <= near.y { (0, 1) } else { (1, 0) };
+                        stack[top] = (pair.first[far_side], pair.count[far_side], near[far_side]);
+                        top += 1;
+                        near_side
+                    } else {
+                        (hit >> 1) as usize
+                    };
+                    (first, count) = (pair.first[side], pair.count[side]);
+                    continue;
+                }
+            }
+            // Pop the next node that may still hold something closer than the best hit so far.
+            loop {
+                if top == 0 {
+                    return;
+                }
+                top -= 1;
+                let (f, c, t_entry) = stack[top];
+                if t_entry < t_max {
+                    (first, count) = (f, c);
+                    break;
+                }
+            }
+        }
+    }
+
+    /// The number of nodes (for the benchmark's report).
+    pub fn node_count(&self) -> usize {
+        self.root.map_or(0, |_| 1 + 2 * self.pairs.len())
+    }
+}
+
+fn bin_of(c: f32, min: f32, scale: f32) -> usize {
+    (((c - min) * scale) as usize).min(BINS - 1)
+}
+
+/// The cheapest binned SAH split of a node with box `node_box`, with the centroid bounds it was binned in;
+/// `None` when keeping the node as a leaf is cheaper (and it is small enough) or the centroids coincide.
+fn best_split(prims: &[u32], boxes: &[Aabb], centroids: &[Vector], node_box: &Aabb) -> Option<(Split, Aabb)> {
+    let cb = Aabb::from_points(prims.iter().map(|&p| centroids[p as usize]));
+    let mut best: Option<(f32, Split)> = None;
+    let extent = cb.max - cb.min;
+    let scale = Vector::splat(BINS as f32) / extent;
+    // One pass bins every primitive on all three axes.
+    let mut all_bins = [[(EMPTY, 0usize); BINS]; 3];
+    for &p in prims {
+        let offset = (centroids[p as usize] - cb.min) * scale;
+        for (axis, bins) in all_bins.iter_mut().enumerate() {
+            let b = &mut bins[(offset[axis] as usize).min(BINS - 1)];
+            b.0 = union(b.0, boxes[p as usize]);
+            b.1 += 1;
+        }
+    }
+    for (axis, bins) in all_bins.iter().enumerate() {
+        if !(extent[axis] > 0.0) {
+            continue;
+        }
+        // Sweep from the right: the box and count of bins i.. for every i.
+        let mut right = [(EMPTY, 0usize); BINS];
+        let mut acc = (EMPTY, 0);
+        for i in (1..BINS).rev() {
+            acc = (union(acc.0, bins[i].0), acc.1 + bins[i].1);
+            right[i] = acc;
+        }
+        let mut left = (EMPTY, 0);
+        for i in 0..BINS - 1 {
+            left = (union(left.0, bins[i].0), left.1 + bins[i].1);
+            let r = right[i + 1];
+            if left.1 == 0 || r.1 == 0 {
+                continue;
+            }
+            let cost = half_area(&left.0) * left.1 as f32 + half_area(&r.0) * r.1 as f32;
+            if best.as_ref().is_none_or(|(c, _)| cost < *c) {
+                best = Some((cost, Split { axis, bin: i, left: left.0, right: r.0 }));
+            }
+        }
+    }
+    let (cost, split) = best?;
+    let area = half_area(node_box);
+    let split_cost = TRAVERSAL_COST + cost / area;
+    (split_cost < prims.len() as f32 || prims.len() > MAX_LEAF).then_some((split, cb))
+}

@@ -1,0 +1,321 @@
+//! `Mesh` (slide "Model трансформация": "a teapot standing on its base, spout towards +X"): a triangle
+//! mesh read from a Wavefront OBJ file, in its canonical form; a node's transform places it anywhere, and
+//! several nodes can share one mesh (instancing).
+//!
+//! - Loading: tobj, polygons triangulated. Triangles with a zero area or a non-finite vertex are dropped
+//!   (they cannot be hit and have no normal), so an empty or degenerate file gives an empty mesh, never a
+//!   NaN.
+//! - Shading: smooth by default, with the file's vertex normals or, when it has none, normals computed by
+//!   summing the area-weighted face normals around each vertex; `faceted` uses the face normals.
+//!   `geometric_normal` is the face normal, turned to the side of the shading normal.
+//! - u/v: from the file when it has texture coordinates (as written there), else the barycentric
+//!   coordinates of the hit.
+//! - Intersection: a [`Bvh`](super::bvh::Bvh) built once at load time, and the watertight ray-triangle test
+//!   of Woop, Benthin and Wald ("Watertight Ray/Triangle Intersection", JCGT 2013): the vertices are moved
+//!   into a frame where the ray runs along +z from the origin, and the 2D edge functions decide the hit.
+//!   Every vertex is transformed the same way whichever triangle it belongs to, and an edge function that
+//!   rounds to exactly zero is recomputed in double precision, edge by edge (the paper and pbrt recompute
+//!   all three, which lets two neighbours evaluate their shared edge differently), so a ray through a
+//!   shared edge or vertex always hits one of the triangles around it: no cracks. The hit point's error bound is pbrt-v4's for
+//!   barycentric interpolation, `gamma(7) * sum |b_i p_i|`, and a hit closer than the bound on the error of
+//!   its `t` is rejected, so a shadow or reflected ray never finds the triangle it starts on.
+
+use super::bvh::Bvh;
+use super::{Aabb, Geometry, IntersectionInfo};
+use crate::error::{Error, Result};
+use crate::math::{Vector, gamma};
+use crate::ray::Ray;
+use glam::Mat3A;
+use std::path::Path;
+
+/// A triangle mesh with a BVH; see the module documentation.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    bvh: Bvh,
+    /// The vertices of each triangle, in BVH order.
+    triangles: Vec<[Vector; 3]>,
+    /// The vertex normals of each triangle, in BVH order.
+    normals: Vec<[Vector; 3]>,
+    /// The texture coordinates of each triangle, in BVH order; empty when the file has none.
+    uvs: Vec<[[f32; 2]; 3]>,
+    /// Shade with the face normals instead of the interpolated vertex normals.
+    pub faceted: bool,
+}
+
+/// Index triples into a list of attributes, one per triangle.
+type Indices = [[u32; 3]];
+
+/// The ray in the frame of the watertight test: translated to the origin, its largest direction component
+/// made the z axis, and sheared so that it runs along +z.
+#[derive(Clone, Copy, Debug)]
+pub struct ShearedRay {
+    start: Vector,
+    /// v -> (v[kx] - sx v[kz], v[ky] - sy v[kz], v[kz] / dir[kz]) for v relative to `start`.
+    shear: Mat3A,
+}
+
+impl ShearedRay {
+    pub fn new(ray: &Ray) -> ShearedRay {
+        let d = ray.dir;
+        let abs = d.abs();
+        let kz = if abs.x > abs.y {
+            if abs.x > abs.z { 0 } else { 2 }
+        } else if abs.y > abs.z {
+            1
+        } else {
+            2
+        };
+        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
+        // Keep the winding (and so the sign of the edge functions) of a right-handed frame.
+        if d[kz] < 0.0 {
+            std::mem::swap(&mut kx, &mut ky);
+        }
+        let (sx, sy, sz) = (d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
+        let mut cols = [Vector::ZERO; 3];
+        cols[kx] = Vector::X;
+        cols[ky] = Vector::Y;
+        cols[kz] = Vector::new(-sx, -sy, sz);
+        ShearedRay { start: ray.start, shear: Mat3A::from_cols(cols[0], cols[1], cols[2]) }
+    }
+
+    /// The watertight test: the ray parameter in (0, `t_max`) and the barycentric coordinates of the hit.
+    #[inline(always)]
+    pub fn hit(&self, tri: &[Vector; 3], t_max: f32) -> Option<(f32, [f32; 3])> {
+        let a = self.shear * (tri[0] - self.start);
+        let b = self.shear * (tri[1] - self.start);
+        let c = self.shear * (tri[2] - self.start);
+        let (e0, e1, e2) = (edge(b, c), edge(c, a), edge(a, b));
+        if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
+            return None;
+        }
+        let det = e0 + e1 + e2;
+        let t_scaled = e0 * a.z + e1 * b.z + e2 * c.z;
+        // Written so that a NaN (a degenerate ray) is a miss.
+        let in_range = if det > 0.0 {
+            t_scaled > 0.0 && t_scaled < t_max * det
+        } else {
+            det < 0.0 && t_scaled < 0.0 && t_scaled > t_max * det
+        };
+        if !in_range {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let t = t_scaled * inv_det;
+        // Reject hits within the rounding error of t (pbrt-v4, section 6.8.6).
+        let max_z = a.z.abs().max(b.z.abs()).max(c.z.abs());
+        let max_x = a.x.abs().max(b.x.abs()).max(c.x.abs());
+        let max_y = a.y.abs().max(b.y.abs()).max(c.y.abs());
+        let delta_z = gamma(3) * max_z;
+        let delta_x = gamma(5) * (max_x + max_z);
+        let delta_y = gamma(5) * (max_y + max_z);
+        let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let max_e = e0.abs().max(e1.abs()).max(e2.abs());
+        let delta_t = 3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+        (t > delta_t).then_some((t, [e0 * inv_det, e1 * inv_det, e2 * inv_det]))
+    }
+}
+
+/// The edge function of the edge from `p` to `q` (twice the signed area of the origin, `p` and `q` in the
+/// sheared frame's xy plane). Where it rounds to exactly zero it is recomputed in double precision, where
+/// the products are exact. The decision depends on the edge alone, so the two triangles that share an edge
+/// always compute the same value (with opposite signs), and a ray cannot pass between them.
+#[inline(always)]
+fn edge(p: Vector, q: Vector) -> f32 {
+    let e = p.x * q.y - p.y * q.x;
+    if e == 0.0 { (p.x as f64 * q.y as f64 - p.y as f64 * q.x as f64) as f32 } else { e }
+}
+
+/// The watertight ray-triangle test on its own: the ray parameter of the hit in (0, `t_max`), if any.
+/// The mesh uses exactly this test; it is public so that tests can compare the BVH with brute force.
+pub fn intersect_triangle(ray: &Ray, tri: &[Vector; 3], t_max: f32) -> Option<f32> {
+    ShearedRay::new(ray).hit(tri, t_max).map(|(t, _)| t)
+}
+
+fn face_normal(tri: &[Vector; 3]) -> Vector {
+    (tri[1] - tri[0]).cross(tri[2] - tri[0])
+}
+
+/// Checks that every index of `indices` is below `len`.
+fn check_indices(indices: &Indices, len: usize, what: &'static str) -> Result<()> {
+    match indices.iter().flatten().find(|&&i| i as usize >= len) {
+        Some(&i) => Err(Error::parameter(what, i, format!("there are only {len}"))),
+        None => Ok(()),
+    }
+}
+
+impl Mesh {
+    /// A mesh from vertex positions and triangles (index triples), with smooth normals computed from the
+    /// faces and barycentric u/v.
+    pub fn new(positions: &[Vector], triangles: &Indices) -> Result<Mesh> {
+        Mesh::from_parts(positions, triangles, None, None)
+    }
+
+    /// A mesh from positions and triangles, with optional vertex normals and texture coordinates, each
+    /// with its own index triples (as OBJ files store them).
+    pub fn from_parts(
+        positions: &[Vector],
+        triangles: &Indices,
+        normals: Option<(&[Vector], &Indices)>,
+        uvs: Option<(&[[f32; 2]], &Indices)>,
+    ) -> Result<Mesh> {
+        check_indices(triangles, positions.len(), "vertex index")?;
+        if let Some((n, idx)) = normals {
+            check_indices(idx, n.len(), "normal index")?;
+            if idx.len() != triangles.len() {
+                return Err(Error::parameter("normal indices", idx.len(), "one triple per triangle is needed"));
+            }
+        }
+        if let Some((t, idx)) = uvs {
+            check_indices(idx, t.len(), "texture coordinate index")?;
+            if idx.len() != triangles.len() {
+                return Err(Error::parameter("uv indices", idx.len(), "one triple per triangle is needed"));
+            }
+        }
+        let corners = |t: &[u32; 3]| t.map(|i| positions[i as usize]);
+        // Keep the triangles that can be hit: finite and of non-zero area.
+        let keep: Vec<usize> = (0..triangles.len())
+            .filter(|&i| {
+                let tri = corners(&triangles[i]);
+                let n = face_normal(&tri);
+                tri.iter().all(|v| v.is_finite()) && n.is_finite() && n != Vector::ZERO
+            })
+            .collect();
+        let computed: Vec<Vector>;
+        let (normal_values, normal_indices) = match normals {
+            Some(n) => n,
+            None => {
+                // Area-weighted vertex normals: the unnormalised face normal is twice the area times the
+                // unit normal.
+                let mut sum = vec![Vector::ZERO; positions.len()];
+                for &i in &keep {
+                    let t = &triangles[i];
+                    let n = face_normal(&corners(t));
+                    t.iter().for_each(|&v| sum[v as usize] += n);
+                }
+                computed = sum.into_iter().map(|n| n.normalize_or_zero()).collect();
+                (&computed[..], triangles)
+            }
+        };
+        let boxes: Vec<Aabb> = keep.iter().map(|&i| Aabb::from_points(corners(&triangles[i]))).collect();
+        let (bvh, order) = Bvh::build(&boxes);
+        let original = |k: u32| keep[k as usize];
+        Ok(Mesh {
+            bvh,
+            triangles: order.iter().map(|&k| corners(&triangles[original(k)])).collect(),
+            normals: order
+                .iter()
+                .map(|&k| normal_indices[original(k)].map(|i| normal_values[i as usize].normalize_or_zero()))
+                .collect(),
+            uvs: uvs.map_or_else(Vec::new, |(values, idx)| {
+                order.iter().map(|&k| idx[original(k)].map(|i| values[i as usize])).collect()
+            }),
+            faceted: false,
+        })
+    }
+
+    /// Loads a Wavefront OBJ file (every object in it, polygons triangulated). A missing or malformed file
+    /// is an error naming it.
+    pub fn load(path: &Path) -> Result<Mesh> {
+        let options =
+            tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
+        // Materials are not needed: a missing .mtl file is not an error.
+        let (models, _) = tobj::load_obj(path, &options).map_err(|e| Error::file("cannot read mesh", path, e))?;
+        let mut positions = Vec::new();
+        let mut triangles = Vec::new();
+        let (mut normals, mut normal_indices) = (Vec::new(), Vec::new());
+        let (mut uvs, mut uv_indices) = (Vec::new(), Vec::new());
+        let (mut all_normals, mut all_uvs) = (true, true);
+        let triples = |idx: &[u32], base: usize| -> Vec<[u32; 3]> {
+            idx.chunks_exact(3).map(|c| [c[0], c[1], c[2]].map(|i| i + base as u32)).collect()
+        };
+        for model in &models {
+            let m = &model.mesh;
+            let faces = m.indices.len() / 3;
+            let (p0, n0, t0) = (positions.len(), normals.len(), uvs.len());
+            positions.extend(m.positions.chunks_exact(3).map(|p| Vector::new(p[0], p[1], p[2])));
+            normals.extend(m.normals.chunks_exact(3).map(|n| Vector::new(n[0], n[1], n[2])));
+            uvs.extend(m.texcoords.chunks_exact(2).map(|t| [t[0], t[1]]));
+            triangles.extend(triples(&m.indices, p0));
+            all_normals &= m.normal_indices.len() == 3 * faces;
+            all_uvs &= m.texcoord_indices.len() == 3 * faces;
+            normal_indices.extend(triples(&m.normal_indices, n0));
+            uv_indices.extend(triples(&m.texcoord_indices, t0));
+        }
+        let normals = (all_normals && !triangles.is_empty()).then_some((&normals[..], &normal_indices[..]));
+        let uvs = (all_uvs && !triangles.is_empty()).then_some((&uvs[..], &uv_indices[..]));
+        Mesh::from_parts(&positions, &triangles, normals, uvs).map_err(|e| Error::file("cannot read mesh", path, e))
+    }
+
+    /// The same mesh shaded with its face normals (`true`) or smoothly (`false`).
+    pub fn with_faceted(mut self, faceted: bool) -> Mesh {
+        self.faceted = faceted;
+        self
+    }
+
+    /// The number of triangles (after dropping degenerate ones).
+    pub fn triangle_count(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// The triangles' vertices, in the order the BVH stores them.
+    pub fn triangles(&self) -> &[[Vector; 3]] {
+        &self.triangles
+    }
+
+    /// The acceleration structure (for the benchmark's report).
+    pub fn bvh(&self) -> &Bvh {
+        &self.bvh
+    }
+
+    /// The hit point, normals, u/v and error bound of a hit on triangle `i`.
+    fn info(&self, i: usize, t: f32, b: [f32; 3]) -> IntersectionInfo {
+        let tri = &self.triangles[i];
+        let terms = [tri[0] * b[0], tri[1] * b[1], tri[2] * b[2]];
+        let ip = terms[0] + terms[1] + terms[2];
+        let error = gamma(7) * (terms[0].abs() + terms[1].abs() + terms[2].abs()).max_element();
+        let face = face_normal(tri).normalize();
+        let n = &self.normals[i];
+        let smooth = (n[0] * b[0] + n[1] * b[1] + n[2] * b[2]).normalize_or_zero();
+        let normal = if self.faceted || smooth == Vector::ZERO { face } else { smooth };
+        let geometric_normal = if face.dot(normal) < 0.0 { -face } else { face };
+        let (u, v) = match self.uvs.get(i) {
+            Some(uv) => (
+                uv[0][0] * b[0] + uv[1][0] * b[1] + uv[2][0] * b[2],
+                uv[0][1] * b[0] + uv[1][1] * b[1] + uv[2][1] * b[2],
+            ),
+            None => (b[1], b[2]),
+        };
+        IntersectionInfo { ip, normal, geometric_normal, distance: t, u, v, error }
+    }
+}
+
+impl Geometry for Mesh {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        let sheared = ShearedRay::new(ray);
+        let mut best = None;
+        self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
+            for i in range {
+                if let Some((t, b)) = sheared.hit(&self.triangles[i], *t_max) {
+                    *t_max = t;
+                    best = Some((i, t, b));
+                }
+            }
+            false
+        });
+        best.map(|(i, t, b)| self.info(i, t, b))
+    }
+
+    fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        let sheared = ShearedRay::new(ray);
+        let mut hit = false;
+        self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
+            hit = range.into_iter().any(|i| sheared.hit(&self.triangles[i], *t_max).is_some());
+            hit
+        });
+        hit
+    }
+
+    fn bounds(&self) -> Option<Aabb> {
+        self.bvh.bounds()
+    }
+}

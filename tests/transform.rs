@@ -1,0 +1,133 @@
+//! The model transform (slide "Model трансформация"): T * T^-1 is the identity, a scaled sphere has the
+//! analytic ellipsoid normal, instancing renders exactly what separate copies render, and a singular
+//! transform is an error.
+
+use lecture6::camera::{Camera, rotation};
+use lecture6::color::Color;
+use lecture6::geometry::{Geometry, Mesh, Sphere};
+use lecture6::light::PointLight;
+use lecture6::math::Vector;
+use lecture6::node::Node;
+use lecture6::ray::Ray;
+use lecture6::render::{RenderSettings, render};
+use lecture6::rng::Rng;
+use lecture6::scene::Scene;
+use lecture6::shader::{Lambert, Phong, Shader};
+use lecture6::transform::Transform;
+use proptest::prelude::*;
+use std::sync::Arc;
+
+fn vector(range: std::ops::Range<f32>) -> impl Strategy<Value = Vector> {
+    (range.clone(), range.clone(), range).prop_map(|(x, y, z)| Vector::new(x, y, z))
+}
+
+fn magnitude() -> impl Strategy<Value = f32> {
+    (0.2f32..5.0, any::<bool>()).prop_map(|(m, negative)| if negative { -m } else { m })
+}
+
+proptest! {
+    #[test]
+    fn t_times_t_inverse_is_the_identity(
+        scale in (magnitude(), magnitude(), magnitude()),
+        angles in vector(-180.0..180.0),
+        offset in vector(-100.0..100.0),
+        p in vector(-50.0..50.0),
+    ) {
+        let t = Transform::IDENTITY
+            .scale(Vector::new(scale.0, scale.1, scale.2))
+            .rotate(angles.x, angles.y, angles.z)
+            .translate(offset);
+        prop_assert!(t.check().is_ok());
+        let world = t.point_to_world(p);
+        let back = t.ray_to_canonical(&Ray::new(world, Vector::Z)).start;
+        // Scales of 0.2..5 allow a condition number of 25; the rounding is relative to the largest term.
+        let tolerance = 25.0 * 8.0 * f32::EPSILON * (p.abs().max_element() + offset.abs().max_element() * 5.0 + 1.0);
+        prop_assert!((back - p).abs().max_element() <= tolerance, "{p} -> {world} -> {back}");
+        // The world ray's direction comes back, unnormalised, as T's linear part applied to the canonical one.
+        let d = t.ray_to_canonical(&Ray::new(world, Vector::new(0.6, 0.0, 0.8))).dir;
+        let again = t.matrix().transform_vector3a(d);
+        prop_assert!((again - Vector::new(0.6, 0.0, 0.8)).length() < 1e-4, "{again}");
+    }
+}
+
+#[test]
+fn a_scaled_sphere_has_the_analytic_ellipsoid_normal() {
+    let (a, b, c) = (2.0f32, 1.5, 0.9);
+    let (yaw, pitch, roll) = (35.0, -20.0, 12.0);
+    let offset = Vector::new(3.3, 0.0, 18.1);
+    let node = Node::new(Arc::new(Sphere::new(Vector::ZERO, 1.0)), Arc::new(Lambert::new(Color::WHITE)))
+        .scale(Vector::new(a, b, c))
+        .rotate(yaw, pitch, roll)
+        .translate(offset);
+    let r = rotation(yaw, pitch, roll);
+    let mut rng = Rng::for_keys(&[42]);
+    let mut hits = 0;
+    for _ in 0..2000 {
+        let start = offset + Vector::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, -1.0) * 8.0;
+        let target = offset + (Vector::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - 0.5) * 3.0;
+        let ray = Ray::new(start, (target - start).normalize());
+        let Some(info) = node.intersect(&ray, f32::INFINITY) else { continue };
+        hits += 1;
+        // The hit lies on the ellipsoid (x/a)^2 + (y/b)^2 + (z/c)^2 = 1 of the rotated frame...
+        let local = r.transpose() * (info.ip - offset);
+        let level = (local / Vector::new(a, b, c)).length_squared();
+        assert!((level - 1.0).abs() < 1e-4, "{level}");
+        // ...at the ray's distance...
+        assert!((ray.at(info.distance) - info.ip).length() < 1e-4 * offset.length());
+        // ...and the normal is the gradient of that equation, rotated back.
+        let analytic = (r * (local / Vector::new(a * a, b * b, c * c))).normalize();
+        assert!(info.normal.dot(analytic) > 1.0 - 1e-6, "{} vs {analytic}", info.normal);
+        assert!((info.normal.length() - 1.0).abs() < 1e-5);
+    }
+    assert!(hits > 500, "only {hits} rays hit the ellipsoid");
+}
+
+fn scene_with(nodes: Vec<Node>) -> Scene {
+    let mut scene = Scene::new(Camera { position: Vector::new(0.0, 6.0, -12.0), pitch: -20.0, ..Camera::default() });
+    scene.ambient = Color::gray(0.1);
+    scene.lights.push(PointLight::new(Vector::new(-8.0, 20.0, -10.0), Color::WHITE, 600.0));
+    scene.nodes = nodes;
+    scene
+}
+
+#[test]
+fn an_instance_renders_the_same_as_a_separate_copy() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("textures/teapot_low.obj");
+    let red: Arc<dyn Shader> = Arc::new(Phong::new(Color::new(0.8, 0.2, 0.1), 0.3, 30.0));
+    let blue: Arc<dyn Shader> = Arc::new(Lambert::new(Color::new(0.1, 0.3, 0.8)));
+    let place = |mesh: Arc<dyn Geometry>| {
+        vec![
+            Node::new(mesh.clone(), red.clone()).rotate(30.0, 0.0, 0.0).translate(Vector::new(-3.0, 0.0, 0.0)),
+            Node::new(mesh, blue.clone()).scale(Vector::new(0.5, 1.2, 0.8)).translate(Vector::new(3.0, 0.0, 2.0)),
+        ]
+    };
+    let shared: Arc<dyn Geometry> = Arc::new(Mesh::load(&path).unwrap());
+    let mut instanced = place(shared.clone());
+    assert!(Arc::ptr_eq(&instanced[0].geometry, &instanced[1].geometry));
+    let mut copies = place(Arc::new(Mesh::load(&path).unwrap()));
+    copies[1].geometry = Arc::new(Mesh::load(&path).unwrap());
+    assert!(!Arc::ptr_eq(&copies[0].geometry, &copies[1].geometry));
+    let settings = RenderSettings { width: 96, height: 72, spp: 1, ..RenderSettings::default() };
+    let (a, _) = render(&scene_with(std::mem::take(&mut instanced)), &settings).unwrap();
+    let (b, _) = render(&scene_with(copies), &settings).unwrap();
+    assert!(a == b, "instancing changed the picture");
+    // And the picture shows both teapots: not a trivially equal empty frame.
+    let lit = a.pixels.iter().filter(|c| c.max_channel() > 0.05).count();
+    assert!(lit > 200, "{lit} lit pixels");
+}
+
+#[test]
+fn a_singular_transform_is_an_error_before_rendering() {
+    let sphere = Node::new(Arc::new(Sphere::new(Vector::ZERO, 1.0)), Arc::new(Lambert::new(Color::WHITE)));
+    for bad in [
+        sphere.clone().scale(Vector::new(1.0, 0.0, 1.0)),
+        sphere.clone().scale(Vector::new(1.0, f32::NAN, 1.0)),
+        sphere.clone().translate(Vector::new(f32::INFINITY, 0.0, 0.0)),
+    ] {
+        let err = render(&scene_with(vec![bad]), &RenderSettings { width: 8, height: 8, ..Default::default() })
+            .err()
+            .expect("a singular transform must be rejected");
+        assert!(err.to_string().contains("transform"), "{err}");
+    }
+    assert!(render(&scene_with(vec![sphere]), &RenderSettings { width: 8, height: 8, ..Default::default() }).is_ok());
+}
