@@ -97,8 +97,10 @@ impl Transform {
     pub fn info_to_world(&self, info: &IntersectionInfo) -> IntersectionInfo {
         let m = &self.forward.matrix3;
         let ip = self.forward.transform_point3a(info.ip);
-        let error =
-            norm_inf(m) * info.error + gamma(3) * (norm_inf(m) * max_abs(info.ip) + max_abs(self.forward.translation));
+        // The canonical error box grows by |M| (and by the rounding of that product), plus the rounding of
+        // transforming the point itself (pbrt-v4, section 6.8.5).
+        let error = (1.0 + gamma(3)) * norm_inf(m) * info.error
+            + gamma(3) * (norm_inf(m) * max_abs(info.ip) + max_abs(self.forward.translation));
         IntersectionInfo {
             ip,
             normal: (self.normal_matrix * info.normal).normalize(),

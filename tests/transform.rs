@@ -125,8 +125,7 @@ fn a_singular_transform_is_an_error_before_rendering() {
         sphere.clone().translate(Vector::new(f32::INFINITY, 0.0, 0.0)),
     ] {
         let err = render(&scene_with(vec![bad]), &RenderSettings { width: 8, height: 8, ..Default::default() })
-            .err()
-            .expect("a singular transform must be rejected");
+            .expect_err("a singular transform must be rejected");
         assert!(err.to_string().contains("transform"), "{err}");
     }
     assert!(render(&scene_with(vec![sphere]), &RenderSettings { width: 8, height: 8, ..Default::default() }).is_ok());

@@ -268,7 +268,8 @@ fn best_split(prims: &[u32], boxes: &[Aabb], centroids: &[Vector], node_box: &Aa
         }
     }
     for (axis, bins) in all_bins.iter().enumerate() {
-        if !(extent[axis] > 0.0) {
+        // Centroids are finite, so the extent is a number; zero when they all lie in one plane.
+        if extent[axis] <= 0.0 {
             continue;
         }
         // Sweep from the right: the box and count of bins i.. for every i.

@@ -62,9 +62,10 @@ const SLIDE_ROTATE: [f32; 3] = [0.8, 0.1, 0.2];
 const SLIDE_TRANSLATE: Vector = Vector::new(3.3, 0.0, 18.1);
 
 impl Args {
-    /// The teapot mesh, or the student's own in its place, and a node maker that first fits that mesh to
-    /// the teapot's bounding box (bottom centre on bottom centre, the same largest extent).
-    fn mesh(&self) -> Result<(Arc<dyn Geometry>, impl Fn(Arc<dyn Shader>) -> Node)> {
+    /// Loads the teapot mesh, or the student's own in its place, and returns a maker of nodes that share
+    /// it, each first fitted to the teapot's bounding box (bottom centre on bottom centre, the same largest
+    /// extent).
+    fn mesh_nodes(&self) -> Result<impl Fn(Arc<dyn Shader>) -> Node> {
         let bundled = match self.teapot {
             Teapot::Low => "teapot_low.obj",
             Teapot::High => "teapot.obj",
@@ -83,15 +84,13 @@ impl Args {
             }
         };
         let mesh: Arc<dyn Geometry> = Arc::new(mesh.with_faceted(self.faceted));
-        let shared = mesh.clone();
-        let node = move |shader: Arc<dyn Shader>| {
-            let node = Node::new(shared.clone(), shader);
+        Ok(move |shader: Arc<dyn Shader>| {
+            let node = Node::new(mesh.clone(), shader);
             match fit {
                 None => node,
                 Some((from, scale, to)) => node.translate(-from).scale(Vector::splat(scale)).translate(to),
             }
-        };
-        Ok((mesh, node))
+        })
     }
 }
 
@@ -116,7 +115,7 @@ impl Example for Args {
         let tiles = super::load_texture("floor_tiles.png", None, Default::default())?.with_scaling(8.0);
         scene.add(Node::new(Arc::new(Plane::new(0.0, 60.0)), Arc::new(Lambert::new(tiles))));
 
-        let (_, teapot) = self.mesh()?;
+        let teapot = self.mesh_nodes()?;
         let phong = |r, g, b| -> Arc<dyn Shader> { Arc::new(Phong::new(Color::new(r, g, b), 0.35, 40.0)) };
         // The canonical teapot, as the file has it, and the slide's transform of it.
         scene.add(teapot(phong(0.75, 0.18, 0.12)));
