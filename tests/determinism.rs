@@ -17,3 +17,11 @@ fn different_seeds_give_different_anti_aliasing() {
     let b = common::render::<bitmap_textures::Args>(&["--seed", "2", "--width", "160", "--height", "120"]);
     assert_ne!(a, b, "the seed must reach the sampler");
 }
+
+#[test]
+fn model_transform_is_identical_for_one_and_two_threads() {
+    use lecture6::scenes::model_transform::Args;
+    let one = common::render::<Args>(&["--threads", "1", "--width", "160", "--height", "120"]);
+    let two = common::render::<Args>(&["--threads", "2", "--width", "160", "--height", "120"]);
+    assert!(one == two, "the picture changed with the thread count");
+}
