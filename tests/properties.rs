@@ -4,7 +4,7 @@
 use lecture6::Color;
 use lecture6::camera::Camera;
 use lecture6::environment::ConstantEnvironment;
-use lecture6::geometry::{Cube, Geometry, Plane, Prism, Sphere};
+use lecture6::geometry::{Cube, Geometry, Mesh, Plane, Prism, Sphere};
 use lecture6::light::PointLight;
 use lecture6::math::Vector;
 use lecture6::node::Node;
@@ -53,7 +53,15 @@ fn geometries() -> Vec<Arc<dyn Geometry>> {
         Arc::new(Sphere::new(Vector::new(1e5, 0.0, 0.0), 1e-3)),
         Arc::new(Cube::new(Vector::new(5.0, 5.0, 5.0), 5.0)),
         Arc::new(Prism::new(60.0, 2.0, 3.0)),
+        Arc::new(tetrahedron()),
     ]
+}
+
+/// A closed triangle mesh (a tetrahedron with smooth normals), plus a degenerate triangle that is dropped.
+fn tetrahedron() -> Mesh {
+    let v = [(0.0, 30.0, 0.0), (-20.0, 0.0, -10.0), (20.0, 0.0, -10.0), (0.0, 0.0, 25.0), (1.0, 1.0, 1.0)]
+        .map(|(x, y, z)| Vector::new(x, y, z));
+    Mesh::new(&v, &[[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [4, 4, 0]]).expect("valid indices")
 }
 
 /// A scene with every shader: a Fresnel glass holding a second glass (nested dielectrics), a mirror box
