@@ -19,8 +19,9 @@ use std::ops::Range;
 const BINS: usize = 16;
 /// The deepest a tree may grow; the traversal stack holds this many nodes.
 const MAX_DEPTH: usize = 64;
-/// Cost of visiting a node, relative to one ray-triangle test.
-const TRAVERSAL_COST: f32 = 1.0;
+/// Cost of visiting a node, relative to one ray-triangle test. 2 gives leaves of about three triangles and
+/// a tree two thirds the size that 1 gives, and measured at least as fast.
+const TRAVERSAL_COST: f32 = 2.0;
 /// Leaves larger than this are split even when the heuristic would keep them.
 const MAX_LEAF: usize = 8;
 
