@@ -1,5 +1,5 @@
-//! Draws every texture and writes every mesh of the workbook into `textures/` (see `lecture6::assets`). Deterministic: running it
-//! again writes the same pictures.
+//! Draws every texture and writes every mesh of the workbook into `textures/` (see `lecture6::assets`).
+//! Deterministic: running it again writes the same files.
 
 use lecture6::Result;
 use lecture6::assets::{ASSETS, HDR_ASSETS, MESHES};

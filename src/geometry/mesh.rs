@@ -16,9 +16,10 @@
 //!   Every vertex is transformed the same way whichever triangle it belongs to, and an edge function that
 //!   rounds to exactly zero is recomputed in double precision, edge by edge (the paper and pbrt recompute
 //!   all three, which lets two neighbours evaluate their shared edge differently), so a ray through a
-//!   shared edge or vertex always hits one of the triangles around it: no cracks. The hit point's error bound is pbrt-v4's for
-//!   barycentric interpolation, `gamma(7) * sum |b_i p_i|`, and a hit closer than the bound on the error of
-//!   its `t` is rejected, so a shadow or reflected ray never finds the triangle it starts on.
+//!   shared edge or vertex always hits one of the triangles around it: no cracks. The hit point's error
+//!   bound is pbrt-v4's for barycentric interpolation, `gamma(7) * sum |b_i p_i|`, and a hit closer than
+//!   the bound on the error of its `t` is rejected, so a shadow or reflected ray never finds the triangle
+//!   it starts on.
 
 use super::bvh::Bvh;
 use super::{Aabb, Geometry, IntersectionInfo};

@@ -1,5 +1,6 @@
 //! Geometry (lectures 2-3, and slide "Model трансформация"): the shapes rays can hit, each in its canonical
-//! form: plane, sphere, cube and triangle mesh (with its BVH). Placing a shape anywhere else is the job of a [`Node`](crate::node::Node)'s transform.
+//! form: plane, sphere, cube, prism, triangle mesh (with its BVH). Placing a shape anywhere else is the job
+//! of a [`Node`](crate::node::Node)'s transform.
 //!
 //! Every shape reports, with the hit, an absolute bound on the floating-point error of the hit point
 //! (`IntersectionInfo::error`). Secondary rays start that far off the surface (see
