@@ -12,4 +12,4 @@ macro_rules! regression {
     )*};
 }
 
-regression!(bitmap_textures, dispersion);
+regression!(bitmap_textures, dispersion, environment, reflect_v01, reflect_v02, refract);
