@@ -149,8 +149,8 @@ fn run<E: Example>(args: &E) -> Result<()> {
         );
         if stats.counters.capped_rays > 0 {
             println!(
-                "{}: {} rays went deeper than the safety cap of {} bounces and returned black: without a depth \
-                 limit, facing mirrors recurse until the stack overflows; that is why Reflection v0.2 adds MAX_RAY_DEPTH",
+                "{}: {} ray(s) bounced past the safety cap of {} and returned black: without a depth limit, facing \
+                 mirrors recurse until the stack overflows; that is why Reflection v0.2 adds MAX_RAY_DEPTH",
                 E::NAME,
                 stats.counters.capped_rays,
                 RECURSION_SAFETY_CAP
