@@ -5,7 +5,8 @@
 //!
 //! `--kind spherical` reads the sky from one equirectangular image (`textures/sky.hdr`), `--kind cubemap`
 //! from six cube faces made from it (`textures/sky_cubemap/`): the two pictures should look the same.
-//! `--env FILE|FOLDER` (a common option) puts the objects in an environment of your own.
+//! `--env FILE|FOLDER` (a common option) puts the objects in an environment of your own; the light then
+//! stays where the bundled sky's sun is.
 
 use crate::camera::Camera;
 use crate::cli::{CommonArgs, Example};
