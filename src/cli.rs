@@ -9,7 +9,7 @@ use crate::compare;
 use crate::environment;
 use crate::error::{Error, Result};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically};
-use crate::scene::Scene;
+use crate::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::spectral::{SpectralMode, SpectralPlan};
 use clap::Parser;
 use std::path::{Path, PathBuf};
@@ -147,6 +147,15 @@ fn run<E: Example>(args: &E) -> Result<()> {
             rays as f64 * 1e-6 / secs.max(1e-9),
             output.display()
         );
+        if stats.counters.capped_rays > 0 {
+            println!(
+                "{}: {} ray(s) bounced past the safety cap of {} and returned black: without a depth limit, facing \
+                 mirrors recurse until the stack overflows; that is why Reflection v0.2 adds MAX_RAY_DEPTH",
+                E::NAME,
+                stats.counters.capped_rays,
+                RECURSION_SAFETY_CAP
+            );
+        }
     }
     if let Some(reference) = &args.common().compare {
         let expected = compare::load_reference(reference)?;

@@ -10,7 +10,7 @@
 //! | [`geometry`], [`transform`], [`node`] | geometry in canonical form; model transform; nodes and instancing |
 //! | [`bitmap`], [`texture`] | bitmap textures; textures that drive shader properties; the Fresnel texture |
 //! | [`shader`] | Lambert, Phong, reflection, refraction, the Layered shader |
-//! | [`environment`] | what rays that hit nothing see |
+//! | [`environment`] | what rays that hit nothing see: constant, spherical (equirectangular) and cube-map environments |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`] | the parallel, deterministic renderer |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |

@@ -20,6 +20,13 @@ use std::sync::Arc;
 /// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
 pub const MAX_RAY_DEPTH: u32 = 2;
 
+/// A hard limit on the depth of recursion that holds whatever `max_depth` says, even "no limit" (the
+/// slide's Reflection v0.1): between two facing mirrors a ray can bounce forever, and each bounce is a
+/// nested call of `raytrace`, so without it the program would die of a stack overflow. Rays stopped here
+/// return black and are counted in [`Counters::capped_rays`]. The renderer's worker threads get a stack
+/// large enough for this depth (see [`crate::render`]).
+pub const RECURSION_SAFETY_CAP: u32 = 1000;
+
 #[derive(Clone)]
 pub struct Scene {
     pub camera: Camera,
@@ -82,6 +89,8 @@ pub struct Counters {
     pub rays_by_depth: [u64; 16],
     /// Shadow rays.
     pub shadow_rays: u64,
+    /// Rays not traced because they were deeper than [`RECURSION_SAFETY_CAP`].
+    pub capped_rays: u64,
 }
 
 impl Counters {
@@ -94,6 +103,7 @@ impl Counters {
             *a += b;
         }
         self.shadow_rays += other.shadow_rays;
+        self.capped_rays += other.capped_rays;
     }
 }
 
@@ -110,10 +120,15 @@ impl<'a> TraceContext<'a> {
         TraceContext { scene, rng, counters: Counters::default() }
     }
 
-    /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit; the
-    /// environment when nothing is hit; otherwise whatever the hit node's shader says.
+    /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
+    /// [`RECURSION_SAFETY_CAP`]); the environment when nothing is hit; otherwise whatever the hit node's
+    /// shader says.
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
         if ray.depth > self.scene.max_depth {
+            return Color::BLACK;
+        }
+        if ray.depth > RECURSION_SAFETY_CAP {
+            self.counters.capped_rays += 1;
             return Color::BLACK;
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;

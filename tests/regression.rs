@@ -12,4 +12,4 @@ macro_rules! regression {
     )*};
 }
 
-regression!(bitmap_textures, dispersion, model_transform);
+regression!(bitmap_textures, dispersion, environment, model_transform, reflect_v01, reflect_v02, refract);

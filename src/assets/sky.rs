@@ -12,9 +12,9 @@ use image::{Rgb, Rgb32FImage};
 use std::sync::{Arc, OnceLock};
 
 /// Size of the equirectangular sky.
-pub const SKY_SIZE: (u32, u32) = (512, 256);
+const SKY_SIZE: (u32, u32) = (512, 256);
 /// Size of each cube face.
-pub const FACE_SIZE: u32 = 128;
+const FACE_SIZE: u32 = 128;
 
 /// Where the sun is: 30° above the horizon, behind the default camera and to its right.
 pub fn sun_direction() -> Vector {
@@ -28,7 +28,7 @@ const SUN_RADIUS_DEGREES: f32 = 2.0;
 const SUN: [f32; 3] = [60.0, 54.0, 44.0];
 
 /// The radiance seen in the unit direction `d`.
-pub fn sky_radiance(d: Vector) -> [f32; 3] {
+fn sky_radiance(d: Vector) -> [f32; 3] {
     let sun = sun_direction();
     let cos_sun = d.dot(sun);
     if cos_sun >= SUN_RADIUS_DEGREES.to_radians().cos() {

@@ -1,0 +1,17 @@
+//! # Reflection v0.2 (lecture 6, slide "Reflection v0.2")
+//!
+//! Every ray carries its `depth`: camera rays 0, each reflection one more; a ray deeper than
+//! `MAX_RAY_DEPTH` (2, as on the slide) returns black. Two mirrors face each other, one in front of the
+//! camera and one behind it. Look at:
+//! - the mirror in front: the scene once (depth 1), and inside it the mirror behind the camera (depth 2),
+//!   whose own reflection is black: the limit;
+//! - the summary line: the rays traced, which grow with the limit.
+//!
+//! Try: `--max-depth 1`, `--max-depth 8` (a tunnel of nested frames, each 20% darker), `--multiplier 1.0`.
+//!
+//! Homework ideas: instead of black past the limit, return the environment; stop a ray early when its
+//! `weight` (the product of the multipliers on its way) drops below 1%, and compare the time.
+
+fn main() -> std::process::ExitCode {
+    lecture6::cli::main::<lecture6::scenes::reflect_v02::Args>()
+}
