@@ -25,6 +25,8 @@ pub const ASSETS: &[Asset] = &[
     Asset { name: "wood.png", draw: wood },
     Asset { name: "world.png", draw: world },
     Asset { name: "checker8.png", draw: checker8 },
+    Asset { name: "mirror_mask.png", draw: mirror_mask },
+    Asset { name: "metals.png", draw: metals },
 ];
 
 /// One linear-light file under `textures/`, written as Radiance HDR: its name and how to draw it.
@@ -195,4 +197,42 @@ pub fn world() -> RgbImage {
 /// the difference between nearest and bilinear filtering.
 pub fn checker8() -> RgbImage {
     RgbImage::from_fn(8, 8, |x, y| if (x + y) % 2 == 0 { Rgb([230, 225, 210]) } else { Rgb([40, 90, 160]) })
+}
+
+/// The blend mask of the `layered` example's panel (slide "Пример за текстура"): white where the panel is a
+/// mirror, black where its textured lower layer shows. One disc or ring in each cell of a 4 x 4 grid (the
+/// grid of `floor_tiles`), alternating like a checkerboard, with edges one texel soft.
+pub fn mirror_mask() -> RgbImage {
+    const N: u32 = 256;
+    const CELLS: u32 = 4;
+    let cell = (N / CELLS) as f32;
+    RgbImage::from_fn(N, N, |x, y| {
+        let (dx, dy) = ((x as f32 + 0.5) % cell - cell * 0.5, (y as f32 + 0.5) % cell - cell * 0.5);
+        let d = dx.hypot(dy);
+        // Coverage of "inside radius r", soft over one texel.
+        let inside = |r: f32| (r * cell - d + 0.5).clamp(0.0, 1.0);
+        let ring = (x / cell as u32 + y / cell as u32) % 2 == 1;
+        let m = if ring { inside(0.40) - inside(0.26) } else { inside(0.36) };
+        to_rgb([m; 3])
+    })
+}
+
+/// The reflection colours of the `layered` example's metal sphere (a texture driving a property other than
+/// the diffuse colour): bands of gold, silver and copper across v, brushed along u, with dark grooves between
+/// them. The colours are the metals' reflectances at normal incidence.
+pub fn metals() -> RgbImage {
+    const N: u32 = 256;
+    const BANDS: u32 = 8;
+    let gold = [1.0, 0.89, 0.61];
+    let silver = [0.98, 0.97, 0.95];
+    let copper = [0.98, 0.82, 0.76];
+    RgbImage::from_fn(N, N, |x, y| {
+        let (u, v) = (x as f32 / N as f32, y as f32 / N as f32);
+        let band = (v * BANDS as f32).floor() as u32;
+        let bv = v * BANDS as f32 - band as f32;
+        let metal = [gold, silver, copper][(band % 3) as usize];
+        let brushed = 0.9 + 0.1 * fbm(31, [u * 64.0, v * 2.0, band as f32], [64, 0, 0], 3);
+        let groove = bv.min(1.0 - bv) * ((N / BANDS) as f32) < 2.0;
+        to_rgb(metal.map(|c| if groove { 0.25 } else { c * brushed }))
+    })
 }

@@ -35,6 +35,11 @@ pub struct CommonArgs {
     /// Maximum ray depth (the slides' MAX_RAY_DEPTH): deeper rays return black. [default: the scene's own]
     #[arg(long)]
     pub max_depth: Option<u32>,
+    /// Trace every ray down to the maximum depth. By default a ray too weak to change its pixel by a whole
+    /// 8-bit level (its weight, the product of the multipliers, blends and Fresnel factors along its path, is
+    /// below the finest sRGB step) is not traced: adaptive ray-tree depth control.
+    #[arg(long)]
+    pub exhaustive: bool,
     /// Seed of every random choice; the same seed gives the same picture, byte for byte.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
@@ -101,6 +106,9 @@ pub fn render_example<E: Example>(args: &E) -> Result<(Frame, RenderStats)> {
     }
     if let Some(path) = &args.common().env {
         scene.environment = Some(environment::load(path)?);
+    }
+    if args.common().exhaustive {
+        scene.min_ray_weight = 0.0;
     }
     render(&scene, &settings)
 }

@@ -13,7 +13,8 @@ pub struct Ray {
     pub dir: Vector,
     /// 0 for camera rays; each reflection or refraction adds 1.
     pub depth: u32,
-    /// How much this ray contributes to its pixel: 1 for camera rays.
+    /// How much this ray contributes to its pixel: 1 for camera rays. A shader that averages N random
+    /// samples gives each sample its full attenuation, not 1/N of it: each sample estimates the whole.
     pub weight: f32,
     /// Wavelength in nanometres when the ray carries a single wavelength (dispersion), else `None`.
     pub wavelength: Option<f32>,

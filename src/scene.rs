@@ -4,9 +4,15 @@
 //! generator of the pixel being rendered and the ray counters. Shaders receive it and call
 //! [`TraceContext::raytrace`] to follow reflected and refracted rays, and [`TraceContext::visible`] for
 //! shadow rays. One context exists per pixel row being rendered, so threads never share one.
+//!
+//! Adaptive ray-tree depth control (the classic Whitted optimisation, beyond the slides): besides the
+//! slides' `MAX_RAY_DEPTH`, `raytrace` returns black at once for a ray whose `weight` (the product of the
+//! multipliers, blends and Fresnel factors along its path) is below [`Scene::min_ray_weight`]: what such a ray
+//! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
+//! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
 
 use crate::camera::Camera;
-use crate::color::Color;
+use crate::color::{Color, srgb_to_linear};
 use crate::environment::Environment;
 use crate::error::Result;
 use crate::geometry::IntersectionInfo;
@@ -27,6 +33,15 @@ pub const MAX_RAY_DEPTH: u32 = 2;
 /// large enough for this depth (see [`crate::render`]).
 pub const RECURSION_SAFETY_CAP: u32 = 1000;
 
+/// The smallest amount of linear light that moves an 8-bit sRGB value by a whole level: the linear value of
+/// the first code above black. The codes are closest together there (the sRGB curve starts with a straight
+/// segment and grows steeper after it), so any smaller change, added to any pixel, moves its code by at
+/// most one level. A ray whose weight is below this cannot change its pixel by more than one level when what
+/// it sees is no brighter than white, the default [`Scene::min_ray_weight`].
+pub fn srgb8_finest_step() -> f32 {
+    srgb_to_linear(1.0 / 255.0)
+}
+
 #[derive(Clone)]
 pub struct Scene {
     pub camera: Camera,
@@ -38,6 +53,9 @@ pub struct Scene {
     pub ambient: Color,
     /// Rays deeper than this return black (the slide's `MAX_RAY_DEPTH`).
     pub max_depth: u32,
+    /// Rays whose `weight` is below this return black without being traced (adaptive ray-tree depth
+    /// control). [`srgb8_finest_step`] by default; 0 traces every ray to `max_depth` (`--exhaustive`).
+    pub min_ray_weight: f32,
 }
 
 impl Scene {
@@ -49,6 +67,7 @@ impl Scene {
             environment: None,
             ambient: Color::BLACK,
             max_depth: MAX_RAY_DEPTH,
+            min_ray_weight: srgb8_finest_step(),
         }
     }
 
@@ -91,6 +110,8 @@ pub struct Counters {
     pub shadow_rays: u64,
     /// Rays not traced because they were deeper than [`RECURSION_SAFETY_CAP`].
     pub capped_rays: u64,
+    /// Rays not traced because their weight was below `Scene::min_ray_weight` (not part of the total).
+    pub pruned_rays: u64,
 }
 
 impl Counters {
@@ -104,6 +125,7 @@ impl Counters {
         }
         self.shadow_rays += other.shadow_rays;
         self.capped_rays += other.capped_rays;
+        self.pruned_rays += other.pruned_rays;
     }
 }
 
@@ -121,14 +143,18 @@ impl<'a> TraceContext<'a> {
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
-    /// [`RECURSION_SAFETY_CAP`]); the environment when nothing is hit; otherwise whatever the hit node's
-    /// shader says.
+    /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
+    /// environment when nothing is hit; otherwise whatever the hit node's shader says.
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
         if ray.depth > self.scene.max_depth {
             return Color::BLACK;
         }
         if ray.depth > RECURSION_SAFETY_CAP {
             self.counters.capped_rays += 1;
+            return Color::BLACK;
+        }
+        if ray.weight < self.scene.min_ray_weight {
+            self.counters.pruned_rays += 1;
             return Color::BLACK;
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;

@@ -12,4 +12,14 @@ macro_rules! regression {
     )*};
 }
 
-regression!(bitmap_textures, dispersion, environment, model_transform, reflect_v01, reflect_v02, refract);
+regression!(
+    bitmap_textures,
+    dispersion,
+    environment,
+    fresnel,
+    layered,
+    model_transform,
+    reflect_v01,
+    reflect_v02,
+    refract,
+);

@@ -6,10 +6,18 @@
 //! res = 0;  for each layer, bottom to top:  res = res * (1 - blend) + layer_color * blend
 //! ```
 //!
-//! which gives layer i the weight `blend_i * (1 - blend_{i+1}) * ... * (1 - blend_top)`. This shader computes
-//! those weights first, from the top down, and then shades only the layers whose weight is not zero: a layer
-//! with zero blend at this point costs nothing, and under an opaque layer nothing is shaded at all. The
-//! result is the slide's, without the work the picture cannot show.
+//! which gives layer i the weight `blend_i * (1 - blend_{i+1}) * ... * (1 - blend_top)`. This shader walks
+//! the layers from the top down instead, computing those weights as it goes, and shades only the layers whose
+//! weight is not zero: a layer with zero blend at this point costs nothing, and under an opaque layer nothing
+//! is shaded at all (not even its blend texture is looked up). The result is the slide's, without the work
+//! the picture cannot show. [`Layered::shade_every_layer`] switches back to the slide's loop, to compare.
+//!
+//! Each layer's shader sees the ray with its weight multiplied by the layer's weight (its largest channel),
+//! so reflection and refraction rays below a faint layer are as faint as they look, and adaptive depth
+//! control (see [`crate::scene`]) stops them early.
+//!
+//! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
+//! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
 use super::Shader;
 use crate::color::Color;
@@ -17,6 +25,7 @@ use crate::geometry::IntersectionInfo;
 use crate::ray::Ray;
 use crate::scene::TraceContext;
 use crate::texture::Texture;
+use glam::Vec3A;
 use std::sync::Arc;
 
 #[derive(Clone)]
@@ -26,12 +35,24 @@ pub struct Layer {
     pub blend_tex: Option<Arc<dyn Texture>>,
 }
 
-/// The most layers a `Layered` may have (the slide's `MAX_LAYERS`); the weights live on the stack.
+impl Layer {
+    /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
+    fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        let blend = match &self.blend_tex {
+            Some(tex) => self.blend * tex.get_tex_color(ray, info),
+            None => self.blend,
+        };
+        Color(blend.0.clamp(Vec3A::ZERO, Vec3A::ONE))
+    }
+}
+
+/// The most layers a `Layered` may have (the slide's `MAX_LAYERS`).
 pub const MAX_LAYERS: usize = 32;
 
 #[derive(Clone, Default)]
 pub struct Layered {
     layers: Vec<Layer>,
+    every_layer: bool,
 }
 
 impl Layered {
@@ -51,6 +72,14 @@ impl Layered {
         self
     }
 
+    /// With `true`, shades every layer at every point, as the slide's loop does, even a layer of zero blend or
+    /// one hidden under an opaque layer. The picture is the same; only the time differs. (The layers are
+    /// still visited from the top down, so that nothing but the skipping differs between the two ways.)
+    pub fn shade_every_layer(&mut self, every_layer: bool) -> &mut Layered {
+        self.every_layer = every_layer;
+        self
+    }
+
     pub fn layers(&self) -> &[Layer] {
         &self.layers
     }
@@ -58,28 +87,21 @@ impl Layered {
 
 impl Shader for Layered {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        // Weights from the top down; stop at the first layer that covers everything below it.
-        let mut weights = [Color::BLACK; MAX_LAYERS];
-        let mut uncovered = Color::WHITE;
-        let mut bottom = self.layers.len();
-        for (i, layer) in self.layers.iter().enumerate().rev() {
-            let mut blend = layer.blend;
-            if let Some(tex) = &layer.blend_tex {
-                blend *= tex.get_tex_color(ray, info);
-            }
-            weights[i] = uncovered * blend;
-            uncovered *= Color::WHITE - blend;
-            bottom = i;
-            if uncovered.max_channel() <= 0.0 {
-                break;
-            }
-        }
+        // From the top down: `uncovered` is how much of the layers seen so far lets through, so a layer's
+        // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
         let mut res = Color::BLACK;
-        for (layer, w) in self.layers[bottom..].iter().zip(&weights[bottom..]) {
-            let strength = w.max_channel();
-            if strength > 0.0 {
+        let mut uncovered = Color::WHITE;
+        for layer in self.layers.iter().rev() {
+            let blend = layer.blend_at(ray, info);
+            let weight = uncovered * blend;
+            let strength = weight.max_channel();
+            if strength > 0.0 || self.every_layer {
                 let layer_ray = Ray { weight: ray.weight * strength, ..*ray };
-                res += layer.shader.shade(&layer_ray, info, ctx) * *w;
+                res += layer.shader.shade(&layer_ray, info, ctx) * weight;
+            }
+            uncovered *= Color::WHITE - blend;
+            if uncovered.max_channel() <= 0.0 && !self.every_layer {
+                break;
             }
         }
         res

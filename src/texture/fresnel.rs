@@ -2,6 +2,9 @@
 //! reflects at the angle the ray meets it, as a grey colour, meant to drive a `Layered` shader's reflection
 //! layer. Schlick's approximation is the slide's; the exact equations are a second mode for comparison.
 //! With a dispersive [`Ior`] the reflectance is that of the ray's wavelength.
+//! Both give 1 under total internal reflection, so a glass made of a refraction layer and a reflection layer
+//! blended by this texture loses no light there (the slide's formula, used as is when leaving the glass,
+//! would give less than 1 and let the refraction layer return black for the rest).
 
 use super::Texture;
 use crate::color::Color;
@@ -37,9 +40,12 @@ impl Fresnel {
     }
     /// The reflectance for this ray and hit (the slide's `getTexColor`, as a number).
     pub fn reflectance(&self, ray: &Ray, info: &IntersectionInfo) -> f32 {
-        // Entering: light goes from air (1) into the object (ior); leaving: the other way round.
+        // Entering, light goes from air (1) into the object (ior); leaving, the other way round: the slide's
+        // "eta flipped when inside". The test is the one `Refraction` makes, so the two always agree on which
+        // side the ray is (and on total internal reflection).
         let ior = self.ior.at(ray.wavelength);
-        let eta = if info.normal.dot(ray.dir) > 0.0 { ior } else { 1.0 / ior };
+        let entering = info.normal.dot(ray.dir) < 0.0;
+        let eta = if entering { 1.0 / ior } else { ior };
         let n = faceforward(info.normal, ray.dir);
         match self.mode {
             FresnelMode::Schlick => fresnel(ray.dir, n, eta),
