@@ -28,6 +28,10 @@ impl Sphere {
         let a = ray.dir.length_squared();
         let b = oc.dot(ray.dir);
         let f = oc - (b / a) * ray.dir;
+        // Most rays miss: decide that from squared lengths, before any square root or division.
+        if f.length_squared() > self.radius * self.radius {
+            return None;
+        }
         let disc = a * (self.radius - f.length()) * (self.radius + f.length());
         // `disc` is NaN for a degenerate ray: treat that as a miss too.
         if disc.is_nan() || disc < 0.0 {

@@ -8,14 +8,15 @@
 //! - A glass sphere at (0, 30, -30), radius 27, IOR 1.6: a `Layered` of a refraction layer (multiplier 0.9)
 //!   and a reflection layer (multiplier 0.9) whose blend is the `Fresnel` texture, so the glass reflects
 //!   little where it faces the camera and much at its rim, and all under total internal reflection.
-//! - One point light at (120, 180, 0), intensity 45000; ambient 0.1; a sky environment; max depth 10.
+//! - One point light at (120, 180, 0), intensity 45000; ambient 0.1; the generated sky as a cube map
+//!   (`textures/sky_cubemap/`); max depth 10.
 //!
 //! `--fresnel schlick|exact` picks the slide's approximation or the exact equations; `--ior` changes the glass.
 
 use crate::camera::Camera;
 use crate::cli::{CommonArgs, Example};
 use crate::color::Color;
-use crate::environment::ConstantEnvironment;
+use crate::environment::CubemapEnvironment;
 use crate::error::{Error, Result};
 use crate::geometry::{Plane, Sphere};
 use crate::light::PointLight;
@@ -76,7 +77,7 @@ impl Example for Args {
         scene.ambient = Color::gray(0.1);
         scene.max_depth = 10;
         scene.lights.push(PointLight::new(Vector::new(120.0, 180.0, 0.0), Color::WHITE, 45000.0));
-        scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.55, 0.7, 0.9))));
+        scene.environment = Some(Arc::new(CubemapEnvironment::load(&super::texture_path("sky_cubemap"))?));
 
         let tiles = super::load_texture("floor_tiles.png", None, Default::default())?.with_scaling(100.0);
         let mut floor = Layered::new();

@@ -18,7 +18,7 @@
 use crate::camera::Camera;
 use crate::cli::{CommonArgs, Example};
 use crate::color::Color;
-use crate::environment::ConstantEnvironment;
+use crate::environment::CubemapEnvironment;
 use crate::error::{Error, Result};
 use crate::geometry::{Cube, Plane, Sphere};
 use crate::light::PointLight;
@@ -75,7 +75,7 @@ impl Example for Args {
         scene.ambient = Color::gray(0.1);
         scene.max_depth = 8;
         scene.lights.push(PointLight::new(Vector::new(-90.0, 160.0, -70.0), Color::WHITE, 42000.0));
-        scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.55, 0.7, 0.9))));
+        scene.environment = Some(Arc::new(CubemapEnvironment::load(&super::texture_path("sky_cubemap"))?));
 
         // Lacquered wood: diffuse wood, and on top a clear layer that reflects as much as Fresnel says.
         let wood = super::load_texture("wood.png", None, Default::default())?.with_scaling(60.0);
@@ -98,8 +98,8 @@ impl Example for Args {
         panel.shade_every_layer(every_layer);
         scene.add(
             Node::new(Arc::new(Cube::new(Vector::ZERO, 1.0)), Arc::new(panel))
-                .scale(Vector::new(60.0, 45.0, 1.5))
-                .translate(Vector::new(0.0, 45.0, 75.0)),
+                .scale(Vector::new(56.0, 40.0, 1.5))
+                .translate(Vector::new(0.0, 41.0, 75.0)),
         );
 
         // The slide's layered Fresnel shader: a diffuse base, refraction at 0.3, Fresnel-blended reflection.
