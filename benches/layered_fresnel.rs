@@ -2,11 +2,15 @@
 //!
 //! - `fresnel` at its defaults (640 x 480, 5 samples per pixel, 2 threads) with adaptive ray-tree depth
 //!   control and with `--exhaustive`, plus how far apart the two pictures are;
-//! - `layered` at its defaults with layer skipping and with `--shade-every-layer` (the slide's loop).
+//! - `layered` at its defaults with layer skipping and with `--shade-every-layer` (the slide's loop), both
+//!   with adaptive depth control and with `--exhaustive`.
 //!
 //! The two ways alternate run by run, so a change in the machine's load hits both alike; the median of the
 //! runs is reported, with the fastest and slowest. Times are the render only (as in the examples' summary
-//! line), not loading the textures.
+//! line), not loading the textures. Besides the wall-clock time, the CPU time the process used during the
+//! render is reported (from `/proc/self/stat`, on Linux): on a machine shared with other work it tells what
+//! the render itself cost, and half of it is what the 2-thread wall time would be on an idle machine with
+//! perfect scaling.
 //!
 //! ```sh
 //! cargo bench --bench layered_fresnel            # 7 runs of each
@@ -20,10 +24,39 @@ use lecture6::scene::Counters;
 use lecture6::scenes::{fresnel, layered};
 use std::time::Duration;
 
-fn render<E: Example>(args: &[&str]) -> (Frame, RenderStats) {
+/// CPU time used by this process so far (user + system, all threads, including finished ones), if the
+/// system tells: fields 14 and 15 of `/proc/self/stat`, in clock ticks of 1/100 s.
+fn cpu_time() -> Option<Duration> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // The command name, field 2, is in parentheses and may hold spaces: count fields after it.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    let ticks: u64 = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
+    Some(Duration::from_millis(ticks * 10))
+}
+
+/// Renders with the given options, as the example does; returns the frame, the stats and the CPU time of
+/// the whole call (which includes building the scene: see [`load_cpu_time`]).
+fn render<E: Example>(args: &[&str]) -> (Frame, RenderStats, Option<Duration>) {
+    let parsed = parse::<E>(args);
+    let before = cpu_time();
+    let (frame, stats) = render_example(&parsed).expect("the example renders");
+    let cpu = before.zip(cpu_time()).map(|(b, a)| a.saturating_sub(b));
+    (frame, stats, cpu)
+}
+
+fn parse<E: Example>(args: &[&str]) -> E {
     let argv = [E::NAME, "--quiet", "--threads", "2"].into_iter().chain(args.iter().copied());
-    let parsed = E::try_parse_from(argv).expect("valid bench arguments");
-    render_example(&parsed).expect("the example renders")
+    E::try_parse_from(argv).expect("valid bench arguments")
+}
+
+/// The CPU time of building the example's scene (reading its textures), `runs` times in a row.
+fn load_cpu_time<E: Example>(runs: usize) -> Option<Duration> {
+    let parsed = parse::<E>(&[]);
+    let before = cpu_time();
+    for _ in 0..runs {
+        parsed.build_scene().expect("the scene builds");
+    }
+    before.zip(cpu_time()).map(|(b, a)| a.saturating_sub(b) / runs as u32)
 }
 
 /// One way of rendering an example: its label, its options, and what the runs measured.
@@ -31,31 +64,31 @@ struct Way<'a> {
     label: &'a str,
     args: &'a [&'a str],
     times: Vec<Duration>,
+    cpu: Vec<Duration>,
     counters: Counters,
     frame: Option<Frame>,
 }
 
 impl<'a> Way<'a> {
     fn new(label: &'a str, args: &'a [&'a str]) -> Way<'a> {
-        Way { label, args, times: Vec::new(), counters: Counters::default(), frame: None }
+        Way { label, args, times: Vec::new(), cpu: Vec::new(), counters: Counters::default(), frame: None }
     }
     fn median_ms(&self) -> f64 {
-        let mut t: Vec<f64> = self.times.iter().map(|d| d.as_secs_f64() * 1e3).collect();
-        t.sort_by(f64::total_cmp);
-        t[t.len() / 2]
+        median_ms(&self.times)
     }
     fn print(&self) {
         let ms: Vec<f64> = self.times.iter().map(|d| d.as_secs_f64() * 1e3).collect();
         let c = &self.counters;
         let secondary: u64 = c.rays_by_depth[1..].iter().sum();
         println!(
-            "  {:<22} median {:>8.1} ms  (min {:.1}, max {:.1}, {} runs)  rays: {:.2} M camera, {:.2} M secondary, \
-             {:.2} M shadow, {:.2} M not traced",
+            "  {:<20} wall median {:>7.1} ms (min {:.1}, max {:.1}, {} runs), CPU median {:.0} ms; rays: {:.2} M \
+             camera, {:.2} M secondary, {:.2} M shadow, {:.2} M not traced",
             self.label,
             self.median_ms(),
             ms.iter().copied().fold(f64::INFINITY, f64::min),
             ms.iter().copied().fold(0.0, f64::max),
             ms.len(),
+            median_ms(&self.cpu),
             c.rays_by_depth[0] as f64 * 1e-6,
             secondary as f64 * 1e-6,
             c.shadow_rays as f64 * 1e-6,
@@ -65,16 +98,28 @@ impl<'a> Way<'a> {
 }
 
 /// Renders the example `runs` times each way, alternating, and prints the two side by side.
+fn median_ms(times: &[Duration]) -> f64 {
+    let mut t: Vec<f64> = times.iter().map(|d| d.as_secs_f64() * 1e3).collect();
+    t.sort_by(f64::total_cmp);
+    t.get(t.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
 fn compare_ways<'a, E: Example>(runs: usize, a: &mut Way<'a>, b: &mut Way<'a>) {
     for _ in 0..runs {
         for way in [&mut *a, &mut *b] {
-            let (frame, stats) = render::<E>(way.args);
+            let (frame, stats, cpu) = render::<E>(way.args);
             way.times.push(stats.elapsed);
+            way.cpu.extend(cpu);
             way.counters = stats.counters;
             way.frame = Some(frame);
         }
     }
-    println!("{} (640x480, default spp, 2 threads):", E::NAME);
+    let load = load_cpu_time::<E>(runs).map_or(f64::NAN, |d| d.as_secs_f64() * 1e3);
+    println!(
+        "{} {} (640x480, default spp, 2 threads; CPU times include {load:.0} ms of loading textures):",
+        E::NAME,
+        a.args.join(" ")
+    );
     a.print();
     b.print();
     println!("  {} / {}: {:.2}x", b.label, a.label, b.median_ms() / a.median_ms());
@@ -100,5 +145,11 @@ fn main() {
         runs,
         &mut Way::new("layer skipping", &[]),
         &mut Way::new("--shade-every-layer", &["--shade-every-layer"]),
+    );
+    // Without adaptive depth control, the rays of a hidden layer are traced too, not just its shading done.
+    compare_ways::<layered::Args>(
+        runs,
+        &mut Way::new("layer skipping", &["--exhaustive"]),
+        &mut Way::new("--shade-every-layer", &["--exhaustive", "--shade-every-layer"]),
     );
 }
