@@ -48,8 +48,10 @@ impl Example for Args {
 
     fn build_scene(&self) -> Result<Scene> {
         let mut scene = mirror_scene(self.multiplier, self.mirrors)?;
-        // The slide's v0.1 has no depth limit (only the renderer's safety cap remains).
+        // The slide's v0.1 has no depth limit (only the renderer's safety cap remains), and no adaptive depth
+        // control either: a ray keeps bouncing however faint it has become, which is the danger it shows.
         scene.max_depth = u32::MAX;
+        scene.min_ray_weight = 0.0;
         Ok(scene)
     }
 }
