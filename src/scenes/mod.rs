@@ -4,12 +4,12 @@
 pub mod bitmap_textures;
 pub mod dispersion;
 pub mod environment;
+pub mod fresnel;
+pub mod layered;
 pub mod model_transform;
 pub mod reflect_v01;
 pub mod reflect_v02;
 pub mod refract;
-pub mod fresnel;
-pub mod layered;
 
 use crate::bitmap::{Bitmap, Filter};
 use crate::color::Color;
