@@ -8,12 +8,14 @@
 use crate::compare;
 use crate::environment;
 use crate::error::{Error, Result};
-use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically};
+use crate::photon_map::{PhotonArgs, PhotonMap};
+use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::spectral::{SpectralMode, SpectralPlan};
 use clap::Parser;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::Arc;
 
 /// Options every example accepts.
 #[derive(clap::Args, Clone, Debug)]
@@ -68,6 +70,8 @@ pub struct CommonArgs {
     /// or `sampled` (one pass; every anti-aliasing sample carries its own band of the spectrum).
     #[arg(long, value_enum, default_value_t = SpectralMode::Passes)]
     pub spectral: SpectralMode,
+    #[command(flatten)]
+    pub photons: PhotonArgs,
 }
 
 /// An example: its options (clap) and how they turn into a scene.
@@ -96,20 +100,34 @@ pub fn settings<E: Example>(args: &E) -> RenderSettings {
     }
 }
 
+/// Builds an example's scene as its options say, ready to render: the scene's own settings overridden by the
+/// options, and its caustic photon map built (in parallel, on `--threads` threads) if it needs one.
+pub fn prepare_scene<E: Example>(args: &E) -> Result<Scene> {
+    let common = args.common();
+    let mut scene = args.build_scene()?;
+    if let Some(depth) = common.max_depth {
+        scene.max_depth = depth;
+    }
+    if let Some(path) = &common.env {
+        scene.environment = Some(environment::load(path)?);
+    }
+    if common.exhaustive {
+        scene.min_ray_weight = 0.0;
+    }
+    common.photons.apply(&mut scene.photons);
+    scene.photons.check()?;
+    if scene.photons.count > 0 {
+        let map = thread_pool(common.threads)?.install(|| PhotonMap::build(&scene, common.seed))?;
+        scene.photon_map = map.map(Arc::new);
+    }
+    Ok(scene)
+}
+
 /// Builds and renders an example's scene as its options say (the path both `main` and the tests use).
 pub fn render_example<E: Example>(args: &E) -> Result<(Frame, RenderStats)> {
     let settings = settings(args);
     settings.check()?;
-    let mut scene = args.build_scene()?;
-    if let Some(depth) = args.common().max_depth {
-        scene.max_depth = depth;
-    }
-    if let Some(path) = &args.common().env {
-        scene.environment = Some(environment::load(path)?);
-    }
-    if args.common().exhaustive {
-        scene.min_ray_weight = 0.0;
-    }
+    let scene = prepare_scene(args)?;
     render(&scene, &settings)
 }
 
@@ -162,6 +180,18 @@ fn run<E: Example>(args: &E) -> Result<()> {
                 E::NAME,
                 stats.counters.capped_rays,
                 RECURSION_SAFETY_CAP
+            );
+        }
+        if let Some(p) = &stats.photons {
+            let trace = p.trace_time.as_secs_f64();
+            println!(
+                "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), k-d tree built in {:.3} s",
+                E::NAME,
+                p.emitted,
+                p.stored,
+                trace,
+                p.emitted as f64 * 1e-6 / trace.max(1e-9),
+                p.build_time.as_secs_f64()
             );
         }
     }

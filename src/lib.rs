@@ -14,6 +14,7 @@
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`] | the parallel, deterministic renderer |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
+//! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
 //! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
 
@@ -29,6 +30,7 @@ pub mod geometry;
 pub mod light;
 pub mod math;
 pub mod node;
+pub mod photon_map;
 pub mod ray;
 pub mod render;
 pub mod rng;

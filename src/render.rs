@@ -18,6 +18,7 @@ use crate::camera::CameraFrame;
 use crate::color::{Color, to_srgb8};
 use crate::error::{Error, Result};
 use crate::ray::Ray;
+use crate::photon_map::PhotonStats;
 use crate::rng::Rng;
 use crate::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
@@ -176,6 +177,18 @@ pub struct RenderStats {
     pub counters: Counters,
     /// How wavelengths were traced (white light when the scene has nothing dispersive).
     pub spectral: SpectralPlan,
+    /// How the scene's photon map was built (before the render, not counted in `elapsed`), if it has one.
+    pub photons: Option<PhotonStats>,
+}
+
+/// The worker threads the renderer uses: `threads` of them, or one per core, each with a stack of
+/// [`WORKER_STACK_SIZE`].
+pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .stack_size(WORKER_STACK_SIZE)
+        .build()
+        .map_err(|e| Error::parameter("thread count", threads.unwrap_or(0), e))
 }
 
 /// Where in its pixel each anti-aliasing sample goes (see the module documentation).
@@ -228,11 +241,7 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
 pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: SpectralPlan) -> Result<(Frame, RenderStats)> {
     settings.check()?;
     scene.check()?;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(settings.threads.unwrap_or(0))
-        .stack_size(WORKER_STACK_SIZE)
-        .build()
-        .map_err(|e| Error::parameter("thread count", settings.threads.unwrap_or(0), e))?;
+    let pool = thread_pool(settings.threads)?;
     let start = Instant::now();
     let (w, h) = (settings.width, settings.height);
     let camera = scene.camera.frame(w, h);
@@ -267,7 +276,13 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
             })
     });
     bar.finish_and_clear();
-    let stats = RenderStats { elapsed: start.elapsed(), threads: pool.current_num_threads(), counters, spectral: plan };
+    let stats = RenderStats {
+        elapsed: start.elapsed(),
+        threads: pool.current_num_threads(),
+        counters,
+        spectral: plan,
+        photons: scene.photon_map.as_ref().map(|map| map.stats),
+    };
     Ok((frame, stats))
 }
 

@@ -3,7 +3,8 @@
 //! `TraceContext` is what the course's C++ keeps in globals: the scene, the ray-depth limit, the random
 //! generator of the pixel being rendered and the ray counters. Shaders receive it and call
 //! [`TraceContext::raytrace`] to follow reflected and refracted rays, and [`TraceContext::visible`] for
-//! shadow rays. One context exists per pixel row being rendered, so threads never share one.
+//! shadow rays, and [`TraceContext::caustics`] for the caustic light of the photon map. One context exists
+//! per pixel row being rendered, so threads never share one.
 //!
 //! Adaptive ray-tree depth control (the classic Whitted optimisation, beyond the slides): besides the
 //! slides' `MAX_RAY_DEPTH`, `raytrace` returns black at once for a ray whose `weight` (the product of the
@@ -19,6 +20,7 @@ use crate::geometry::IntersectionInfo;
 use crate::light::PointLight;
 use crate::math::Vector;
 use crate::node::Node;
+use crate::photon_map::{PhotonMap, PhotonSettings};
 use crate::ray::{Ray, spawn_point};
 use crate::rng::Rng;
 use std::sync::Arc;
@@ -59,6 +61,11 @@ pub struct Scene {
     /// Rays whose `weight` is below this return black without being traced (adaptive ray-tree depth
     /// control). [`srgb8_finest_step`] by default; 0 traces every ray to `max_depth` (`--exhaustive`).
     pub min_ray_weight: f32,
+    /// How the caustic photon map is made (no photons by default).
+    pub photons: PhotonSettings,
+    /// The caustic photon map, built before rendering (see [`crate::cli::prepare_scene`]); `None` renders
+    /// without caustics.
+    pub photon_map: Option<Arc<PhotonMap>>,
 }
 
 impl Scene {
@@ -71,6 +78,8 @@ impl Scene {
             ambient: Color::BLACK,
             max_depth: MAX_RAY_DEPTH,
             min_ray_weight: srgb8_finest_step(),
+            photons: PhotonSettings::default(),
+            photon_map: None,
         }
     }
 
@@ -175,5 +184,11 @@ impl<'a> TraceContext<'a> {
         let t_max = to_light.length();
         let ray = Ray::new(start, to_light / t_max);
         !self.scene.nodes.iter().any(|node| node.intersects(&ray, t_max))
+    }
+
+    /// The caustic light arriving at a diffuse hit point whose face-forwarded normal is `n` (slide "Photon
+    /// Mapping"): the photon map's irradiance estimate, black when the scene has no photon map.
+    pub fn caustics(&self, info: &IntersectionInfo, n: Vector) -> Color {
+        self.scene.photon_map.as_ref().map_or(Color::BLACK, |map| map.irradiance(info.ip, n))
     }
 }

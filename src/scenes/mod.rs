@@ -10,6 +10,7 @@ pub mod model_transform;
 pub mod reflect_v01;
 pub mod reflect_v02;
 pub mod refract;
+pub mod photon_map;
 
 use crate::bitmap::{Bitmap, Filter};
 use crate::color::Color;

@@ -1,5 +1,6 @@
 //! `Lambert`: a perfectly diffuse surface. Its colour is the diffuse colour times (the scene's ambient light
-//! plus, for each light that reaches the point, the light's irradiance times the cosine of its angle).
+//! plus, for each light that reaches the point, the light's irradiance times the cosine of its angle, plus the
+//! caustic light from the photon map, if the scene has one).
 
 use super::{ColorSource, Shader};
 use crate::color::Color;
@@ -26,6 +27,7 @@ impl Shader for Lambert {
         let n = faceforward(info.normal, ray.dir);
         let mut light = ctx.scene.ambient;
         for_each_light(ctx, info, n, |l, irradiance| light += irradiance * n.dot(l));
+        light += ctx.caustics(info, n);
         diffuse * light
     }
 }

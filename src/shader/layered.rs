@@ -22,7 +22,9 @@
 use super::Shader;
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
+use crate::photon_map::{PhotonScatter, strength};
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::TraceContext;
 use crate::texture::Texture;
 use glam::Vec3A;
@@ -83,6 +85,25 @@ impl Layered {
     pub fn layers(&self) -> &[Layer] {
         &self.layers
     }
+
+    /// The weight of each layer at this hit, computed from the top down as `shade` does, and the lowest
+    /// layer that can be seen (the first one, from the top, that covers everything below it); the layers
+    /// under it have no weight.
+    fn weights(&self, ray: &Ray, info: &IntersectionInfo) -> ([Color; MAX_LAYERS], usize) {
+        let mut weights = [Color::BLACK; MAX_LAYERS];
+        let mut uncovered = Color::WHITE;
+        let mut bottom = self.layers.len();
+        for (i, layer) in self.layers.iter().enumerate().rev() {
+            let blend = layer.blend_at(ray, info);
+            weights[i] = uncovered * blend;
+            uncovered *= Color::WHITE - blend;
+            bottom = i;
+            if uncovered.max_channel() <= 0.0 {
+                break;
+            }
+        }
+        (weights, bottom)
+    }
 }
 
 impl Shader for Layered {
@@ -109,5 +130,38 @@ impl Shader for Layered {
 
     fn is_dispersive(&self) -> bool {
         self.layers.iter().any(|l| l.shader.is_dispersive() || l.blend_tex.as_ref().is_some_and(|t| t.is_dispersive()))
+    }
+
+    /// A photon follows one layer, chosen with probability proportional to the layer's weight (the mean of
+    /// its channels); its power is multiplied by the weight over that probability, so on average it carries
+    /// exactly what the blend lets through. Landing on a diffuse layer, it is stored with its power over the
+    /// probability alone: the map holds the light that arrives, and the diffuse layer's weight is applied
+    /// when the layer is shaded.
+    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter {
+        let (weights, bottom) = self.weights(ray, info);
+        let total: f32 = weights[bottom..self.layers.len()].iter().map(|&w| strength(w)).sum();
+        if total.is_nan() || total <= 0.0 {
+            return PhotonScatter::Absorb;
+        }
+        let mut pick = rng.next_f32() * total;
+        let last = (bottom..self.layers.len()).rev().find(|&i| strength(weights[i]) > 0.0).unwrap_or(bottom);
+        let chosen = (bottom..self.layers.len())
+            .find(|&i| {
+                pick -= strength(weights[i]);
+                pick < 0.0
+            })
+            .unwrap_or(last);
+        let probability = strength(weights[chosen]) / total;
+        match self.layers[chosen].shader.scatter_photon(ray, info, rng) {
+            PhotonScatter::Land { scale } => PhotonScatter::Land { scale: scale / probability },
+            PhotonScatter::Continue { dir, filter } => {
+                PhotonScatter::Continue { dir, filter: filter * weights[chosen] / probability }
+            }
+            PhotonScatter::Absorb => PhotonScatter::Absorb,
+        }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        self.layers.iter().any(|layer| layer.shader.casts_caustics())
     }
 }

@@ -16,7 +16,9 @@ pub use refraction::Refraction;
 
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
+use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::TraceContext;
 use crate::texture::Texture;
 use std::sync::Arc;
@@ -29,6 +31,19 @@ pub trait Shader: Send + Sync {
     /// Whether the result depends on the ray's wavelength (a dispersive refraction, or a layer holding one).
     /// The renderer traces wavelengths separately only for scenes where some shader says so.
     fn is_dispersive(&self) -> bool {
+        false
+    }
+
+    /// Photon mapping (slide "Photon Mapping"): what a photon travelling along `ray` does where it hits this
+    /// surface. The default is a diffuse surface, where the photon lands; mirrors, glass and layers override
+    /// it (see [`crate::photon_map`]).
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Land { scale: 1.0 }
+    }
+
+    /// Whether photons can leave this surface by reflection or refraction, which makes its object a caustic
+    /// caster that the lights aim photons at.
+    fn casts_caustics(&self) -> bool {
         false
     }
 }

@@ -1,6 +1,6 @@
 //! `Phong`: Lambert's diffuse term plus a specular highlight `specular * irradiance * cos(gamma)^exponent`,
 //! where gamma is the angle between the light's mirror direction and the direction to the eye (as in the
-//! course's Phong shader).
+//! course's Phong shader). Caustic light from the photon map, if the scene has one, adds to the diffuse term.
 
 use super::{ColorSource, Shader};
 use crate::color::Color;
@@ -38,6 +38,7 @@ impl Shader for Phong {
                 specular += irradiance * (self.specular * cos_gamma.powf(self.exponent));
             }
         });
+        diffuse += ctx.caustics(info, n);
         diffuse_color * diffuse + specular
     }
 }

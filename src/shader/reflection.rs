@@ -10,7 +10,9 @@ use super::{ColorSource, Shader};
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
 use crate::math::{faceforward, reflect};
+use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::TraceContext;
 
 #[derive(Clone)]
@@ -33,5 +35,15 @@ impl Shader for Reflection {
         let dir = reflect(ray.dir, n);
         let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir, multiplier.max_channel());
         ctx.raytrace(&new_ray) * multiplier
+    }
+
+    /// A photon is mirrored like a ray, its power multiplied by the mirror's colour.
+    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        let dir = reflect(ray.dir, faceforward(info.normal, ray.dir));
+        PhotonScatter::Continue { dir, filter: self.multiplier.get(ray, info) }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        true
     }
 }

@@ -14,8 +14,10 @@
 use super::Shader;
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
-use crate::math::{faceforward, refract};
+use crate::math::{Vector, faceforward, refract};
+use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::TraceContext;
 use crate::spectral::Ior;
 
@@ -36,22 +38,40 @@ impl Refraction {
     pub fn with_ior(ior: Ior, multiplier: f32) -> Refraction {
         Refraction { ior, multiplier }
     }
-}
 
-impl Shader for Refraction {
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+    /// The unit direction of the refracted ray (for the ray's wavelength), or `None` under total internal
+    /// reflection.
+    fn refracted(&self, ray: &Ray, info: &IntersectionInfo) -> Option<Vector> {
         let entering = info.normal.dot(ray.dir) < 0.0;
         let ior = self.ior.at(ray.wavelength);
         let eta = if entering { 1.0 / ior } else { ior };
         let n = faceforward(info.normal, ray.dir);
-        let Some(dir) = refract(ray.dir, n, eta) else {
+        refract(ray.dir, n, eta).map(Vector::normalize)
+    }
+}
+
+impl Shader for Refraction {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let Some(dir) = self.refracted(ray, info) else {
             return Color::BLACK; // total internal reflection
         };
-        let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir.normalize(), self.multiplier);
+        let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir, self.multiplier);
         ctx.raytrace(&new_ray) * self.multiplier
     }
 
     fn is_dispersive(&self) -> bool {
         self.ior.is_dispersive()
+    }
+
+    /// A photon is refracted like a ray (and absorbed under total internal reflection, as the ray is).
+    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        match self.refracted(ray, info) {
+            Some(dir) => PhotonScatter::Continue { dir, filter: Color::gray(self.multiplier) },
+            None => PhotonScatter::Absorb,
+        }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        true
     }
 }

@@ -1,0 +1,468 @@
+//! Caustics by photon mapping (slides "Caustics", "Photon Mapping", "Пример за photon map").
+//!
+//! Before the picture is rendered, photons are shot from the point lights (the slide's "обратен
+//! raytracing": rays that start at the lamps), followed through mirrors, glass and layered surfaces, and
+//! stored where they land on a diffuse surface after at least one reflection or refraction: the *caustic*
+//! photon map. The stored photons go into a k-d tree. When a diffuse shader shades a point it asks the map
+//! ([`TraceContext::caustics`](crate::scene::TraceContext::caustics)), which finds the k nearest photons
+//! and turns their power into the caustic light arriving there.
+//!
+//! How a photon behaves at a surface is the shader's business: [`Shader::scatter_photon`] returns a
+//! [`PhotonScatter`]. Its default is a diffuse surface (the photon lands); `Reflection`, `Refraction` and
+//! `Layered` override it, and the `Fresnel` texture takes part through a layer's blend.
+//!
+//! Where this differs from the slides, and why:
+//! - The slide shoots photons "in all directions". Here each light aims only at the caustic casters (objects
+//!   whose shader can reflect or refract a photon): each caster's bounding sphere, seen from the light, is a
+//!   cone of directions, and every cone gets a share of the photons in proportion to the power the light
+//!   sends into it. A photon carries the light's intensity over the photon density of its direction (photons
+//!   per steradian), summed over the cones that contain it, so no photon is wasted on the sky or on diffuse
+//!   walls and where two cones overlap no light is counted twice. A scene without casters builds no map.
+//! - Within a cone the directions are not independent random ones but a spherical Fibonacci lattice (shifted
+//!   at random per seed): evenly spread photons give a smoother caustic for the same count.
+//! - Only caustics are mapped: a photon that reaches a diffuse surface straight from the lamp is direct
+//!   light, which the shadow rays already compute exactly.
+//! - Russian roulette ends the paths: after a bounce a photon survives with probability equal to the largest
+//!   channel of the bounce's colour and its power is divided by that, so photon powers stay even and the
+//!   estimate stays unbiased. The scene's `MAX_RAY_DEPTH` limits photon bounces as it limits rays.
+//! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
+//!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k
+//!   photons lie within the maximum radius, every photon in that disc was found, so the disc is the one
+//!   of the maximum radius; otherwise it is the one through the farthest photon found.
+//! - The course's diffuse shaders multiply their colour by *irradiance* (a light's intensity over the squared
+//!   distance), so the map returns irradiance too: the photons' power per area. Lambert and Phong add it to
+//!   the light of the lamps.
+//! - The map is built in parallel, each photon with its own random stream seeded from (seed, its index), and
+//!   stored in index order: the same picture for any number of threads.
+//! - Photons are [`Ray`]s, so they carry `Ray::wavelength` through every shader; emission gives them none
+//!   (white light) until the renderer has dispersive materials.
+
+use crate::color::Color;
+use crate::error::{Error, Result};
+use crate::geometry::Aabb;
+use crate::math::{OrthonormalBasis, Vector};
+use crate::ray::Ray;
+use crate::rng::Rng;
+use crate::scene::Scene;
+use kiddo::{ImmutableKdTree, SquaredEuclidean};
+use rayon::prelude::*;
+use std::f32::consts::PI;
+use std::num::NonZeroUsize;
+use std::time::{Duration, Instant};
+
+#[cfg(doc)]
+use crate::shader::Shader;
+
+/// What a photon does where it hits a surface (see [`Shader::scatter_photon`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PhotonScatter {
+    /// The surface is diffuse and the photon ends here. It is stored, its power multiplied by `scale`, if it
+    /// was reflected or refracted on its way. `scale` is 1 except where a `Layered` shader chose this layer
+    /// at random: then it is one over the probability of that choice.
+    Land { scale: f32 },
+    /// The photon goes on in the unit direction `dir`, its power multiplied by `filter`.
+    Continue { dir: Vector, filter: Color },
+    /// The photon is absorbed.
+    Absorb,
+}
+
+/// Most photons a map may be asked for: 16 M photons already take about a gigabyte.
+pub const MAX_PHOTONS: u32 = 1 << 24;
+/// Most photons one estimate may gather.
+pub const MAX_K: u32 = 10_000;
+/// The cone filter's constant k >= 1 (Jensen's 1.1): the weight of a photon at distance d from the shaded
+/// point, in a disc of radius r, is `1 - d / (CONE_FILTER_K * r)`.
+pub const CONE_FILTER_K: f32 = 1.1;
+/// `--show-photons`: the radius of a photon's dot, as a fraction of the estimate's maximum radius.
+pub const DOT_RADIUS: f32 = 0.25;
+/// `--show-photons`: the irradiance of a dot, enough to turn any surface that is not black white (or the
+/// photon's colour).
+const DOT_IRRADIANCE: f32 = 1000.0;
+/// Keeps the photons' random streams apart from the pixels' (pixel keys are below 2^32).
+const PHOTON_STREAM: u64 = 0x5048_4f54_4f4e_5321;
+
+/// How a scene's photon map is made and used. Scenes set their own; the command line overrides them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhotonSettings {
+    /// Photons emitted; 0 builds no map.
+    pub count: u32,
+    /// How many nearest photons an estimate gathers.
+    pub k: u32,
+    /// The largest distance from the shaded point at which photons count; `None` is 1/100 of the diagonal
+    /// of the box around the scene's bounded objects.
+    pub max_radius: Option<f32>,
+    /// Draw the photons as dots instead of estimating caustics (the slide's picture of a photon map).
+    pub show: bool,
+}
+
+impl Default for PhotonSettings {
+    fn default() -> PhotonSettings {
+        PhotonSettings { count: 0, k: 50, max_radius: None, show: false }
+    }
+}
+
+impl PhotonSettings {
+    /// Rejects counts and radii that make no sense.
+    pub fn check(&self) -> Result<()> {
+        if self.count > MAX_PHOTONS {
+            return Err(Error::parameter("photon count", self.count, format!("at most {MAX_PHOTONS}")));
+        }
+        if !(1..=MAX_K).contains(&self.k) {
+            return Err(Error::parameter("photon k", self.k, format!("must be between 1 and {MAX_K}")));
+        }
+        if let Some(r) = self.max_radius
+            && !(r.is_finite() && r > 0.0)
+        {
+            return Err(Error::parameter("photon radius", r, "must be a positive number"));
+        }
+        Ok(())
+    }
+}
+
+/// The photon-mapping options every example accepts.
+#[derive(clap::Args, Clone, Debug, Default)]
+#[command(next_help_heading = "Caustics (photon mapping)")]
+pub struct PhotonArgs {
+    /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.
+    /// [default: the scene's own, 0 for scenes without caustics]
+    #[arg(long, value_name = "N")]
+    pub photons: Option<u32>,
+    /// How many nearest photons each caustic estimate gathers. [default: the scene's own]
+    #[arg(long, value_name = "K")]
+    pub k: Option<u32>,
+    /// The largest distance from a shaded point at which photons count. [default: the scene's own]
+    #[arg(long, value_name = "R")]
+    pub radius: Option<f32>,
+    /// Draw each stored photon as a dot instead of estimating the caustic light from them.
+    #[arg(long)]
+    pub show_photons: bool,
+}
+
+impl PhotonArgs {
+    /// The scene's photon settings with the options given on the command line.
+    pub fn apply(&self, settings: &mut PhotonSettings) {
+        settings.count = self.photons.unwrap_or(settings.count);
+        settings.k = self.k.unwrap_or(settings.k);
+        settings.max_radius = self.radius.or(settings.max_radius);
+        settings.show |= self.show_photons;
+    }
+}
+
+/// A photon stored where it landed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StoredPhoton {
+    pub position: Vector,
+    /// The unit direction it travelled in when it landed.
+    pub dir: Vector,
+    /// Its power (flux); the powers of all photons add up to the light that reached the diffuse surfaces.
+    pub power: Color,
+}
+
+/// What building a map took.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PhotonStats {
+    pub emitted: u32,
+    pub stored: usize,
+    /// Emitting and tracing the photons.
+    pub trace_time: Duration,
+    /// Building the k-d tree.
+    pub build_time: Duration,
+}
+
+/// The set of directions in which one light sees one caustic caster: the cone around its bounding sphere.
+#[derive(Clone, Copy, Debug)]
+struct Cone {
+    light: usize,
+    axis: OrthonormalBasis,
+    /// 1 - cos of the half-angle, kept as such because the cone of a small, far caster is so narrow that
+    /// the cosine itself rounds to 1.
+    one_minus_cos: f32,
+    solid_angle: f32,
+    /// The power the light sends into the cone (the mean of its channels).
+    power: f32,
+    /// The photons emitted into it, numbered from `first`.
+    first: u32,
+    count: u32,
+    /// A random shift of the cone's lattice, in [0, 1)^2, so that another seed gives other directions.
+    shift: (f32, f32),
+}
+
+impl Cone {
+    /// The cone from `light_pos` around the sphere (`center`, `radius`); all directions if the light is
+    /// inside the sphere or the caster is unbounded (`None`).
+    fn new(light: usize, light_pos: Vector, sphere: Option<(Vector, f32)>, intensity: f32) -> Cone {
+        let (axis, one_minus_cos) = match sphere {
+            Some((center, radius)) if (center - light_pos).length() > radius => {
+                let d = (center - light_pos).length();
+                let sin2 = (radius / d) * (radius / d);
+                // 1 - cos = sin^2 / (1 + cos), without cancellation.
+                (OrthonormalBasis::new((center - light_pos) / d), sin2 / (1.0 + (1.0 - sin2).sqrt()))
+            }
+            _ => (OrthonormalBasis::new(Vector::Y), 2.0),
+        };
+        let solid_angle = 2.0 * PI * one_minus_cos;
+        Cone {
+            light,
+            axis,
+            one_minus_cos,
+            solid_angle,
+            power: intensity * solid_angle,
+            first: 0,
+            count: 0,
+            shift: (0.0, 0.0),
+        }
+    }
+
+    /// Direction `j` of the cone's `count`: a spherical Fibonacci lattice, spread evenly over the cone's solid
+    /// angle (equal steps of cos(theta), golden-ratio steps of the azimuth), shifted by `shift`. An even
+    /// spread of photons gives a smoother caustic than independent random directions for the same count.
+    fn direction(&self, j: u32) -> Vector {
+        const GOLDEN: f64 = 0.618_033_988_749_894_8; // 1 / the golden ratio
+        let t = ((j as f32 + self.shift.0) / self.count as f32) * self.one_minus_cos; // 1 - cos(theta)
+        let cos = 1.0 - t;
+        let sin = (t * (2.0 - t)).max(0.0).sqrt();
+        let phi = 2.0 * PI * ((j as f64 * GOLDEN + self.shift.1 as f64).fract() as f32);
+        self.axis.to_world(sin * phi.cos(), sin * phi.sin(), cos).normalize()
+    }
+
+    /// Whether the unit direction `dir` lies in the cone.
+    fn contains(&self, dir: Vector) -> bool {
+        // |dir - axis|^2 = 2 (1 - cos): no cancellation for narrow cones.
+        0.5 * (dir - self.axis.normal).length_squared() <= self.one_minus_cos
+    }
+}
+
+/// How much light a colour carries, for sharing photons between cones and choosing between layers: the mean
+/// of its channels.
+pub fn strength(c: Color) -> f32 {
+    (c.r() + c.g() + c.b()) / 3.0
+}
+
+/// Where the photons come from: every (light, caustic caster) cone gets a share of the photons in
+/// proportion to the power the light sends into it.
+#[derive(Clone, Debug)]
+pub struct Emitter {
+    cones: Vec<Cone>,
+}
+
+impl Emitter {
+    /// The emitter of `count` photons for a scene, or `None` when nothing can make a caustic: no caster, or
+    /// no light.
+    pub fn new(scene: &Scene, count: u32, seed: u64) -> Option<Emitter> {
+        let spheres: Vec<Option<(Vector, f32)>> = scene
+            .nodes
+            .iter()
+            .filter(|node| node.shader.casts_caustics())
+            .map(|node| node.bounds().map(|b| (b.center(), 0.5 * (b.max - b.min).length())))
+            .collect();
+        let mut cones = Vec::new();
+        for (i, light) in scene.lights.iter().enumerate() {
+            let intensity = strength(light.color) * light.intensity;
+            if !(intensity > 0.0 && intensity.is_finite()) {
+                continue;
+            }
+            cones.extend(spheres.iter().map(|&sphere| Cone::new(i, light.position, sphere, intensity)));
+        }
+        // A caster too small to see from the light (its cone's solid angle rounds to 0) gets no photons.
+        cones.retain(|c| c.power > 0.0);
+        let total: f64 = cones.iter().map(|c| c.power as f64).sum();
+        if !(total > 0.0) {
+            return None;
+        }
+        // Each cone's share, rounded so that the shares add up to `count` (largest remainders).
+        let exact: Vec<f64> = cones.iter().map(|c| c.power as f64 / total * count as f64).collect();
+        let mut counts: Vec<u32> = exact.iter().map(|&e| e.floor() as u32).collect();
+        let mut by_remainder: Vec<usize> = (0..cones.len()).collect();
+        by_remainder.sort_by(|&a, &b| (exact[b] - exact[b].floor()).total_cmp(&(exact[a] - exact[a].floor())));
+        let missing = count - counts.iter().sum::<u32>();
+        by_remainder.iter().take(missing as usize).for_each(|&i| counts[i] += 1);
+        let mut first = 0;
+        for (k, (cone, n)) in cones.iter_mut().zip(counts).enumerate() {
+            let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, u64::MAX - k as u64]);
+            (cone.first, cone.count, cone.shift) = (first, n, (rng.next_f32(), rng.next_f32()));
+            first += n;
+        }
+        Some(Emitter { cones })
+    }
+
+    /// Photon number `index`: its ray from the light and its power.
+    fn emit(&self, scene: &Scene, index: u32) -> (Ray, Color) {
+        let chosen = self.cones.partition_point(|c| c.first + c.count <= index);
+        let cone = &self.cones[chosen];
+        let dir = cone.direction(index - cone.first);
+        // The light's intensity over the photon density in this direction, summed over all the light's
+        // cones that contain it (cones may overlap; each photon then carries its share of the light once).
+        let density = self
+            .cones
+            .iter()
+            .enumerate()
+            .filter(|&(j, c)| c.light == cone.light && (j == chosen || c.contains(dir)))
+            .map(|(_, c)| c.count as f32 / c.solid_angle)
+            .sum::<f32>();
+        let light = &scene.lights[cone.light];
+        (Ray::new(light.position, dir), light.color * (light.intensity / density))
+    }
+
+    /// The photons emitted in all.
+    pub fn count(&self) -> u32 {
+        self.cones.iter().map(|c| c.count).sum()
+    }
+}
+
+/// Follows photon number `index` from its light until it lands, is absorbed or leaves the scene; the photon
+/// as stored, if it landed on a diffuse surface after a reflection or refraction.
+fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Option<StoredPhoton> {
+    let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, index as u64]);
+    let (mut ray, mut power) = emitter.emit(scene, index);
+    loop {
+        if ray.depth > scene.max_depth {
+            return None;
+        }
+        let (info, node) = scene.closest_hit(&ray)?;
+        match node.shader.scatter_photon(&ray, &info, &mut rng) {
+            PhotonScatter::Land { scale } => {
+                return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });
+            }
+            PhotonScatter::Continue { dir, filter } => {
+                // Russian roulette.
+                let survival = filter.max_channel().min(1.0);
+                if !(rng.next_f32() < survival) {
+                    return None;
+                }
+                power = power * filter / survival;
+                ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir, filter.max_channel());
+            }
+            PhotonScatter::Absorb => return None,
+        }
+    }
+}
+
+/// Emits the emitter's photons and traces them in parallel (on the current rayon pool); the stored ones, in
+/// the order of their indices whatever the number of threads.
+pub fn trace_photons(scene: &Scene, emitter: &Emitter, seed: u64) -> Vec<StoredPhoton> {
+    (0..emitter.count()).into_par_iter().filter_map(|i| trace_photon(scene, emitter, seed, i)).collect()
+}
+
+/// The caustic photon map: the stored photons in a k-d tree, and how estimates are made from them.
+pub struct PhotonMap {
+    photons: Vec<StoredPhoton>,
+    /// Item i is `photons[i]`; `None` when no photon was stored.
+    tree: Option<ImmutableKdTree<f32, 3>>,
+    k: NonZeroUsize,
+    max_radius: f32,
+    show: bool,
+    pub stats: PhotonStats,
+}
+
+impl std::fmt::Debug for PhotonMap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PhotonMap")
+            .field("stats", &self.stats)
+            .field("k", &self.k)
+            .field("max_radius", &self.max_radius)
+            .field("show", &self.show)
+            .finish_non_exhaustive()
+    }
+}
+
+impl PhotonMap {
+    /// Builds the scene's photon map as its `photons` settings say, on the current rayon pool; `None` when
+    /// the settings ask for no photons or the scene has nothing that casts caustics.
+    pub fn build(scene: &Scene, seed: u64) -> Result<Option<PhotonMap>> {
+        let settings = scene.photons;
+        settings.check()?;
+        if settings.count == 0 {
+            return Ok(None);
+        }
+        let Some(emitter) = Emitter::new(scene, settings.count, seed) else {
+            return Ok(None);
+        };
+        let start = Instant::now();
+        let photons = trace_photons(scene, &emitter, seed);
+        let trace_time = start.elapsed();
+        let max_radius = settings.max_radius.unwrap_or_else(|| default_radius(scene, &photons));
+        let mut map = PhotonMap::new(photons, settings.k, max_radius, settings.show)?;
+        map.stats.emitted = settings.count;
+        map.stats.trace_time = trace_time;
+        Ok(Some(map))
+    }
+
+    /// A map of the given photons: builds the k-d tree.
+    pub fn new(photons: Vec<StoredPhoton>, k: u32, max_radius: f32, show: bool) -> Result<PhotonMap> {
+        let k = NonZeroUsize::new(k as usize).ok_or_else(|| Error::parameter("photon k", k, "must be at least 1"))?;
+        let start = Instant::now();
+        let points: Vec<[f32; 3]> = photons.iter().map(|p| p.position.to_array()).collect();
+        let tree = if points.is_empty() {
+            None
+        } else {
+            Some(
+                ImmutableKdTree::new_from_slice(&points)
+                    .map_err(|e| Error::parameter("photon map", points.len(), e))?,
+            )
+        };
+        let stats = PhotonStats { stored: photons.len(), build_time: start.elapsed(), ..PhotonStats::default() };
+        Ok(PhotonMap { photons, tree, k, max_radius, show, stats })
+    }
+
+    pub fn photons(&self) -> &[StoredPhoton] {
+        &self.photons
+    }
+
+    /// The estimate's maximum radius.
+    pub fn max_radius(&self) -> f32 {
+        self.max_radius
+    }
+
+    /// The caustic irradiance at the point `p` of a diffuse surface whose normal `n` faces the viewer
+    /// (the slide's "K-те най-близки съседа"): the power of the k nearest photons within the maximum radius
+    /// that arrived on this side of the surface, weighted by the cone filter, over the disc's area. With
+    /// `--show-photons`, a bright dot where a photon lies instead.
+    pub fn irradiance(&self, p: Vector, n: Vector) -> Color {
+        let Some(tree) = &self.tree else {
+            return Color::BLACK;
+        };
+        if self.show {
+            return self.dot(tree, p);
+        }
+        let max_r2 = self.max_radius * self.max_radius;
+        let found = tree.query(&p.to_array()).nearest_n::<SquaredEuclidean<f32>>(self.k).within(max_r2).execute();
+        if found.is_empty() {
+            return Color::BLACK;
+        }
+        let r2 = if found.len() < self.k.get() { max_r2 } else { found.iter().fold(0.0, |m, f| f.distance.max(m)) };
+        let filter_radius = CONE_FILTER_K * r2.sqrt();
+        let mut sum = Color::BLACK;
+        for f in &found {
+            let photon = &self.photons[f.item as usize];
+            if photon.dir.dot(n) < 0.0 {
+                sum += photon.power * (1.0 - f.distance.sqrt() / filter_radius);
+            }
+        }
+        sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2)
+    }
+
+    /// `--show-photons`: a dot of the nearest photon's colour if one lies within the dot radius.
+    fn dot(&self, tree: &ImmutableKdTree<f32, 3>, p: Vector) -> Color {
+        let nearest = tree.query(&p.to_array()).nearest_one::<SquaredEuclidean<f32>>().execute();
+        let dot_radius = DOT_RADIUS * self.max_radius;
+        if nearest.distance > dot_radius * dot_radius {
+            return Color::BLACK;
+        }
+        let power = self.photons[nearest.item as usize].power;
+        power * (DOT_IRRADIANCE / power.max_channel())
+    }
+}
+
+/// The default maximum radius: 1/100 of the diagonal of the box around the scene's bounded objects (or, if
+/// none is bounded, around the photons).
+fn default_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
+    let corners: Vec<Vector> = scene.nodes.iter().filter_map(|n| n.bounds()).flat_map(|b| [b.min, b.max]).collect();
+    let bounds = if corners.is_empty() {
+        Aabb::from_points(photons.iter().map(|p| p.position))
+    } else {
+        Aabb::from_points(corners)
+    };
+    let diagonal = (bounds.max - bounds.min).length();
+    // A box of no size holds at most one point: any radius finds it.
+    if diagonal.is_finite() && diagonal > 0.0 { diagonal / 100.0 } else { 1.0 }
+}
