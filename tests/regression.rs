@@ -19,6 +19,7 @@ regression!(
     fresnel,
     layered,
     model_transform,
+    photon_map,
     reflect_v01,
     reflect_v02,
     refract,

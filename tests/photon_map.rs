@@ -1,0 +1,297 @@
+//! Caustics by photon mapping: the power the photons carry matches the light on analytic setups (a mirror, a
+//! glass sphere, the Fresnel glass, overlapping casters, a half-mirror layer), the caustic estimate matches
+//! the irradiance of a mirror's virtual light, the glass sphere's caustic outshines the lit floor, and a scene
+//! without casters or `--photons 0` renders exactly as without a photon map.
+
+mod common;
+
+use clap::Parser;
+use lecture6::camera::Camera;
+use lecture6::cli::{Example, prepare_scene, settings};
+use lecture6::color::Color;
+use lecture6::geometry::{Geometry, Plane, Sphere};
+use lecture6::light::PointLight;
+use lecture6::math::Vector;
+use lecture6::node::Node;
+use lecture6::photon_map::{PhotonMap, PhotonScatter, PhotonSettings};
+use lecture6::ray::Ray;
+use lecture6::render::render;
+use lecture6::rng::Rng;
+use lecture6::scene::{Scene, TraceContext};
+use lecture6::scenes::{bitmap_textures, photon_map};
+use lecture6::shader::{Lambert, Layered, Reflection, Refraction, Shader};
+use lecture6::texture::{Fresnel, FresnelMode};
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+const INTENSITY: f32 = 1000.0;
+
+/// A scene with one white point light at `light` and the given nodes, mapping `photons` photons.
+fn scene(light: Vector, photons: u32, nodes: Vec<Node>) -> Scene {
+    let mut scene = Scene::new(Camera::default());
+    scene.lights.push(PointLight::new(light, Color::WHITE, INTENSITY));
+    scene.max_depth = 30;
+    scene.photons = PhotonSettings { count: photons, k: 100, max_radius: Some(1.0), show: false };
+    scene.nodes = nodes;
+    scene
+}
+
+fn node(geometry: impl Geometry + 'static, shader: impl Shader + 'static) -> Node {
+    Node::new(Arc::new(geometry), Arc::new(shader))
+}
+
+fn build(scene: &Scene) -> PhotonMap {
+    PhotonMap::build(scene, 1).expect("valid settings").expect("the scene has casters")
+}
+
+/// The power of all stored photons (red channel; the light is white).
+fn stored_power(map: &PhotonMap) -> f64 {
+    map.photons().iter().map(|p| p.power.r() as f64).sum()
+}
+
+fn assert_close(actual: f64, expected: f64, tolerance: f64, what: &str) {
+    let error = (actual - expected).abs() / expected;
+    assert!(error <= tolerance, "{what}: {actual} instead of {expected} ({:.3}% off)", 100.0 * error);
+}
+
+/// The solid angle of the square |x|, |z| <= a seen from distance d above its centre.
+fn square_solid_angle(a: f64, d: f64) -> f64 {
+    4.0 * (a * a / (a * a + d * d)).asin()
+}
+
+/// The solid angle of a sphere of radius r seen from distance d.
+fn sphere_solid_angle(r: f64, d: f64) -> f64 {
+    2.0 * PI * (1.0 - (1.0 - (r / d) * (r / d)).sqrt())
+}
+
+/// A 2 x 2 mirror on the floor, the light 10 above it, a diffuse ceiling at 20.
+fn mirror_scene(photons: u32, mirror: impl Shader + 'static) -> Scene {
+    scene(
+        Vector::new(0.0, 10.0, 0.0),
+        photons,
+        vec![node(Plane::new(0.0, 1.0), mirror), node(Plane::new(20.0, f32::INFINITY), Lambert::new(Color::gray(0.5)))],
+    )
+}
+
+#[test]
+fn a_mirror_stores_the_power_sent_to_it_times_its_reflectance() {
+    let map = build(&mirror_scene(100_000, Reflection::new(0.9)));
+    let expected = 0.9 * INTENSITY as f64 * square_solid_angle(1.0, 10.0);
+    assert_close(stored_power(&map), expected, 0.01, "power reflected onto the ceiling");
+    // Every photon landed on the ceiling, inside the mirror's reflection (the square |x|, |z| <= 3).
+    assert!(map.photons().iter().all(|p| p.position.y == 20.0 && p.position.x.abs().max(p.position.z.abs()) <= 3.0));
+}
+
+#[test]
+fn the_caustic_estimate_is_the_irradiance_of_the_mirrors_virtual_light() {
+    // The mirror's image of the light is 10 below the floor, 30 below the ceiling. Each estimate gathers 400
+    // photons: its noise is then a few per cent.
+    let mut scene = mirror_scene(100_000, Reflection::new(0.9));
+    scene.photons.k = 400;
+    let map = build(&scene);
+    let down = Vector::new(0.0, -1.0, 0.0);
+    let (mut sum_estimate, mut sum_exact) = (0.0, 0.0);
+    for i in -3..=3 {
+        for j in -3..=3 {
+            let (x, z) = (0.5 * i as f64, 0.5 * j as f64);
+            let d2 = x * x + z * z + 900.0;
+            let exact = 0.9 * INTENSITY as f64 * (30.0 / d2.sqrt()) / d2;
+            let estimate = map.irradiance(Vector::new(x as f32, 20.0, z as f32), down).r() as f64;
+            assert_close(estimate, exact, 0.1, &format!("irradiance at ({x}, 20, {z})"));
+            (sum_estimate, sum_exact) = (sum_estimate + estimate, sum_exact + exact);
+        }
+    }
+    assert_close(sum_estimate, sum_exact, 0.02, "mean irradiance");
+    // From the other side of the ceiling, nothing arrives.
+    assert!(map.irradiance(Vector::new(0.0, 20.0, 0.0), Vector::Y).is_black());
+}
+
+/// A glass sphere of radius 1 at the origin, the light 5 above it, inside a large diffuse sphere that
+/// catches every photon.
+fn glass_scene(glass: impl Shader + 'static, more: Vec<Node>) -> Scene {
+    let mut nodes = vec![
+        node(Sphere::new(Vector::ZERO, 1.0), glass),
+        node(Sphere::new(Vector::ZERO, 100.0), Lambert::new(Color::gray(0.5))),
+    ];
+    nodes.extend(more);
+    scene(Vector::new(0.0, 5.0, 0.0), 50_000, nodes)
+}
+
+#[test]
+fn a_glass_sphere_passes_the_power_sent_to_it_times_its_transmission_twice() {
+    let map = build(&glass_scene(Refraction::new(1.5, 0.8), vec![]));
+    let expected = 0.8 * 0.8 * INTENSITY as f64 * sphere_solid_angle(1.0, 5.0);
+    assert_close(stored_power(&map), expected, 0.01, "power through the glass");
+}
+
+/// The slides' glass: a refraction layer under a mirror layer blended by the Fresnel texture.
+fn fresnel_glass() -> Layered {
+    let mut glass = Layered::new();
+    glass.add_layer(Arc::new(Refraction::new(1.5, 1.0)), Color::WHITE, None);
+    glass.add_layer(
+        Arc::new(Reflection::new(1.0)),
+        Color::WHITE,
+        Some(Arc::new(Fresnel::new(1.5, FresnelMode::Schlick))),
+    );
+    glass
+}
+
+#[test]
+fn fresnel_glass_neither_gains_nor_loses_light() {
+    // Every photon is reflected or refracted, never absorbed: all the power sent at the sphere lands.
+    let map = build(&glass_scene(fresnel_glass(), vec![]));
+    let expected = INTENSITY as f64 * sphere_solid_angle(1.0, 5.0);
+    assert_close(stored_power(&map), expected, 0.005, "power around the Fresnel glass");
+    // Some photons were reflected: they land above the sphere's equator.
+    assert!(map.photons().iter().any(|p| p.position.y > 0.0));
+}
+
+#[test]
+fn a_caster_behind_another_is_not_counted_twice() {
+    // A second glass sphere below the first, seen from the light entirely behind it: its cone lies inside
+    // the first one's, so the light sent into both cones is that of the first alone.
+    let behind = node(Sphere::new(Vector::new(0.0, -5.0, 0.0), 1.5), Refraction::new(1.5, 1.0));
+    let map = build(&glass_scene(Refraction::new(1.5, 1.0), vec![behind]));
+    let expected = INTENSITY as f64 * sphere_solid_angle(1.0, 5.0);
+    assert_close(stored_power(&map), expected, 0.005, "power through two glass spheres");
+}
+
+#[test]
+fn a_half_mirror_layer_reflects_half_the_light() {
+    // A Layered surface: diffuse below, a perfect mirror blended at 50% on top. Photons choose a layer at
+    // random; those that land on the diffuse layer straight from the light are not caustics.
+    let mut half_mirror = Layered::new();
+    half_mirror.add_layer(Arc::new(Lambert::new(Color::gray(0.5))), Color::WHITE, None);
+    half_mirror.add_layer(Arc::new(Reflection::new(1.0)), Color::gray(0.5), None);
+    let map = build(&mirror_scene(100_000, half_mirror));
+    let expected = 0.5 * INTENSITY as f64 * square_solid_angle(1.0, 10.0);
+    assert_close(stored_power(&map), expected, 0.015, "power reflected by the half mirror");
+}
+
+#[test]
+fn a_layered_surface_sends_photons_on_in_proportion_to_its_blends() {
+    // Diffuse below, a mirror with a coloured blend on top: the mirror's weight is the blend, the diffuse
+    // layer's the rest. On average a photon must go on with the mirror's weight, and must land with the
+    // power of all the light arriving (the diffuse layer's weight is applied when it is shaded).
+    let blend = Color::new(0.2, 0.5, 0.8);
+    let mut surface = Layered::new();
+    surface.add_layer(Arc::new(Lambert::new(Color::gray(0.5))), Color::WHITE, None);
+    surface.add_layer(Arc::new(Reflection::new(1.0)), blend, None);
+    let ray = Ray::new(Vector::new(0.3, 5.0, 0.1), Vector::new(0.1, -1.0, 0.2).normalize());
+    let info = Plane::new(0.0, f32::INFINITY).intersect(&ray, f32::INFINITY).unwrap();
+    let mut rng = Rng::for_keys(&[5]);
+    let samples = 200_000;
+    let (mut landed, mut reflected) = (0.0, Color::BLACK);
+    for _ in 0..samples {
+        match surface.scatter_photon(&ray, &info, &mut rng) {
+            PhotonScatter::Land { scale } => landed += scale as f64,
+            PhotonScatter::Continue { dir, filter } => {
+                assert!((dir.y - -ray.dir.y).abs() < 1e-6, "not a mirror reflection: {dir}");
+                reflected += filter;
+            }
+            PhotonScatter::Absorb => panic!("nothing absorbs here"),
+        }
+    }
+    assert_close(landed / samples as f64, 1.0, 0.01, "landed power");
+    let reflected = reflected / samples as f32;
+    for (got, want) in reflected.to_array().into_iter().zip(blend.to_array()) {
+        assert_close(got as f64, want as f64, 0.01, "reflected power");
+    }
+}
+
+/// The colour seen from the camera where it looks at the point `p` of the floor.
+fn seen_at(scene: &Scene, p: Vector) -> Color {
+    let ray = Ray::new(scene.camera.position, (p - scene.camera.position).normalize());
+    let (info, _) = scene.closest_hit(&ray).expect("the floor is there");
+    assert!((info.ip - p).length() < 0.01, "the camera does not see {p} but {}", info.ip);
+    TraceContext::new(scene, Rng::for_keys(&[1])).raytrace(&ray)
+}
+
+#[test]
+fn the_caustic_under_the_glass_sphere_outshines_the_lit_floor_beside_it() {
+    use photon_map::{GLASS_CENTER, GLASS_RADIUS, LIGHT};
+    // The sphere's axis from the light meets the floor in the middle of its shadow, where it focuses.
+    let axis = GLASS_CENTER - LIGHT;
+    let focus = GLASS_CENTER + axis * (GLASS_CENTER.y / -axis.y);
+    // Beside it, across the light's direction, three radii away, and one checker square (25) further back,
+    // on a square of the same colour as the focus's: directly lit floor.
+    let across = Vector::new(axis.z, 0.0, -axis.x).normalize();
+    let beside = focus + across * (3.0 * GLASS_RADIUS) + Vector::new(0.0, 0.0, 25.0);
+    let with_map = prepare_scene(&photon_map::Args::parse_from(["photon_map"])).unwrap();
+    let without = prepare_scene(&photon_map::Args::parse_from(["photon_map", "--photons", "0"])).unwrap();
+    assert!(with_map.photon_map.is_some() && without.photon_map.is_none());
+
+    let (caustic, lit) = (seen_at(&with_map, focus).luminance(), seen_at(&with_map, beside).luminance());
+    assert!(caustic > 2.0 * lit, "caustic {caustic}, lit floor beside it {lit}");
+    // Without photons the same point lies in the sphere's shadow.
+    let shadow = seen_at(&without, focus).luminance();
+    assert!(shadow < 0.5 * lit, "shadow {shadow}, lit floor {lit}");
+}
+
+const SMALL: [&str; 4] = ["--width", "160", "--height", "120"];
+
+fn args_with(extra: &[&'static str]) -> Vec<&'static str> {
+    SMALL.iter().copied().chain(extra.iter().copied()).collect()
+}
+
+#[test]
+fn no_photons_renders_exactly_as_without_a_photon_map() {
+    let zero = common::render::<photon_map::Args>(&args_with(&["--photons", "0"]));
+    let args = photon_map::Args::parse_from(std::iter::once("photon_map").chain(SMALL));
+    let scene = args.build_scene().unwrap();
+    assert!(scene.photon_map.is_none() && scene.photons.count > 0);
+    let (plain, _) = render(&scene, &settings(&args)).unwrap();
+    assert!(zero == plain, "--photons 0 changed the picture");
+    let with_map = common::render::<photon_map::Args>(&SMALL);
+    assert!(with_map != plain, "the photon map must change the picture");
+}
+
+#[test]
+fn a_scene_without_caustic_casters_builds_no_map_and_renders_as_before() {
+    let args = bitmap_textures::Args::parse_from(["bitmap_textures", "--photons", "100000"]);
+    let scene = prepare_scene(&args).unwrap();
+    assert_eq!(scene.photons.count, 100_000);
+    assert!(scene.photon_map.is_none(), "a photon map without casters");
+    let with = common::render::<bitmap_textures::Args>(&args_with(&["--photons", "100000"]));
+    let without = common::render::<bitmap_textures::Args>(&SMALL);
+    assert!(with == without, "asking for photons changed a scene without caustics");
+}
+
+#[test]
+fn the_photon_map_and_picture_are_the_same_for_any_thread_count() {
+    let one = common::render::<photon_map::Args>(&args_with(&["--threads", "1", "--photons", "50000"]));
+    let two = common::render::<photon_map::Args>(&args_with(&["--threads", "2", "--photons", "50000"]));
+    assert!(one == two, "the picture changed with the thread count");
+    let other_seed = common::render::<photon_map::Args>(&args_with(&["--seed", "2", "--photons", "50000"]));
+    assert!(one != other_seed, "the seed must reach the photons");
+}
+
+#[test]
+fn show_photons_draws_dots_where_photons_landed() {
+    let scene = prepare_scene(&photon_map::Args::parse_from(["photon_map", "--show-photons"])).unwrap();
+    let map = scene.photon_map.as_ref().unwrap();
+    let photon = map.photons()[0];
+    let dot = map.irradiance(photon.position, -photon.dir);
+    assert!(dot.max_channel() > 100.0, "no dot on a photon: {dot:?}");
+    // Far from every photon (the camera's side of the floor, behind the sphere's shadow), no dot.
+    assert!(map.irradiance(Vector::new(60.0, 0.0, -60.0), Vector::Y).is_black());
+    let dots = common::render::<photon_map::Args>(&args_with(&["--show-photons"]));
+    let estimate = common::render::<photon_map::Args>(&SMALL);
+    assert!(dots != estimate);
+}
+
+#[test]
+fn impossible_photon_settings_are_one_line_naming_the_value() {
+    for (args, needle) in [
+        (&["--k", "0"][..], "photon k 0"),
+        (&["--radius=-1"][..], "photon radius -1"),
+        (&["--radius", "NaN"][..], "photon radius NaN"),
+        (&["--photons", "100000000"][..], "photon count 100000000"),
+        (&["--ior", "0"][..], "index of refraction 0"),
+    ] {
+        let out = common::run_example("photon_map", &[args, &["-o", "target/bad-input/photons.png"]].concat());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(needle) && err.trim_end().lines().count() == 1 && !err.contains("panicked"), "{err}");
+    }
+}
