@@ -265,10 +265,10 @@ impl Emitter {
         }
         // A caster too small to see from the light (its cone's solid angle rounds to 0) gets no photons.
         cones.retain(|c| c.power > 0.0);
-        let total: f64 = cones.iter().map(|c| c.power as f64).sum();
-        if !(total > 0.0) {
+        if cones.is_empty() {
             return None;
         }
+        let total: f64 = cones.iter().map(|c| c.power as f64).sum();
         // Each cone's share, rounded so that the shares add up to `count` (largest remainders).
         let exact: Vec<f64> = cones.iter().map(|c| c.power as f64 / total * count as f64).collect();
         let mut counts: Vec<u32> = exact.iter().map(|&e| e.floor() as u32).collect();
@@ -326,7 +326,7 @@ fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Opti
             PhotonScatter::Continue { dir, filter } => {
                 // Russian roulette.
                 let survival = filter.max_channel().min(1.0);
-                if !(rng.next_f32() < survival) {
+                if survival.is_nan() || rng.next_f32() >= survival {
                     return None;
                 }
                 power = power * filter / survival;
