@@ -14,7 +14,9 @@
 //! - `--show-photons`: the photons themselves, one dot each, like the slide's last picture.
 //!
 //! Try: `--photons 20000` (blotchy) and `--photons 1000000` (smooth); `--k 10` versus `--k 300`;
-//! `--radius 0.5` versus `--radius 8` (noise against blur); `--ior 1.33` (water focuses farther away).
+//! `--radius 0.5` versus `--radius 8` (noise against blur); `--ior 1.33` (water focuses farther away);
+//! `--abbe 8 --spectral sampled --spp 16` (a dispersive glass: photons carry wavelengths and the caustic
+//! gets coloured fringes).
 //!
 //! Homework ideas: store photons that land without a specular bounce in a second (global) map and add
 //! colour bleeding; a caustic from a glass cube; project the photons' hit points to find where the camera

@@ -34,8 +34,11 @@
 //!   the light of the lamps.
 //! - The map is built in parallel, each photon with its own random stream seeded from (seed, its index), and
 //!   stored in index order: the same picture for any number of threads.
-//! - Photons are [`Ray`]s, so they carry `Ray::wavelength` through every shader; emission gives them none
-//!   (white light) until the renderer has dispersive materials.
+//! - Chromatic caustics (the slide: "всеки да носи информация само за определена дължина на вълната"): in a
+//!   scene with dispersive materials every photon gets a wavelength and the colour of its band of the
+//!   spectrum. Photons are [`Ray`]s, so the glass bends each by the index at its wavelength and the map
+//!   holds coloured light. The estimate is already the sum over the spectrum, so the diffuse shaders add it
+//!   in every wavelength pass: the passes' colours add up to white, and the caustic is counted once.
 
 use crate::color::Color;
 use crate::error::{Error, Result};
@@ -44,6 +47,7 @@ use crate::math::{OrthonormalBasis, Vector};
 use crate::ray::Ray;
 use crate::rng::Rng;
 use crate::scene::Scene;
+use crate::spectral::{Band, bands, fit_to_gamut};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -78,6 +82,9 @@ pub const DOT_RADIUS: f32 = 0.25;
 /// `--show-photons`: the irradiance of a dot, enough to turn any surface that is not black white (or the
 /// photon's colour).
 const DOT_IRRADIANCE: f32 = 1000.0;
+/// Chromatic caustics: the bands of the spectrum a photon's wavelength is drawn from (its colour is its
+/// band's); narrow enough that a band's colour is that of its wavelengths.
+pub const PHOTON_BANDS: u32 = 64;
 /// Keeps the photons' random streams apart from the pixels' (pixel keys are below 2^32).
 const PHOTON_STREAM: u64 = 0x5048_4f54_4f4e_5321;
 
@@ -243,6 +250,8 @@ pub fn strength(c: Color) -> f32 {
 #[derive(Clone, Debug)]
 pub struct Emitter {
     cones: Vec<Cone>,
+    /// For a scene with dispersive materials, the bands of the photons' wavelengths; empty for white light.
+    bands: Vec<Band>,
 }
 
 impl Emitter {
@@ -282,11 +291,14 @@ impl Emitter {
             (cone.first, cone.count, cone.shift) = (first, n, (rng.next_f32(), rng.next_f32()));
             first += n;
         }
-        Some(Emitter { cones })
+        let bands = if scene.is_dispersive() { bands(PHOTON_BANDS) } else { Vec::new() };
+        Some(Emitter { cones, bands })
     }
 
-    /// Photon number `index`: its ray from the light and its power.
-    fn emit(&self, scene: &Scene, index: u32) -> (Ray, Color) {
+    /// Photon number `index`: its ray from the light and its power. In a dispersive scene the photon gets a
+    /// wavelength in one of the [`PHOTON_BANDS`] bands of the visible range, and carries the colour of its
+    /// band times the number of bands, so that together the photons are as white as the light.
+    fn emit(&self, scene: &Scene, index: u32, rng: &mut Rng) -> (Ray, Color) {
         let chosen = self.cones.partition_point(|c| c.first + c.count <= index);
         let cone = &self.cones[chosen];
         let dir = cone.direction(index - cone.first);
@@ -300,7 +312,17 @@ impl Emitter {
             .map(|(_, c)| c.count as f32 / c.solid_angle)
             .sum::<f32>();
         let light = &scene.lights[cone.light];
-        (Ray::new(light.position, dir), light.color * (light.intensity / density))
+        let power = light.color * (light.intensity / density);
+        if self.bands.is_empty() {
+            return (Ray::new(light.position, dir), power);
+        }
+        // The bands are equal parts of the visible range. Photon j of a cone takes band j mod the number of
+        // bands (shifted per cone), so every band gets its share of each cone's photons, evenly spread over
+        // the cone, and a uniformly random wavelength within the band.
+        let k = self.bands.len() as u32;
+        let band = &self.bands[((index - cone.first + (cone.shift.0 * k as f32) as u32) % k) as usize];
+        let ray = Ray { wavelength: Some(band.at(rng.next_f32())), ..Ray::new(light.position, dir) };
+        (ray, power * band.color() * self.bands.len() as f32)
     }
 
     /// The photons emitted in all.
@@ -313,7 +335,7 @@ impl Emitter {
 /// as stored, if it landed on a diffuse surface after a reflection or refraction.
 fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Option<StoredPhoton> {
     let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, index as u64]);
-    let (mut ray, mut power) = emitter.emit(scene, index);
+    let (mut ray, mut power) = emitter.emit(scene, index, &mut rng);
     loop {
         if ray.depth > scene.max_depth {
             return None;
@@ -438,7 +460,8 @@ impl PhotonMap {
                 sum += photon.power * (1.0 - f.distance.sqrt() / filter_radius);
             }
         }
-        sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2)
+        // Photons of single wavelengths carry colours outside the sRGB gamut; their sum is brought back to it.
+        fit_to_gamut(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2))
     }
 
     /// `--show-photons`: a dot of the nearest photon's colour if one lies within the dot radius.
@@ -448,8 +471,8 @@ impl PhotonMap {
         if nearest.distance > dot_radius * dot_radius {
             return Color::BLACK;
         }
-        let power = self.photons[nearest.item as usize].power;
-        power * (DOT_IRRADIANCE / power.max_channel())
+        let color = fit_to_gamut(self.photons[nearest.item as usize].power);
+        color * (DOT_IRRADIANCE / color.max_channel())
     }
 }
 

@@ -17,8 +17,8 @@
 use crate::camera::CameraFrame;
 use crate::color::{Color, to_srgb8};
 use crate::error::{Error, Result};
-use crate::ray::Ray;
 use crate::photon_map::PhotonStats;
+use crate::ray::Ray;
 use crate::rng::Rng;
 use crate::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};

@@ -20,6 +20,7 @@ use lecture6::rng::Rng;
 use lecture6::scene::{Scene, TraceContext};
 use lecture6::scenes::{bitmap_textures, photon_map};
 use lecture6::shader::{Lambert, Layered, Reflection, Refraction, Shader};
+use lecture6::spectral::Ior;
 use lecture6::texture::{Fresnel, FresnelMode};
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -199,6 +200,51 @@ fn a_layered_surface_sends_photons_on_in_proportion_to_its_blends() {
     }
 }
 
+#[test]
+fn dispersive_glass_passes_white_light_in_coloured_photons() {
+    // A dense flint: photons get wavelengths and band colours, but together they are as white as the light.
+    let glass = lecture6::scenes::dispersion::fresnel_glass(Ior::SF11);
+    let map = build(&glass_scene(glass, vec![]));
+    let expected = INTENSITY as f64 * sphere_solid_angle(1.0, 5.0);
+    for channel in 0..3 {
+        let power: f64 = map.photons().iter().map(|p| p.power.to_array()[channel] as f64).sum();
+        assert_close(power, expected, 0.02, &format!("power in channel {channel}"));
+    }
+    assert!(
+        map.photons().iter().any(|p| p.power.0.min_element() < 0.5 * p.power.0.max_element()),
+        "no coloured photon"
+    );
+}
+
+/// The largest relative difference between the channels of the caustic estimates on a grid of the floor
+/// around the glass sphere's focus.
+fn caustic_chroma(args: &[&str]) -> f32 {
+    use photon_map::{GLASS_CENTER, LIGHT};
+    let axis = GLASS_CENTER - LIGHT;
+    let focus = GLASS_CENTER + axis * (GLASS_CENTER.y / -axis.y);
+    let scene = prepare_scene(&photon_map::Args::parse_from(std::iter::once("photon_map").chain(args.iter().copied())))
+        .unwrap();
+    let map = scene.photon_map.as_ref().unwrap();
+    let mut chroma: f32 = 0.0;
+    for i in -8..=8 {
+        for j in -8..=8 {
+            let e = map.irradiance(focus + Vector::new(i as f32, 0.0, j as f32), Vector::Y);
+            if e.max_channel() > 0.5 {
+                chroma = chroma.max(1.0 - e.0.min_element() / e.max_channel());
+            }
+        }
+    }
+    chroma
+}
+
+#[test]
+fn a_dispersive_sphere_makes_a_chromatic_caustic() {
+    let white = caustic_chroma(&["--photons", "100000"]);
+    assert!(white < 1e-6, "a white caustic has colour {white}");
+    let coloured = caustic_chroma(&["--photons", "100000", "--abbe", "12"]);
+    assert!(coloured > 0.3, "the dispersive caustic is hardly coloured: {coloured}");
+}
+
 /// The colour seen from the camera where it looks at the point `p` of the floor.
 fn seen_at(scene: &Scene, p: Vector) -> Color {
     let ray = Ray::new(scene.camera.position, (p - scene.camera.position).normalize());
@@ -287,7 +333,7 @@ fn impossible_photon_settings_are_one_line_naming_the_value() {
         (&["--radius=-1"][..], "photon radius -1"),
         (&["--radius", "NaN"][..], "photon radius NaN"),
         (&["--photons", "100000000"][..], "photon count 100000000"),
-        (&["--ior", "0"][..], "index of refraction 0"),
+        (&["--ior", "0"][..], "index of refraction n_d 0"),
     ] {
         let out = common::run_example("photon_map", &[args, &["-o", "target/bad-input/photons.png"]].concat());
         let err = String::from_utf8_lossy(&out.stderr);
