@@ -126,22 +126,25 @@ impl PhotonSettings {
     }
 }
 
+/// The `--help` heading of the photon-mapping options (set per option: a heading set on the whole struct
+/// would also cover the options that follow it in an example's own list).
+const HEADING: &str = "Caustics (photon mapping)";
+
 /// The photon-mapping options every example accepts.
 #[derive(clap::Args, Clone, Debug, Default)]
-#[command(next_help_heading = "Caustics (photon mapping)")]
 pub struct PhotonArgs {
     /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.
     /// [default: the scene's own, 0 for scenes without caustics]
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", help_heading = HEADING)]
     pub photons: Option<u32>,
     /// How many nearest photons each caustic estimate gathers. [default: the scene's own]
-    #[arg(long, value_name = "K")]
+    #[arg(long, value_name = "K", help_heading = HEADING)]
     pub k: Option<u32>,
     /// The largest distance from a shaded point at which photons count. [default: the scene's own]
-    #[arg(long, value_name = "R")]
+    #[arg(long, value_name = "R", help_heading = HEADING)]
     pub radius: Option<f32>,
     /// Draw each stored photon as a dot instead of estimating the caustic light from them.
-    #[arg(long)]
+    #[arg(long, help_heading = HEADING)]
     pub show_photons: bool,
 }
 
