@@ -433,11 +433,6 @@ impl PhotonMap {
         &self.photons
     }
 
-    /// The estimate's maximum radius.
-    pub fn max_radius(&self) -> f32 {
-        self.max_radius
-    }
-
     /// The caustic irradiance at the point `p` of a diffuse surface whose normal `n` faces the viewer
     /// (the slide's "K-те най-близки съседа"): the power of the k nearest photons within the maximum radius
     /// that arrived on this side of the surface, weighted by the cone filter, over the disc's area. With
