@@ -185,7 +185,8 @@ fn run<E: Example>(args: &E) -> Result<()> {
         if let Some(p) = &stats.photons {
             let trace = p.trace_time.as_secs_f64();
             println!(
-                "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), k-d tree built in {:.3} s",
+                "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), k-d tree \
+                 built in {:.3} s",
                 E::NAME,
                 p.emitted,
                 p.stored,

@@ -24,7 +24,8 @@
 //!   light, which the shadow rays already compute exactly.
 //! - Russian roulette ends the paths: after a bounce a photon survives with probability equal to the largest
 //!   channel of the bounce's colour and its power is divided by that, so photon powers stay even and the
-//!   estimate stays unbiased. The scene's `MAX_RAY_DEPTH` limits photon bounces as it limits rays.
+//!   estimate stays unbiased. The scene's `MAX_RAY_DEPTH` limits photon bounces as it limits rays (and so
+//!   does the renderer's safety cap, for scenes without a limit).
 //! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
 //!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k
 //!   photons lie within the maximum radius, every photon in that disc was found, so the disc is the one
@@ -46,7 +47,7 @@ use crate::geometry::Aabb;
 use crate::math::{OrthonormalBasis, Vector};
 use crate::ray::Ray;
 use crate::rng::Rng;
-use crate::scene::Scene;
+use crate::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::spectral::{Band, bands, fit_to_gamut};
 use kiddo::{ImmutableKdTree, SquaredEuclidean};
 use rayon::prelude::*;
@@ -340,7 +341,7 @@ fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Opti
     let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, index as u64]);
     let (mut ray, mut power) = emitter.emit(scene, index, &mut rng);
     loop {
-        if ray.depth > scene.max_depth {
+        if ray.depth > scene.max_depth.min(RECURSION_SAFETY_CAP) {
             return None;
         }
         let (info, node) = scene.closest_hit(&ray)?;

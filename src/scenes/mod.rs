@@ -7,10 +7,10 @@ pub mod environment;
 pub mod fresnel;
 pub mod layered;
 pub mod model_transform;
+pub mod photon_map;
 pub mod reflect_v01;
 pub mod reflect_v02;
 pub mod refract;
-pub mod photon_map;
 
 use crate::bitmap::{Bitmap, Filter};
 use crate::color::Color;
