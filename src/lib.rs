@@ -9,12 +9,14 @@
 //! | [`color`], [`ray`], [`camera`], [`rng`] | the course's basic types |
 //! | [`geometry`], [`transform`], [`node`] | geometry in canonical form; model transform; nodes and instancing |
 //! | [`bitmap`], [`texture`] | bitmap textures; textures that drive shader properties; the Fresnel texture |
-//! | [`shader`] | Lambert, Phong, reflection, refraction, the Layered shader |
 //! | [`environment`] | what rays that hit nothing see: constant, spherical (equirectangular) and cube-map environments |
+//! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`] | the parallel, deterministic renderer |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
+//! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
+//! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
 //! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
 
@@ -34,10 +36,12 @@ pub mod photon_map;
 pub mod ray;
 pub mod render;
 pub mod rng;
+pub mod sampling;
 pub mod scene;
 pub mod scenes;
 pub mod shader;
 pub mod spectral;
+pub mod study;
 pub mod teapot;
 pub mod texture;
 pub mod transform;

@@ -17,6 +17,7 @@ regression!(
     dispersion,
     environment,
     fresnel,
+    glossy,
     layered,
     model_transform,
     photon_map,

@@ -6,6 +6,7 @@ pub mod dispersion;
 pub mod environment;
 pub mod fresnel;
 pub mod layered;
+pub mod glossy;
 pub mod model_transform;
 pub mod photon_map;
 pub mod reflect_v01;

@@ -11,7 +11,7 @@ mod refraction;
 pub use lambert::Lambert;
 pub use layered::Layered;
 pub use phong::Phong;
-pub use reflection::Reflection;
+pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
 
 use crate::color::Color;
