@@ -73,17 +73,14 @@ impl Sweep {
 
     /// The options of the point where the knob is `value`.
     pub fn point_args(&self, value: u32) -> Vec<String> {
-        let mut args = self.fixed.clone();
-        args.extend([self.knob.to_string(), value.to_string(), "--quiet".to_string()]);
-        args
+        override_options(&self.fixed, &[self.knob.to_string(), value.to_string(), "--quiet".to_string()])
     }
 
-    /// The options of the reference render.
+    /// The options of the reference render: the fixed ones, overridden by the reference's.
     pub fn reference_args(&self) -> Vec<String> {
-        let mut args = self.fixed.clone();
-        args.extend(self.reference.iter().cloned());
-        args.push("--quiet".to_string());
-        args
+        let mut reference = self.reference.clone();
+        reference.push("--quiet".to_string());
+        override_options(&self.fixed, &reference)
     }
 
     /// The reference picture: read from `cache_dir` when an earlier run of the same program left it there,
@@ -135,6 +132,23 @@ impl Sweep {
             })
             .collect()
     }
+}
+
+/// `base` followed by `overrides`, without the options of `base` that `overrides` gives again (with their
+/// values), since an example accepts each option once.
+fn override_options(base: &[String], overrides: &[String]) -> Vec<String> {
+    let mut out = Vec::with_capacity(base.len() + overrides.len());
+    let mut skipping = false;
+    for arg in base {
+        if arg.starts_with('-') && arg.parse::<f64>().is_err() {
+            skipping = overrides.contains(arg);
+        }
+        if !skipping {
+            out.push(arg.clone());
+        }
+    }
+    out.extend(overrides.iter().cloned());
+    out
 }
 
 /// A perceptual error of a picture against a reference (0 = indistinguishable).

@@ -66,3 +66,23 @@ fn the_summary_line_reports_the_render() {
     let line = String::from_utf8_lossy(&out.stdout);
     assert!(line.starts_with("bitmap_textures: 64x48, 4 spp,") && line.contains("Mrays/s"), "{line}");
 }
+
+#[test]
+fn impossible_glossy_values_are_rejected() {
+    for (args, needle) in [
+        (&["--glossiness", "1.5"][..], "glossiness 1.5"),
+        (&["--glossiness=-0.1"][..], "glossiness -0.1"),
+        (&["--glossiness", "NaN"][..], "glossiness NaN"),
+        (&["--glossy-samples", "0"][..], "glossy samples 0"),
+    ] {
+        let out = run_example("glossy", args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = stderr(&out);
+        assert!(err.contains(needle) && err.trim_end().lines().count() == 1, "{args:?}: {err}");
+    }
+    // An unknown sampler is clap's error, which lists the samplers there are.
+    let out = run_example("glossy", &["--sampler", "sobol"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(err.contains("sobol") && err.contains("stratified") && !err.contains("panicked"), "{err}");
+}

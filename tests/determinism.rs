@@ -25,3 +25,14 @@ fn model_transform_is_identical_for_one_and_two_threads() {
     let two = common::render::<Args>(&["--threads", "2", "--width", "160", "--height", "120"]);
     assert!(one == two, "the picture changed with the thread count");
 }
+
+#[test]
+fn glossy_is_identical_for_one_and_two_threads_with_either_sampler() {
+    use lecture6::scenes::glossy;
+    for sampler in ["random", "stratified"] {
+        let args = |threads| ["--threads", threads, "--width", "96", "--height", "72", "--sampler", sampler];
+        let one = common::render::<glossy::Args>(&args("1"));
+        let two = common::render::<glossy::Args>(&args("2"));
+        assert!(one == two, "{sampler}: the picture changed with the thread count");
+    }
+}

@@ -1,0 +1,68 @@
+//! The error-versus-time study measures what it claims: on tiny pictures, the error against the converged
+//! reference falls as the sample count rises, and the stratified disc sampler beats the slide's random one.
+
+use lecture6::scenes::{bitmap_textures, glossy};
+use lecture6::study::{Measurement, Sweep, pareto_front, rmse_at_time};
+
+fn rmse_curve(sweep: &Sweep) -> Vec<f64> {
+    let reference = sweep.reference_frame(None).unwrap();
+    sweep.measure(&reference, 1, None).unwrap().iter().map(|m| m.rmse).collect()
+}
+
+fn assert_falls(name: &str, rmse: &[f64]) {
+    assert!(rmse.windows(2).all(|w| w[1] < w[0]), "{name}: the error does not fall with the sample count: {rmse:?}");
+}
+
+#[test]
+fn glossy_error_falls_with_the_sample_count_and_stratified_beats_random() {
+    // One pixel-centre sample per pixel, so the error is that of the glossy reflections alone.
+    let sweep = |sampler| {
+        Sweep::new::<glossy::Args>(
+            sampler,
+            &["--width", "64", "--height", "48", "--spp", "1", "--sampler", sampler],
+            "--glossy-samples",
+            &[1, 4, 16, 64],
+            &["--glossy-samples", "1024", "--sampler", "stratified", "--seed", "7"],
+        )
+    };
+    let stratified = rmse_curve(&sweep("stratified"));
+    let random = rmse_curve(&sweep("random"));
+    assert_falls("stratified", &stratified);
+    assert_falls("random", &random);
+    // Independent samples: the error falls as 1/sqrt(N), 8 times over 64 times the samples.
+    assert!(random[3] < random[0] / 4.0, "random: {random:?}");
+    for k in 1..4 {
+        assert!(stratified[k] < random[k], "at the same count stratified must be better: {stratified:?} vs {random:?}");
+    }
+}
+
+#[test]
+fn anti_aliasing_error_falls_with_the_sample_count() {
+    let sweep = Sweep::new::<bitmap_textures::Args>(
+        "anti-aliasing",
+        &["--width", "80", "--height", "60"],
+        "--spp",
+        &[1, 4, 16],
+        &["--spp", "256", "--seed", "7"],
+    );
+    assert_falls("bitmap_textures", &rmse_curve(&sweep));
+}
+
+fn point(example: &'static str, seconds: f64, rmse: f64) -> Measurement {
+    Measurement { example, label: String::new(), knob: "--spp", value: 1, seconds, rmse, perceptual: None }
+}
+
+#[test]
+fn the_pareto_front_keeps_only_undominated_points() {
+    let m = [point("a", 1.0, 0.5), point("a", 2.0, 0.6), point("a", 3.0, 0.1), point("b", 9.0, 0.9)];
+    assert_eq!(pareto_front(&m), [true, false, true, true]);
+}
+
+#[test]
+fn errors_are_interpolated_in_log_log() {
+    let curve = [point("a", 1.0, 0.1), point("a", 4.0, 0.025)];
+    // On a line of slope -1 in log-log, twice the time halves the error.
+    let at_2 = rmse_at_time(&curve, 2.0).unwrap();
+    assert!((at_2 - 0.05).abs() < 1e-12, "{at_2}");
+    assert_eq!(rmse_at_time(&curve, 8.0), None);
+}
