@@ -56,9 +56,9 @@ impl Example for Args {
 
     fn build_scene(&self) -> Result<Scene> {
         let mut scene = Scene::new(Camera {
-            position: Vector::new(0.0, 36.0, -90.0),
-            pitch: -12.0,
-            fov: 72.0,
+            position: Vector::new(0.0, 30.0, -95.0),
+            pitch: -10.0,
+            fov: 68.0,
             ..Camera::default()
         });
         scene.ambient = Color::gray(0.15);
