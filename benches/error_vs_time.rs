@@ -22,23 +22,22 @@ use std::time::Instant;
 const SIZE: [&str; 4] = ["--width", "320", "--height", "240"];
 const REPEATS: usize = 3;
 
-/// The glossy example's reference: 64 x 64 = 4096 glossy rays per pixel, another seed.
-const GLOSSY_REFERENCE: [&str; 6] = ["--spp", "64", "--glossy-samples", "64", "--seed", "7"];
+/// The glossy example's converged reference: 64 x 64 = 4096 glossy rays per pixel, another seed.
+const GLOSSY_REFERENCE: [&str; 8] = ["--spp", "64", "--glossy-samples", "64", "--sampler", "stratified", "--seed", "7"];
+/// The reference of the pixel-centre curves: one camera ray through each pixel's centre (no anti-aliasing
+/// error at all), 2048 glossy rays.
+const PIXEL_CENTRE_REFERENCE: [&str; 8] =
+    ["--spp", "1", "--glossy-samples", "2048", "--sampler", "stratified", "--seed", "7"];
 
 fn with_size(extra: &[&'static str]) -> Vec<&'static str> {
     SIZE.iter().chain(extra).copied().collect()
 }
 
 fn sweeps() -> Vec<Sweep> {
-    let glossy_samples = |sampler: &'static str, spp: &'static str, values: &[u32]| {
-        Sweep::new::<glossy::Args>(
-            &format!("{sampler}, --spp {spp}"),
-            &with_size(&["--sampler", sampler, "--spp", spp]),
-            "--glossy-samples",
-            values,
-            &GLOSSY_REFERENCE,
-        )
+    let glossy_samples = |label: &str, fixed: &[&'static str], values: &[u32], reference: &[&str]| {
+        Sweep::new::<glossy::Args>(label, &with_size(fixed), "--glossy-samples", values, reference)
     };
+    let doubling = [1, 2, 4, 8, 16, 32, 64, 128];
     vec![
         Sweep::new::<bitmap_textures::Args>(
             "anti-aliasing",
@@ -47,17 +46,26 @@ fn sweeps() -> Vec<Sweep> {
             &[1, 2, 4, 9, 16, 36, 64],
             &["--spp", "1024", "--seed", "7"],
         ),
-        glossy_samples("random", "1", &[1, 2, 4, 8, 16, 32, 64, 128]),
-        glossy_samples("stratified", "1", &[1, 2, 4, 8, 16, 32, 64, 128]),
-        glossy_samples("random", "4", &[1, 2, 4, 8, 16, 32]),
-        glossy_samples("stratified", "4", &[1, 2, 4, 8, 16, 32]),
+        // The whole picture against the converged reference: how to share samples between anti-aliasing
+        // and the glossy cone (this is where the example's defaults come from).
         Sweep::new::<glossy::Args>(
-            "stratified, --glossy-samples 1",
-            &with_size(&["--sampler", "stratified", "--glossy-samples", "1"]),
+            "--glossy-samples 1",
+            &with_size(&["--glossy-samples", "1"]),
             "--spp",
             &[1, 4, 16, 64],
             &GLOSSY_REFERENCE,
         ),
+        glossy_samples("--spp 4", &["--spp", "4"], &[1, 2, 4, 8, 16, 32], &GLOSSY_REFERENCE),
+        glossy_samples("--spp 16", &["--spp", "16"], &[1, 2, 4, 8], &GLOSSY_REFERENCE),
+        glossy_samples(
+            "--spp 4, random",
+            &["--spp", "4", "--sampler", "random"],
+            &[1, 2, 4, 8, 16, 32],
+            &GLOSSY_REFERENCE,
+        ),
+        // Through the pixel centres only, so that the error is the glossy noise alone: the two samplers.
+        glossy_samples("random", &["--spp", "1", "--sampler", "random"], &doubling, &PIXEL_CENTRE_REFERENCE),
+        glossy_samples("stratified", &["--spp", "1", "--sampler", "stratified"], &doubling, &PIXEL_CENTRE_REFERENCE),
     ]
 }
 
@@ -82,17 +90,29 @@ fn main() {
         );
         let curve = sweep.measure(&reference, REPEATS, Some(study::mean_flip)).unwrap_or_else(|e| fail(&e));
         for m in &curve {
-            eprintln!("  {} {:>4}: {:.3} s, RMSE {:.5}, FLIP {:.4}", m.knob, m.value, m.seconds, m.rmse, m.perceptual.unwrap_or(0.0));
+            eprintln!(
+                "  {} {:>4}: {:.3} s, RMSE {:.5}, FLIP {:.4}",
+                m.knob,
+                m.value,
+                m.seconds,
+                m.rmse,
+                m.perceptual.unwrap_or(0.0)
+            );
         }
         curves.push(curve);
     }
     let all: Vec<Measurement> = curves.iter().flatten().cloned().collect();
     let mut report = String::from("# Run time versus error\n\n");
-    report += &format!("320 x 240, median wall time of {REPEATS} renders; `*` marks the Pareto front of each example.\n\n");
+    report += &format!(
+        "320 x 240, median wall time of {REPEATS} renders on {} threads; `*` marks the Pareto front (RMSE against \
+         time) of each table.\n",
+        rayon::current_num_threads()
+    );
     report += &study::markdown_table(&all);
     report += &sampler_comparison(&curves);
     let table_path = dir.join("error_vs_time.md");
-    std::fs::write(&table_path, &report).unwrap_or_else(|e| fail(&lecture6::Error::file("cannot write", &table_path, e)));
+    std::fs::write(&table_path, &report)
+        .unwrap_or_else(|e| fail(&lecture6::Error::file("cannot write", &table_path, e)));
     let chart_path = dir.join("error_vs_time.png");
     draw_chart(&curves, &chart_path).unwrap_or_else(|e| fail(&e));
     println!("{report}");
@@ -110,102 +130,141 @@ fn fail(e: &lecture6::Error) -> ! {
     std::process::exit(2)
 }
 
-/// The equal-time comparison of the glossy samplers: for each point of a stratified curve, the RMSE the
-/// random curve with the same other options reaches in the same time (interpolated in log-log), divided by
+/// The equal-time comparison of the glossy samplers: for each point of the stratified curve, the RMSE the
+/// random curve against the same reference reaches in the same time (interpolated in log-log), divided by
 /// the stratified RMSE.
 fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
     let mut out = String::from(
         "\n## The slide's random disc points against stratified ones, at equal time\n\n\
-         | curve | setting | time (s) | RMSE stratified | RMSE random at that time | ratio |\n|---|---|---:|---:|---:|---:|\n",
+         Pixel-centre curves (the glossy noise alone).\n\n\
+         | setting | time (s) | RMSE stratified | RMSE random, same setting | RMSE random at that time | ratio at equal time |\n\
+         |---|---:|---:|---:|---:|---:|\n",
     );
-    let mut log_sum = 0.0;
-    let mut count = 0;
-    for stratified in curves.iter().filter(|c| c[0].label.starts_with("stratified, --spp")) {
-        let random_label = stratified[0].label.replace("stratified", "random");
-        let Some(random) = curves.iter().find(|c| c[0].label == random_label) else { continue };
+    // (log-ratio sum, count) over all points, and over those with 4 samples or more (one sample per
+    // shading point cannot be stratified).
+    let mut all = (0.0, 0);
+    let mut stratifiable = (0.0, 0);
+    for stratified in curves.iter().filter(|c| c[0].label == "stratified") {
+        let Some(random) = curves.iter().find(|c| c[0].label == "random" && c[0].same_group(&stratified[0])) else {
+            continue;
+        };
         let mut random_by_time = random.clone();
         random_by_time.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
         for m in stratified {
+            let same_setting = random.iter().find(|r| r.value == m.value).map_or(f64::NAN, |r| r.rmse);
             if let Some(r) = study::rmse_at_time(&random_by_time, m.seconds) {
                 let ratio = r / m.rmse;
-                log_sum += ratio.ln();
-                count += 1;
+                all = (all.0 + ratio.ln(), all.1 + 1);
+                if m.value >= 4 {
+                    stratifiable = (stratifiable.0 + ratio.ln(), stratifiable.1 + 1);
+                }
                 let _ = writeln!(
                     out,
-                    "| {} | `{} {}` | {:.3} | {:.5} | {:.5} | {:.2} |",
-                    m.label, m.knob, m.value, m.seconds, m.rmse, r, ratio
+                    "| `{} {}` | {:.3} | {:.5} | {:.5} | {:.5} | {:.2} |",
+                    m.knob, m.value, m.seconds, m.rmse, same_setting, r, ratio
                 );
             }
         }
     }
-    if count > 0 {
-        let _ = writeln!(
-            out,
-            "\nGeometric mean of the ratio over {count} points: **{:.2}** (the random sampler's RMSE over the \
-             stratified one's at the same time).",
-            (log_sum / count as f64).exp()
-        );
+    for ((sum, count), which) in [(all, "all points"), (stratifiable, "points with 4 or more glossy samples")] {
+        if count > 0 {
+            let _ = writeln!(
+                out,
+                "\nEqual-time error ratio (random RMSE / stratified RMSE), geometric mean over {which} \
+                 ({count}): **{:.2}**",
+                (sum / count as f64).exp()
+            );
+        }
     }
     out
 }
 
-/// Log-log charts of RMSE and of mean FLIP against time, one line per curve.
+/// Log-log charts of error against time: one column per group of comparable curves (an example against
+/// one reference), RMSE above and mean FLIP below, one line per curve.
 fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> {
     plotters::style::register_font("sans-serif", FontStyle::Normal, include_bytes!("fonts/DejaVuSansMono.ttf"))
-        .map_err(|_| lecture6::Error::file("cannot read font", Path::new("benches/fonts/DejaVuSansMono.ttf"), "invalid"))?;
-    let (w, h) = (1200u32, 500u32);
+        .map_err(|_| {
+            lecture6::Error::file("cannot read font", Path::new("benches/fonts/DejaVuSansMono.ttf"), "invalid")
+        })?;
+    let mut groups: Vec<Vec<&Vec<Measurement>>> = Vec::new();
+    for curve in curves {
+        match groups.iter_mut().find(|g| g[0][0].same_group(&curve[0])) {
+            Some(group) => group.push(curve),
+            None => groups.push(vec![curve]),
+        }
+    }
+    let (w, h) = (560 * groups.len() as u32, 820u32);
     let mut buffer = vec![0u8; (w * h * 3) as usize];
     let chart_error = |e: &dyn std::fmt::Display| lecture6::Error::file("cannot draw chart", path, e.to_string());
     {
         let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| chart_error(&e))?;
-        let panels = root.split_evenly((1, 2));
+        let panels = root.split_evenly((2, groups.len()));
         let metrics: [(&str, fn(&Measurement) -> f64); 2] =
             [("RMSE (linear)", |m| m.rmse), ("mean FLIP", |m| m.perceptual.unwrap_or(f64::NAN))];
-        for (panel, (name, metric)) in panels.iter().zip(metrics) {
-            let points = curves.iter().flatten();
-            let (t_min, t_max) = points.clone().fold((f64::MAX, 0f64), |(a, b), m| (a.min(m.seconds), b.max(m.seconds)));
-            let (e_min, e_max) = points
-                .map(metric)
-                .filter(|v| v.is_finite() && *v > 0.0)
-                .fold((f64::MAX, 0f64), |(a, b), v| (a.min(v), b.max(v)));
-            let mut chart = ChartBuilder::on(panel)
-                .caption(format!("{name} versus render time, 320 x 240"), ("sans-serif", 18))
-                .margin(12)
-                .x_label_area_size(40)
-                .y_label_area_size(70)
-                .build_cartesian_2d((t_min * 0.8..t_max * 1.25).log_scale(), (e_min * 0.8..e_max * 1.25).log_scale())
-                .map_err(|e| chart_error(&e))?;
-            chart
-                .configure_mesh()
-                .x_desc("seconds")
-                .y_desc(name)
-                .label_style(("sans-serif", 13))
-                .draw()
-                .map_err(|e| chart_error(&e))?;
-            for (i, curve) in curves.iter().enumerate() {
-                let color = Palette99::pick(i).to_rgba();
-                let series: Vec<(f64, f64)> = curve.iter().map(|m| (m.seconds, metric(m))).collect();
+        for (row, (name, metric)) in metrics.into_iter().enumerate() {
+            for (col, group) in groups.iter().enumerate() {
+                let panel = &panels[row * groups.len() + col];
+                let points = group.iter().flat_map(|c| c.iter());
+                let (t_min, t_max) =
+                    points.clone().fold((f64::MAX, 0f64), |(a, b), m| (a.min(m.seconds), b.max(m.seconds)));
+                let (e_min, e_max) = points
+                    .map(metric)
+                    .filter(|v| v.is_finite() && *v > 0.0)
+                    .fold((f64::MAX, 0f64), |(a, b), v| (a.min(v), b.max(v)));
+                let first = &group[0][0];
+                let caption = format!("{}, {name} against {}", first.example, first.reference);
+                let mut chart = ChartBuilder::on(panel)
+                    .caption(caption, ("sans-serif", 11))
+                    .margin(10)
+                    .x_label_area_size(36)
+                    .y_label_area_size(60)
+                    .build_cartesian_2d(
+                        (t_min * 0.8..t_max * 1.25).log_scale(),
+                        (e_min * 0.8..e_max * 1.25).log_scale(),
+                    )
+                    .map_err(|e| chart_error(&e))?;
                 chart
-                    .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
-                    .map_err(|e| chart_error(&e))?
-                    .label(format!("{}: {} ({})", curve[0].example, curve[0].label, curve[0].knob))
-                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], color.stroke_width(2)));
+                    .configure_mesh()
+                    .x_labels(6)
+                    .y_labels(8)
+                    .x_label_formatter(&|v| short(*v))
+                    .y_label_formatter(&|v| short(*v))
+                    .x_desc("render time (s), 320 x 240")
+                    .y_desc(name)
+                    .label_style(("sans-serif", 12))
+                    .draw()
+                    .map_err(|e| chart_error(&e))?;
+                for (i, curve) in group.iter().enumerate() {
+                    let color = Palette99::pick(i).to_rgba();
+                    let series: Vec<(f64, f64)> = curve.iter().map(|m| (m.seconds, metric(m))).collect();
+                    chart
+                        .draw_series(LineSeries::new(series.clone(), color.stroke_width(2)))
+                        .map_err(|e| chart_error(&e))?
+                        .label(format!("{} ({})", curve[0].label, curve[0].knob))
+                        .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], color.stroke_width(2)));
+                    chart
+                        .draw_series(series.into_iter().map(|p| Circle::new(p, 3, color.filled())))
+                        .map_err(|e| chart_error(&e))?;
+                }
                 chart
-                    .draw_series(series.into_iter().map(|p| Circle::new(p, 3, color.filled())))
+                    .configure_series_labels()
+                    .position(SeriesLabelPosition::UpperRight)
+                    .label_font(("sans-serif", 11))
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .draw()
                     .map_err(|e| chart_error(&e))?;
             }
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::LowerLeft)
-                .label_font(("sans-serif", 12))
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(|e| chart_error(&e))?;
         }
         root.present().map_err(|e| chart_error(&e))?;
     }
     let img = image::RgbImage::from_raw(w, h, buffer).expect("the chart buffer matches its size");
     lecture6::render::save_atomically(path, |tmp| img.save_with_format(tmp, image::ImageFormat::Png))
+}
+
+/// A tick label with two significant digits.
+fn short(v: f64) -> String {
+    let digits = (1 - v.abs().log10().floor() as i32).max(0) as usize;
+    format!("{v:.digits$}")
 }

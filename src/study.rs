@@ -19,20 +19,27 @@ use crate::render::Frame;
 use crate::rng::mix64;
 use std::path::{Path, PathBuf};
 
-/// Renders an example from its command-line options, returning the frame and the render's wall time in
-/// seconds; what a [`Sweep`] calls for every point.
-pub type RenderFn = fn(&[String]) -> Result<(Frame, f64)>;
+/// A render and what it cost.
+pub struct Timed {
+    pub frame: Frame,
+    /// Wall time of the render itself (parsing and scene building excluded), in seconds.
+    pub seconds: f64,
+    /// Rays traced: camera, secondary and shadow rays (a cost that does not depend on the machine's load).
+    pub rays: u64,
+}
 
-/// Renders the example `E` with the options `args`, exactly as its binary would, and returns the frame
-/// together with the render's wall time in seconds (the render only: parsing and scene building excluded).
-pub fn render_timed<E: Example>(args: &[String]) -> Result<(Frame, f64)> {
+/// Renders an example from its command-line options; what a [`Sweep`] calls for every point.
+pub type RenderFn = fn(&[String]) -> Result<Timed>;
+
+/// Renders the example `E` with the options `args`, exactly as its binary would.
+pub fn render_timed<E: Example>(args: &[String]) -> Result<Timed> {
     let argv = std::iter::once(E::NAME.to_string()).chain(args.iter().cloned());
     let parsed = E::try_parse_from(argv).map_err(|e| {
         let message = e.to_string();
         Error::parameter("study options", args.join(" "), message.lines().next().unwrap_or_default())
     })?;
     let (frame, stats) = render_example(&parsed)?;
-    Ok((frame, stats.elapsed.as_secs_f64()))
+    Ok(Timed { frame, seconds: stats.elapsed.as_secs_f64(), rays: stats.counters.total() })
 }
 
 /// One curve of the study: an example, the options every point shares, and the values of the one
@@ -59,7 +66,13 @@ fn strings(args: &[&str]) -> Vec<String> {
 impl Sweep {
     /// A sweep of example `E`: `fixed` options for every render, `knob` taking each of `values`, and a
     /// reference rendered with `fixed` followed by `reference`.
-    pub fn new<E: Example>(label: &str, fixed: &[&str], knob: &'static str, values: &[u32], reference: &[&str]) -> Sweep {
+    pub fn new<E: Example>(
+        label: &str,
+        fixed: &[&str],
+        knob: &'static str,
+        values: &[u32],
+        reference: &[&str],
+    ) -> Sweep {
         Sweep {
             example: E::NAME,
             label: label.to_string(),
@@ -90,7 +103,7 @@ impl Sweep {
     pub fn reference_frame(&self, cache_dir: Option<&Path>) -> Result<Frame> {
         let args = self.reference_args();
         let Some(dir) = cache_dir else {
-            return (self.render)(&args).map(|(frame, _)| frame);
+            return (self.render)(&args).map(|timed| timed.frame);
         };
         let path = dir.join(format!("{}-{:016x}.exr", self.example, cache_key(self.example, &args)));
         if let Ok(img) = image::open(&path) {
@@ -98,7 +111,7 @@ impl Sweep {
             let pixels = img.pixels().map(|p| crate::Color::new(p[0], p[1], p[2])).collect();
             return Ok(Frame { width: img.width(), height: img.height(), pixels });
         }
-        let (frame, _) = (self.render)(&args)?;
+        let frame = (self.render)(&args)?.frame;
         frame.save(&path)?;
         Ok(frame)
     }
@@ -106,26 +119,31 @@ impl Sweep {
     /// Renders every point `repeats` times and measures it against `reference`. The time of a point is the
     /// median of its repeats (the machine may be busy with other work); the error is that of the first
     /// repeat (every repeat gives the same picture).
-    pub fn measure(&self, reference: &Frame, repeats: usize, metric: Option<PerceptualMetric>) -> Result<Vec<Measurement>> {
+    pub fn measure(
+        &self,
+        reference: &Frame,
+        repeats: usize,
+        metric: Option<PerceptualMetric>,
+    ) -> Result<Vec<Measurement>> {
         self.values
             .iter()
             .map(|&value| {
                 let args = self.point_args(value);
-                let mut times = Vec::with_capacity(repeats.max(1));
-                let mut first = None;
-                for _ in 0..repeats.max(1) {
-                    let (frame, seconds) = (self.render)(&args)?;
-                    times.push(seconds);
-                    first.get_or_insert(frame);
+                let first = (self.render)(&args)?;
+                let mut times = vec![first.seconds];
+                for _ in 1..repeats {
+                    times.push((self.render)(&args)?.seconds);
                 }
-                let frame = first.expect("at least one repeat");
                 times.sort_by(f64::total_cmp);
+                let frame = first.frame;
                 Ok(Measurement {
                     example: self.example,
                     label: self.label.clone(),
+                    reference: self.reference.join(" "),
                     knob: self.knob,
                     value,
                     seconds: times[times.len() / 2],
+                    rays: first.rays,
                     rmse: rmse_linear(&frame, reference)?,
                     perceptual: metric.map(|m| m(&frame, reference)),
                 })
@@ -178,10 +196,14 @@ pub fn output_dir() -> PathBuf {
 pub struct Measurement {
     pub example: &'static str,
     pub label: String,
+    /// The options that made the reference (measurements against different references do not compare).
+    pub reference: String,
     pub knob: &'static str,
     pub value: u32,
     /// Median wall time of the render, in seconds.
     pub seconds: f64,
+    /// Rays traced by the render.
+    pub rays: u64,
     /// RMSE of the linear values against the reference, over all channels.
     pub rmse: f64,
     /// The perceptual error (mean FLIP), when a metric was given.
@@ -198,8 +220,12 @@ pub fn rmse_linear(a: &Frame, b: &Frame) -> Result<f64> {
             format!("the reference is {}x{}", b.width, b.height),
         ));
     }
-    let sum: f64 =
-        a.pixels.iter().zip(&b.pixels).map(|(p, q)| (p.0 - q.0).to_array().iter().map(|&d| (d as f64).powi(2)).sum::<f64>()).sum();
+    let sum: f64 = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .map(|(p, q)| (p.0 - q.0).to_array().iter().map(|&d| (d as f64).powi(2)).sum::<f64>())
+        .sum();
     Ok((sum / (3 * a.pixels.len().max(1)) as f64).sqrt())
 }
 
@@ -212,14 +238,21 @@ pub fn mean_flip(test: &Frame, reference: &Frame) -> f64 {
     nv_flip::FlipPool::from_image(&map).mean() as f64
 }
 
-/// For each measurement, whether it is on the Pareto front of its example: no other measurement of the same
-/// example is both faster and more accurate (by RMSE).
+impl Measurement {
+    /// Whether two measurements can be compared: the same example against the same reference.
+    pub fn same_group(&self, other: &Measurement) -> bool {
+        self.example == other.example && self.reference == other.reference
+    }
+}
+
+/// For each measurement, whether it is on the Pareto front of its group (the same example against the same
+/// reference): no other measurement of the group is both faster and more accurate (by RMSE).
 pub fn pareto_front(measurements: &[Measurement]) -> Vec<bool> {
     measurements
         .iter()
         .map(|m| {
             !measurements.iter().any(|o| {
-                o.example == m.example
+                o.same_group(m)
                     && o.seconds <= m.seconds
                     && o.rmse <= m.rmse
                     && (o.seconds < m.seconds || o.rmse < m.rmse)
@@ -245,24 +278,30 @@ pub fn rmse_at_time(curve: &[Measurement], seconds: f64) -> Option<f64> {
     })
 }
 
-/// The measurements as a Markdown table, Pareto-optimal points marked.
+/// The measurements as Markdown tables, one per group (example and reference), Pareto-optimal points marked.
 pub fn markdown_table(measurements: &[Measurement]) -> String {
     let front = pareto_front(measurements);
-    let mut out = String::from(
-        "| example | curve | setting | time (s) | RMSE (linear) | mean FLIP | Pareto |\n|---|---|---|---:|---:|---:|:---:|\n",
-    );
-    for (m, on_front) in measurements.iter().zip(front) {
+    let mut out = String::new();
+    for (k, m) in measurements.iter().enumerate() {
+        if k == 0 || !m.same_group(&measurements[k - 1]) {
+            out += &format!(
+                "\n`{}` against the reference `{}`:\n\n\
+                 | curve | setting | time (s) | M rays | RMSE (linear) | mean FLIP | Pareto |\n\
+                 |---|---|---:|---:|---:|---:|:---:|\n",
+                m.example, m.reference
+            );
+        }
         let flip = m.perceptual.map_or("-".to_string(), |f| format!("{f:.4}"));
         out += &format!(
-            "| `{}` | {} | `{} {}` | {:.3} | {:.5} | {} | {} |\n",
-            m.example,
+            "| {} | `{} {}` | {:.3} | {:.2} | {:.5} | {} | {} |\n",
             m.label,
             m.knob,
             m.value,
             m.seconds,
+            m.rays as f64 * 1e-6,
             m.rmse,
             flip,
-            if on_front { "*" } else { "" }
+            if front[k] { "*" } else { "" }
         );
     }
     out

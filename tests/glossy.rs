@@ -3,9 +3,9 @@
 
 mod common;
 
+use clap::Parser;
 use lecture6::Color;
 use lecture6::camera::Camera;
-use clap::Parser;
 use lecture6::cli::Example;
 use lecture6::environment::Environment;
 use lecture6::geometry::Plane;
@@ -50,7 +50,9 @@ impl Environment for Recorder {
 
 #[test]
 fn no_glossy_ray_goes_under_the_surface() {
-    for (glossiness, sampler) in [(0.8, DiscSampler::Stratified), (0.3, DiscSampler::Random), (0.0, DiscSampler::Stratified)] {
+    for (glossiness, sampler) in
+        [(0.8, DiscSampler::Stratified), (0.3, DiscSampler::Random), (0.0, DiscSampler::Stratified)]
+    {
         // A glossy floor seen from just above it, every camera ray going down to it: a ray that reaches the
         // sky going down can only be a reflection that went under the floor.
         let recorder = Arc::new(Recorder(Mutex::new(Vec::new())));
@@ -135,7 +137,8 @@ fn the_mean_glossy_direction_is_the_mirror_direction() {
 fn secondary_glossy_bounces_trace_two_rays() {
     // A glossy floor under a glossy ceiling: every reflection off the floor (depth 1) hits the ceiling, which
     // must trace exactly SECONDARY_GLOSSY_SAMPLES rays for it, not num_samples.
-    let mut scene = Scene::new(Camera { position: Vector::new(0.0, 5.0, 0.0), pitch: -50.0, fov: 40.0, ..Camera::default() });
+    let mut scene =
+        Scene::new(Camera { position: Vector::new(0.0, 5.0, 0.0), pitch: -50.0, fov: 40.0, ..Camera::default() });
     for y in [0.0, 10.0] {
         let mirror = Reflection::glossy(Color::gray(0.9), 0.95, 16).unwrap();
         scene.add(Node::new(Arc::new(Plane::new(y, f32::INFINITY)), Arc::new(mirror)));

@@ -49,13 +49,25 @@ fn anti_aliasing_error_falls_with_the_sample_count() {
 }
 
 fn point(example: &'static str, seconds: f64, rmse: f64) -> Measurement {
-    Measurement { example, label: String::new(), knob: "--spp", value: 1, seconds, rmse, perceptual: None }
+    let reference = String::from("--spp 256");
+    Measurement {
+        example,
+        label: String::new(),
+        reference,
+        knob: "--spp",
+        value: 1,
+        seconds,
+        rmse,
+        rays: 0,
+        perceptual: None,
+    }
 }
 
 #[test]
-fn the_pareto_front_keeps_only_undominated_points() {
-    let m = [point("a", 1.0, 0.5), point("a", 2.0, 0.6), point("a", 3.0, 0.1), point("b", 9.0, 0.9)];
-    assert_eq!(pareto_front(&m), [true, false, true, true]);
+fn the_pareto_front_keeps_only_undominated_points_of_each_group() {
+    let other_reference = Measurement { reference: "--spp 1".into(), ..point("a", 0.5, 0.01) };
+    let m = [point("a", 1.0, 0.5), point("a", 2.0, 0.6), point("a", 3.0, 0.1), point("b", 9.0, 0.9), other_reference];
+    assert_eq!(pareto_front(&m), [true, false, true, true, true]);
 }
 
 #[test]
