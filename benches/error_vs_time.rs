@@ -179,6 +179,9 @@ fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
     out
 }
 
+/// One error of a measurement, as plotted.
+type Metric = fn(&Measurement) -> f64;
+
 /// Log-log charts of error against time: one column per group of comparable curves (an example against
 /// one reference), RMSE above and mean FLIP below, one line per curve.
 fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> {
@@ -200,7 +203,7 @@ fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> 
         let root = BitMapBackend::with_buffer(&mut buffer, (w, h)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| chart_error(&e))?;
         let panels = root.split_evenly((2, groups.len()));
-        let metrics: [(&str, fn(&Measurement) -> f64); 2] =
+        let metrics: [(&str, Metric); 2] =
             [("RMSE (linear)", |m| m.rmse), ("mean FLIP", |m| m.perceptual.unwrap_or(f64::NAN))];
         for (row, (name, metric)) in metrics.into_iter().enumerate() {
             for (col, group) in groups.iter().enumerate() {
