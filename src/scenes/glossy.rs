@@ -3,7 +3,7 @@
 //!
 //! - What they reflect: the floor, a red ball and a wooden box standing between them (near, so their
 //!   reflections show how the blur grows with distance from the mirror), a wall with a world map behind the
-//!   camera, and a pale sky.
+//!   camera, and the workbook's HDR sky with its clouds (`--env` puts any other environment there).
 //! - The blur comes from averaging `--glossy-samples` reflected rays per camera ray (the slide's
 //!   `num_samples`); below the first bounce the spheres trace 2 rays each, as in the course.
 //! - `--sampler random` picks the disc points as the slide does, independently; `stratified` (the default)
@@ -15,7 +15,7 @@
 use crate::camera::Camera;
 use crate::cli::{CommonArgs, Example};
 use crate::color::Color;
-use crate::environment::ConstantEnvironment;
+use crate::environment;
 use crate::error::Result;
 use crate::geometry::{Cube, Plane, Sphere};
 use crate::light::PointLight;
@@ -62,7 +62,7 @@ impl Example for Args {
             ..Camera::default()
         });
         scene.ambient = Color::gray(0.15);
-        scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.55, 0.7, 0.9))));
+        scene.environment = Some(environment::load(&super::texture_path("sky.hdr"))?);
         scene.lights.push(PointLight::new(Vector::new(-70.0, 150.0, -60.0), Color::WHITE, 42000.0));
 
         let floor = super::load_texture("floor_tiles.png", None, Default::default())?.with_scaling(30.0);
