@@ -4,15 +4,16 @@
 //! cargo bench --features study --bench error_vs_time
 //! ```
 //!
-//! Each curve sweeps one sample-count option of one example at 320 x 240 and measures the median wall time
-//! of 3 renders and the error against a converged reference (see `lecture6::study`). It writes
-//! `target/study/error_vs_time.md` (the table, the Pareto-optimal points, and the equal-time error ratio of
-//! the two glossy samplers) and `target/study/error_vs_time.png` (log-log charts of error versus time).
-//! References are cached in `target/study/` and rendered again whenever the program is rebuilt.
+//! Each curve sweeps one sample-count option of one example (at 320 x 240; dispersion, the slowest, at
+//! 160 x 120) and measures the median wall time of 3 renders and the error against a converged reference
+//! (see `lecture6::study`). It writes `target/study/error_vs_time.md` (the tables, the Pareto-optimal points,
+//! and the equal-time error ratio of the two glossy samplers) and `target/study/error_vs_time.png` (log-log
+//! charts of error versus time). References are cached in `target/study/` and rendered again whenever the
+//! program is rebuilt. The whole run takes about 4 minutes on 2 busy cores.
 //!
 //! To add an example, add its sweeps to `sweeps()`.
 
-use lecture6::scenes::{bitmap_textures, glossy};
+use lecture6::scenes::{bitmap_textures, dispersion, glossy};
 use lecture6::study::{self, Measurement, Sweep};
 use plotters::prelude::*;
 use std::fmt::Write as _;
@@ -28,6 +29,11 @@ const GLOSSY_REFERENCE: [&str; 8] = ["--spp", "64", "--glossy-samples", "64", "-
 /// error at all), 2048 glossy rays.
 const PIXEL_CENTRE_REFERENCE: [&str; 8] =
     ["--spp", "1", "--glossy-samples", "2048", "--sampler", "stratified", "--seed", "7"];
+
+/// The dispersion example's reference (at 160 x 120: dispersion is the slowest example): one wavelength per
+/// sample, 512 samples per pixel.
+const DISPERSION_REFERENCE: [&str; 6] = ["--spectral", "sampled", "--spp", "512", "--seed", "7"];
+const SMALL: [&str; 4] = ["--width", "160", "--height", "120"];
 
 fn with_size(extra: &[&'static str]) -> Vec<&'static str> {
     SIZE.iter().chain(extra).copied().collect()
@@ -66,6 +72,22 @@ fn sweeps() -> Vec<Sweep> {
         // Through the pixel centres only, so that the error is the glossy noise alone: the two samplers.
         glossy_samples("random", &["--spp", "1", "--sampler", "random"], &doubling, &PIXEL_CENTRE_REFERENCE),
         glossy_samples("stratified", &["--spp", "1", "--sampler", "stratified"], &doubling, &PIXEL_CENTRE_REFERENCE),
+        // Dispersion: the slide's 8 wavelength passes against one wavelength per sample (its own bench,
+        // `benches/dispersion.rs`, studies the methods in depth).
+        Sweep::new::<dispersion::Args>(
+            "8 passes",
+            &[&SMALL[..], &["--spectral", "passes"]].concat(),
+            "--spp",
+            &[1, 2, 4, 8],
+            &DISPERSION_REFERENCE,
+        ),
+        Sweep::new::<dispersion::Args>(
+            "spectral sampling",
+            &[&SMALL[..], &["--spectral", "sampled"]].concat(),
+            "--spp",
+            &[4, 8, 16, 32, 64],
+            &DISPERSION_REFERENCE,
+        ),
     ]
 }
 
@@ -104,8 +126,8 @@ fn main() {
     let all: Vec<Measurement> = curves.iter().flatten().cloned().collect();
     let mut report = String::from("# Run time versus error\n\n");
     report += &format!(
-        "320 x 240, median wall time of {REPEATS} renders on {} threads; `*` marks the Pareto front (RMSE against \
-         time) of each table.\n",
+        "Median wall time of {REPEATS} renders on {} threads; `*` marks the Pareto front (RMSE against time) of \
+         each table.\n",
         rayon::current_num_threads()
     );
     report += &study::markdown_table(&all);
@@ -216,7 +238,7 @@ fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> 
                     .filter(|v| v.is_finite() && *v > 0.0)
                     .fold((f64::MAX, 0f64), |(a, b), v| (a.min(v), b.max(v)));
                 let first = &group[0][0];
-                let caption = format!("{}, {name} against {}", first.example, first.reference);
+                let caption = format!("{}, {name} against {}", first.example, without_size(&first.reference));
                 let mut chart = ChartBuilder::on(panel)
                     .caption(caption, ("sans-serif", 11))
                     .margin(10)
@@ -233,7 +255,7 @@ fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> 
                     .y_labels(8)
                     .x_label_formatter(&|v| short(*v))
                     .y_label_formatter(&|v| short(*v))
-                    .x_desc("render time (s), 320 x 240")
+                    .x_desc(format!("render time (s), {}", size_of(first)))
                     .y_desc(name)
                     .label_style(("sans-serif", 12))
                     .draw()
@@ -270,4 +292,24 @@ fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> 
 fn short(v: f64) -> String {
     let digits = (1 - v.abs().log10().floor() as i32).max(0) as usize;
     format!("{v:.digits$}")
+}
+
+/// The picture size of a measurement, from its reference's options.
+fn size_of(m: &Measurement) -> String {
+    let option = |name: &str| m.reference.split(name).nth(1).and_then(|r| r.split_whitespace().next()).unwrap_or("?");
+    format!("{} x {}", option("--width"), option("--height"))
+}
+
+/// Options without the picture size.
+fn without_size(options: &str) -> String {
+    let mut words = options.split_whitespace();
+    let mut kept = Vec::new();
+    while let Some(word) = words.next() {
+        if word == "--width" || word == "--height" {
+            words.next();
+        } else {
+            kept.push(word);
+        }
+    }
+    kept.join(" ")
 }

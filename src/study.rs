@@ -128,6 +128,9 @@ impl Sweep {
         self.values
             .iter()
             .map(|&value| {
+                let mut reference_options = self.reference_args();
+                reference_options.retain(|a| a != "--quiet");
+                let reference_options = reference_options.join(" ");
                 let args = self.point_args(value);
                 let first = (self.render)(&args)?;
                 let mut times = vec![first.seconds];
@@ -139,7 +142,7 @@ impl Sweep {
                 Ok(Measurement {
                     example: self.example,
                     label: self.label.clone(),
-                    reference: self.reference.join(" "),
+                    reference: reference_options,
                     knob: self.knob,
                     value,
                     seconds: times[times.len() / 2],
@@ -196,7 +199,7 @@ pub fn output_dir() -> PathBuf {
 pub struct Measurement {
     pub example: &'static str,
     pub label: String,
-    /// The options that made the reference (measurements against different references do not compare).
+    /// All the options that made the reference (measurements against different references do not compare).
     pub reference: String,
     pub knob: &'static str,
     pub value: u32,
