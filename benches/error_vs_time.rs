@@ -159,13 +159,15 @@ fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
     let mut out = String::from(
         "\n## The slide's random disc points against stratified ones, at equal time\n\n\
          Pixel-centre curves (the glossy noise alone).\n\n\
-         | setting | time (s) | RMSE stratified | RMSE random, same setting | RMSE random at that time | ratio at equal time |\n\
-         |---|---:|---:|---:|---:|---:|\n",
+         | setting | time (s) | RMSE stratified | RMSE random, same setting (same rays) | ratio at equal rays | \
+         RMSE random at that time | ratio at equal time |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
     );
     // (log-ratio sum, count) over all points, and over those with 4 samples or more (one sample per
     // shading point cannot be stratified).
     let mut all = (0.0, 0);
     let mut stratifiable = (0.0, 0);
+    let mut equal_rays = (0.0, 0);
     for stratified in curves.iter().filter(|c| c[0].label == "stratified") {
         let Some(random) = curves.iter().find(|c| c[0].label == "random" && c[0].same_group(&stratified[0])) else {
             continue;
@@ -174,6 +176,9 @@ fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
         random_by_time.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
         for m in stratified {
             let same_setting = random.iter().find(|r| r.value == m.value).map_or(f64::NAN, |r| r.rmse);
+            if m.value >= 4 && same_setting.is_finite() {
+                equal_rays = (equal_rays.0 + (same_setting / m.rmse).ln(), equal_rays.1 + 1);
+            }
             if let Some(r) = study::rmse_at_time(&random_by_time, m.seconds) {
                 let ratio = r / m.rmse;
                 all = (all.0 + ratio.ln(), all.1 + 1);
@@ -182,18 +187,28 @@ fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
                 }
                 let _ = writeln!(
                     out,
-                    "| `{} {}` | {:.3} | {:.5} | {:.5} | {:.5} | {:.2} |",
-                    m.knob, m.value, m.seconds, m.rmse, same_setting, r, ratio
+                    "| `{} {}` | {:.3} | {:.5} | {:.5} | {:.2} | {:.5} | {:.2} |",
+                    m.knob,
+                    m.value,
+                    m.seconds,
+                    m.rmse,
+                    same_setting,
+                    same_setting / m.rmse,
+                    r,
+                    ratio
                 );
             }
         }
     }
-    for ((sum, count), which) in [(all, "all points"), (stratifiable, "points with 4 or more glossy samples")] {
+    for ((sum, count), which) in [
+        (all, "at equal time, over all points"),
+        (stratifiable, "at equal time, over the points with 4 or more glossy samples"),
+        (equal_rays, "at equal rays, over the points with 4 or more glossy samples"),
+    ] {
         if count > 0 {
             let _ = writeln!(
                 out,
-                "\nEqual-time error ratio (random RMSE / stratified RMSE), geometric mean over {which} \
-                 ({count}): **{:.2}**",
+                "\nError ratio (random RMSE / stratified RMSE) {which} ({count}), geometric mean: **{:.2}**",
                 (sum / count as f64).exp()
             );
         }
