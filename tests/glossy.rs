@@ -148,3 +148,13 @@ fn secondary_glossy_bounces_trace_two_rays() {
     assert_eq!(depth1, 16 * camera_rays, "the first bounce traces num_samples rays");
     assert_eq!(depth2, SECONDARY_GLOSSY_SAMPLES as u64 * depth1, "a secondary bounce traces 2 rays");
 }
+
+#[test]
+fn adaptive_depth_control_never_prunes_glossy_samples() {
+    // Each sample carries the mirror's full weight: were it given its 1/2048 share, the reflections of the
+    // spheres in each other (depth 1, weight below the finest sRGB step) would be pruned and turn black.
+    let args = ["--width", "40", "--height", "30", "--spp", "1", "--glossy-samples", "2048"];
+    let adaptive = common::render::<glossy::Args>(&args);
+    let exhaustive = common::render::<glossy::Args>(&[&args[..], &["--exhaustive"]].concat());
+    assert!(adaptive == exhaustive, "adaptive depth control changed the glossy picture");
+}

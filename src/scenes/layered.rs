@@ -25,7 +25,7 @@ use crate::light::PointLight;
 use crate::math::Vector;
 use crate::node::Node;
 use crate::scene::Scene;
-use crate::shader::{ColorSource, Lambert, Layered, Reflection, Refraction};
+use crate::shader::{Lambert, Layered, Reflection, Refraction};
 use crate::texture::{Fresnel, FresnelMode};
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -116,7 +116,7 @@ impl Example for Args {
 
         // Banded metal: a mirror whose reflection colour comes from a texture.
         let metals = super::load_texture("metals.png", None, Default::default())?;
-        let metal = Reflection { multiplier: ColorSource::from(metals) };
+        let metal = Reflection::mirror(metals);
         scene.add(Node::new(Arc::new(Sphere::new(Vector::new(38.0, 22.0, 15.0), 22.0)), Arc::new(metal)));
         Ok(scene)
     }

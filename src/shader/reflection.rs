@@ -21,8 +21,10 @@
 //!   with a low glossiness), the exact mirror ray is traced instead, so the surface never turns black;
 //! - the disc points may be stratified ([`DiscSampler::Stratified`], the default) rather than independent,
 //!   which gives the same picture with markedly less noise (see `benches/error_vs_time.rs` and the README);
-//! - each spawned ray's `weight` is the multiplier divided among the samples, so that adaptive depth control
-//!   sees how little one of them can change the pixel.
+//! - each spawned ray's `weight` is scaled by the full multiplier, not by its 1/N share of the average, as
+//!   every averaging shader does for adaptive depth control (`Scene::min_ray_weight`): pruning the samples
+//!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
+//!   samples would converge to a different picture.
 
 use super::{ColorSource, Shader};
 use crate::color::Color;
@@ -55,12 +57,12 @@ pub struct Reflection {
 impl Reflection {
     /// A perfect grey mirror reflecting the fraction `multiplier` of the light.
     pub fn new(multiplier: f32) -> Reflection {
-        Reflection {
-            multiplier: Color::gray(multiplier).into(),
-            glossiness: 1.0,
-            num_samples: 1,
-            sampler: DiscSampler::default(),
-        }
+        Reflection::mirror(Color::gray(multiplier))
+    }
+
+    /// A perfect mirror of colour `multiplier` (a colour or a texture).
+    pub fn mirror(multiplier: impl Into<ColorSource>) -> Reflection {
+        Reflection { multiplier: multiplier.into(), glossiness: 1.0, num_samples: 1, sampler: DiscSampler::default() }
     }
 
     /// A glossy mirror of colour `multiplier`, averaging `num_samples` rays per shading point. Fails on a
@@ -100,7 +102,7 @@ impl Shader for Reflection {
             if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
         let disc = DiscSamples::new(self.sampler, &mut ctx.rng);
-        let attenuation = multiplier.max_channel() / num_samples as f32;
+        let attenuation = multiplier.max_channel();
         let mut sum = Color::BLACK;
         let mut kept = 0u32;
         for i in 0..num_samples {
