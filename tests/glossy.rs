@@ -158,3 +158,40 @@ fn adaptive_depth_control_never_prunes_glossy_samples() {
     let exhaustive = common::render::<glossy::Args>(&[&args[..], &["--exhaustive"]].concat());
     assert!(adaptive == exhaustive, "adaptive depth control changed the glossy picture");
 }
+
+#[test]
+fn glossy_mirrors_scatter_photons_into_their_cone() {
+    use lecture6::geometry::IntersectionInfo;
+    use lecture6::photon_map::PhotonScatter;
+    use lecture6::ray::Ray;
+    use lecture6::shader::Shader;
+    let info = IntersectionInfo {
+        ip: Vector::ZERO,
+        normal: Vector::Y,
+        geometric_normal: Vector::Y,
+        distance: 1.0,
+        u: 0.0,
+        v: 0.0,
+        error: 0.0,
+    };
+    let ray = Ray::new(Vector::new(-1.0, 1.0, 0.0), Vector::new(1.0, -1.0, 0.0).normalize());
+    let mirror_dir = reflect(ray.dir, Vector::Y);
+    let mut rng = Rng::for_keys(&[5]);
+    let scatter = |shader: &Reflection, rng: &mut Rng| match shader.scatter_photon(&ray, &info, rng) {
+        PhotonScatter::Continue { dir, filter } => {
+            assert_eq!(filter, Color::gray(0.9));
+            assert!(dir.y > 0.0, "a photon went under the mirror");
+            dir
+        }
+        other => panic!("a mirror must pass photons on, not {other:?}"),
+    };
+    let perfect = Reflection::new(0.9);
+    assert_eq!(scatter(&perfect, &mut rng), mirror_dir);
+    let glossy = Reflection::glossy(Color::gray(0.9), 0.8, 16).unwrap();
+    let angles: Vec<f32> =
+        (0..1000).map(|_| scatter(&glossy, &mut rng).angle_between(mirror_dir).to_degrees()).collect();
+    // Tilting the normal by at most atan(tan(0.1 pi)) = 18 degrees turns the reflection by at most 36.
+    assert!(angles.iter().all(|&a| a <= 36.0 + 1e-3), "a photon left the cone");
+    let mean = angles.iter().sum::<f32>() / angles.len() as f32;
+    assert!(mean > 5.0, "glossy photons do not spread: mean {mean} degrees off the mirror");
+}
