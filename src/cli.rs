@@ -17,58 +17,61 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
 
+/// The help heading of the options every example shares (set on each option, so that an example's own
+/// options, listed after them, keep the plain "Options" heading).
+const COMMON: &str = "Common options";
+
 /// Options every example accepts.
 #[derive(clap::Args, Clone, Debug)]
-#[command(next_help_heading = "Common options")]
 pub struct CommonArgs {
     /// Image width in pixels.
-    #[arg(long, default_value_t = 640)]
+    #[arg(long, default_value_t = 640, help_heading = COMMON)]
     pub width: u32,
     /// Image height in pixels.
-    #[arg(long, default_value_t = 480)]
+    #[arg(long, default_value_t = 480, help_heading = COMMON)]
     pub height: u32,
     /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
     /// grid, any other count N-rooks stratification. [default: the example's own, see its --help text]
-    #[arg(long)]
+    #[arg(long, help_heading = COMMON)]
     pub spp: Option<u32>,
     /// Worker threads [default: all cores]. The picture is the same for any count.
-    #[arg(long)]
+    #[arg(long, help_heading = COMMON)]
     pub threads: Option<usize>,
     /// Maximum ray depth (the slides' MAX_RAY_DEPTH): deeper rays return black. [default: the scene's own]
-    #[arg(long)]
+    #[arg(long, help_heading = COMMON)]
     pub max_depth: Option<u32>,
     /// Trace every ray down to the maximum depth. By default a ray too weak to change its pixel by a whole
     /// 8-bit level (its weight, the product of the multipliers, blends and Fresnel factors along its path, is
     /// below the finest sRGB step) is not traced: adaptive ray-tree depth control.
-    #[arg(long)]
+    #[arg(long, help_heading = COMMON)]
     pub exhaustive: bool,
     /// Seed of every random choice; the same seed gives the same picture, byte for byte.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,
     /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
     /// [default: out/<example>.png]
-    #[arg(long, short)]
+    #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
     /// Print nothing but errors: no progress bar, no summary.
-    #[arg(long, short)]
+    #[arg(long, short, help_heading = COMMON)]
     pub quiet: bool,
     /// Compare the picture with a reference PNG: print RMSE, PSNR and the largest difference, and write a
     /// heat map of the difference next to the output (<output stem>-diff.png).
-    #[arg(long, value_name = "REFERENCE.png")]
+    #[arg(long, value_name = "REFERENCE.png", help_heading = COMMON)]
     pub compare: Option<PathBuf>,
     /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
     /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
     /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
-    #[arg(long, value_name = "FILE|FOLDER")]
+    #[arg(long, value_name = "FILE|FOLDER", help_heading = COMMON)]
     pub env: Option<PathBuf>,
     /// Wavelength passes K for scenes with dispersive materials (the slide's method): the frame is traced K
     /// times, once per band of the spectrum, and the passes are added with the bands' colours. Scenes
     /// without dispersive materials are traced once whatever K is.
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = 8, help_heading = COMMON)]
     pub wavelengths: u32,
     /// How scenes with dispersive materials are traced: `passes` (K wavelength passes, the slide's method)
     /// or `sampled` (one pass; every anti-aliasing sample carries its own band of the spectrum).
-    #[arg(long, value_enum, default_value_t = SpectralMode::Passes)]
+    #[arg(long, value_enum, default_value_t = SpectralMode::Passes, help_heading = COMMON)]
     pub spectral: SpectralMode,
     #[command(flatten)]
     pub photons: PhotonArgs,
