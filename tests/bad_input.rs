@@ -243,7 +243,9 @@ fn an_unwritable_output_is_one_line_naming_it() {
 
 #[test]
 fn impossible_common_values_are_rejected_for_every_example() {
-    for example in ["bitmap_textures", "dispersion", "model_transform"] {
+    for example in
+        ["bitmap_textures", "dispersion", "environment", "model_transform", "reflect_v01", "reflect_v02", "refract"]
+    {
         for (args, needle) in [
             (&["--spp", "0"][..], "samples per pixel 0"),
             (&["--width", "0"][..], "image size 0x12"),
@@ -273,5 +275,21 @@ fn impossible_glass_is_rejected() {
         (&["--glass", "opal"][..], "opal"),
     ] {
         rejected("dispersion", args, needle);
+    }
+}
+
+#[test]
+fn impossible_ior_multipliers_and_kinds_are_rejected() {
+    for (example, args, needle) in [
+        ("refract", &["--ior", "0"][..], "ior 0"),
+        ("refract", &["--ior=-1.5"][..], "ior -1.5"),
+        ("refract", &["--ior", "NaN"][..], "ior NaN"),
+        ("refract", &["--ior", "inf"][..], "ior inf"),
+        ("reflect_v01", &["--multiplier", "1.5"][..], "multiplier 1.5"),
+        ("reflect_v01", &["--multiplier=-0.2"][..], "multiplier -0.2"),
+        ("reflect_v02", &["--multiplier", "NaN"][..], "multiplier NaN"),
+        ("environment", &["--kind", "cylinder"][..], "cylinder"),
+    ] {
+        rejected(example, args, needle);
     }
 }

@@ -25,7 +25,7 @@ macro_rules! thread_count_independent {
     )*};
 }
 
-thread_count_independent!(bitmap_textures, dispersion, model_transform);
+thread_count_independent!(bitmap_textures, dispersion, environment, model_transform, reflect_v01, reflect_v02, refract,);
 
 #[test]
 fn different_seeds_give_different_anti_aliasing() {

@@ -11,11 +11,12 @@
 //! coordinates far from the origin cause stays under it.
 //!
 //! Scales from 1e-4 to 1e5 hold for every example. How far a scene can be moved depends on its finest
-//! detail: f32 coordinates near an offset t are t * 6e-8 apart, so a texel or a lamp's edge seen through a
-//! glass sphere moves once that spacing reaches a fraction of it. Each example's case list says the offset
-//! its picture survives (measured, see the README's figures): 1e6 for `bitmap_textures`, 1e4 for
-//! `model_transform` (its wood and planet textures are finer), 1e3 for `dispersion` (its sphere magnifies
-//! the lamps' edges).
+//! detail: f32 coordinates near an offset t are t * 6e-8 apart, and world-space hit points carry that
+//! error, so a texel, a shadow's edge or a lamp seen through glass moves once the spacing reaches a fraction
+//! of it. Each example's case list says the offset its picture survives (measured, see the README): 1e6 for
+//! `bitmap_textures`, 1e5 for `environment`, `reflect_v01`, `reflect_v02` and `refract`, 1e4 for
+//! `model_transform` (its wood and planet textures are finer), 1e3 for `dispersion` (its glass sphere
+//! magnifies the lamps' edges).
 
 mod common;
 
@@ -94,5 +95,9 @@ survives_scaling_and_translation!(
     bitmap_textures: 1e6, no_lengths;
     // The slit and the lamps are in the environment, which depends on directions only.
     dispersion: 1e3, no_lengths;
+    environment: 1e5, no_lengths;
     model_transform: 1e4, no_lengths;
+    reflect_v01: 1e5, no_lengths;
+    reflect_v02: 1e5, no_lengths;
+    refract: 1e5, no_lengths;
 );
