@@ -185,6 +185,7 @@ fn bad_texture_files_are_one_line_naming_the_file() {
         file("huge.png", &png_header(100_000, 100_000)),
     ] {
         rejected("bitmap_textures", &["--texture", &path], &path);
+        rejected("layered", &["--mask", &path], &path);
     }
 }
 
@@ -243,9 +244,17 @@ fn an_unwritable_output_is_one_line_naming_it() {
 
 #[test]
 fn impossible_common_values_are_rejected_for_every_example() {
-    for example in
-        ["bitmap_textures", "dispersion", "environment", "model_transform", "reflect_v01", "reflect_v02", "refract"]
-    {
+    for example in [
+        "bitmap_textures",
+        "dispersion",
+        "environment",
+        "fresnel",
+        "layered",
+        "model_transform",
+        "reflect_v01",
+        "reflect_v02",
+        "refract",
+    ] {
         for (args, needle) in [
             (&["--spp", "0"][..], "samples per pixel 0"),
             (&["--width", "0"][..], "image size 0x12"),
@@ -289,6 +298,13 @@ fn impossible_ior_multipliers_and_kinds_are_rejected() {
         ("reflect_v01", &["--multiplier=-0.2"][..], "multiplier -0.2"),
         ("reflect_v02", &["--multiplier", "NaN"][..], "multiplier NaN"),
         ("environment", &["--kind", "cylinder"][..], "cylinder"),
+        ("fresnel", &["--ior", "0"][..], "ior 0"),
+        ("fresnel", &["--ior=-1.33"][..], "ior -1.33"),
+        ("fresnel", &["--ior", "NaN"][..], "ior NaN"),
+        ("fresnel", &["--fresnel", "approximate"][..], "approximate"),
+        ("layered", &["--lacquer", "1.5"][..], "lacquer 1.5"),
+        ("layered", &["--lacquer=-0.5"][..], "lacquer -0.5"),
+        ("layered", &["--lacquer", "NaN"][..], "lacquer NaN"),
     ] {
         rejected(example, args, needle);
     }
