@@ -13,10 +13,10 @@
 //! Scales from 1e-4 to 1e5 hold for every example. How far a scene can be moved depends on its finest
 //! detail: f32 coordinates near an offset t are t * 6e-8 apart, and world-space hit points carry that
 //! error, so a texel, a shadow's edge or a lamp seen through glass moves once the spacing reaches a fraction
-//! of it. Each example's case list says the offset its picture survives (measured, see the README): 1e6 for
-//! `bitmap_textures`, 1e5 for `environment`, `fresnel`, `layered`, `reflect_v01`, `reflect_v02` and `refract`, 1e4 for
-//! `model_transform` (its wood and planet textures are finer), 1e3 for `dispersion` (its glass sphere
-//! magnifies the lamps' edges).
+//! of it. Each example's case list says the offset its picture survives (measured, see the README): 1e6
+//! for `bitmap_textures`; 1e5 for `environment`, `fresnel`, `layered`, `reflect_v01`, `reflect_v02` and
+//! `refract`; 1e4 for `model_transform` (its wood and planet textures are finer); 1e3 for `dispersion` (its
+//! glass sphere magnifies the lamps' edges).
 
 mod common;
 
