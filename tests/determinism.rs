@@ -25,7 +25,17 @@ macro_rules! thread_count_independent {
     )*};
 }
 
-thread_count_independent!(bitmap_textures, dispersion, environment, model_transform, reflect_v01, reflect_v02, refract,);
+thread_count_independent!(
+    bitmap_textures,
+    dispersion,
+    environment,
+    fresnel,
+    layered,
+    model_transform,
+    reflect_v01,
+    reflect_v02,
+    refract
+);
 
 #[test]
 fn different_seeds_give_different_anti_aliasing() {
