@@ -251,6 +251,7 @@ fn impossible_common_values_are_rejected_for_every_example() {
         "fresnel",
         "layered",
         "model_transform",
+        "photon_map",
         "reflect_v01",
         "reflect_v02",
         "refract",
@@ -305,6 +306,15 @@ fn impossible_ior_multipliers_and_kinds_are_rejected() {
         ("layered", &["--lacquer", "1.5"][..], "lacquer 1.5"),
         ("layered", &["--lacquer=-0.5"][..], "lacquer -0.5"),
         ("layered", &["--lacquer", "NaN"][..], "lacquer NaN"),
+        ("photon_map", &["--ior", "0"][..], "n_d 0"),
+        ("photon_map", &["--ior=-1.5"][..], "n_d -1.5"),
+        ("photon_map", &["--abbe", "0"][..], "V_d 0"),
+        ("photon_map", &["--radius", "0"][..], "photon radius 0"),
+        ("photon_map", &["--radius=-2"][..], "photon radius -2"),
+        ("photon_map", &["--radius", "NaN"][..], "photon radius NaN"),
+        ("photon_map", &["--k", "0"][..], "photon k 0"),
+        ("photon_map", &["--photons", "4000000000"][..], "photon count 4000000000"),
+        ("bitmap_textures", &["--radius", "inf"][..], "photon radius inf"),
     ] {
         rejected(example, args, needle);
     }

@@ -32,6 +32,7 @@ thread_count_independent!(
     fresnel,
     layered,
     model_transform,
+    photon_map,
     reflect_v01,
     reflect_v02,
     refract

@@ -14,17 +14,22 @@
 //! detail: f32 coordinates near an offset t are t * 6e-8 apart, and world-space hit points carry that
 //! error, so a texel, a shadow's edge or a lamp seen through glass moves once the spacing reaches a fraction
 //! of it. Each example's case list says the offset its picture survives (measured, see the README): 1e6
-//! for `bitmap_textures`; 1e5 for `environment`, `fresnel`, `layered`, `reflect_v01`, `reflect_v02` and
-//! `refract`; 1e4 for `model_transform` (its wood and planet textures are finer); 1e3 for `dispersion` (its
-//! glass sphere magnifies the lamps' edges).
+//! for `bitmap_textures`; 1e5 for `environment`, `fresnel`, `layered`, `photon_map`, `reflect_v01`,
+//! `reflect_v02` and `refract`; 1e4 for `model_transform` (its wood and planet textures are finer); 1e3 for
+//! `dispersion` (its glass sphere magnifies the lamps' edges).
+//!
+//! The photon map is built for each transformed scene, as the examples build it, and its gathering radius
+//! (a length) is scaled with the scene; without that, scale 100 changes 731 of the 19200 pixels.
 
 mod common;
 
 use lecture6::cli::Example;
 use lecture6::compare::{difference, heat_map};
 use lecture6::math::Vector;
+use lecture6::photon_map::PhotonMap;
 use lecture6::render::{RenderSettings, render};
 use lecture6::scene::Scene;
+use std::sync::Arc;
 
 /// The scene scaled by `s` about the origin, then moved by `offset`.
 fn transformed(scene: &Scene, s: f32, offset: Vector) -> Scene {
@@ -40,9 +45,12 @@ fn transformed(scene: &Scene, s: f32, offset: Vector) -> Scene {
     out
 }
 
+/// The scene's picture, with its caustic photon map built for the scene as it is now (as the examples do).
 fn picture(scene: &Scene) -> image::RgbImage {
     let settings = RenderSettings { width: 160, height: 120, spp: 1, ..RenderSettings::default() };
-    let (frame, _) = render(scene, &settings).expect("render");
+    let mut scene = scene.clone();
+    scene.photon_map = PhotonMap::build(&scene, settings.seed).expect("photon map").map(Arc::new);
+    let (frame, _) = render(&scene, &settings).expect("render");
     assert!(frame.pixels.iter().all(|c| c.is_finite()), "NaN or infinity in the frame");
     frame.to_rgb8()
 }
@@ -82,6 +90,11 @@ fn check_scales_and_offsets<E: Example>(far: f32, adjust: impl Fn(&mut Scene, f3
 /// A scene whose options hold no lengths: the node transforms, camera and lights are all there is to scale.
 fn no_lengths(_: &mut Scene, _: f32) {}
 
+/// The photon map's gathering radius is a length: it scales with the scene (its k stays).
+fn photon_radius(scene: &mut Scene, s: f32) {
+    scene.photons.max_radius = scene.photons.max_radius.map(|r| r * s);
+}
+
 macro_rules! survives_scaling_and_translation {
     ($($name:ident: $far:expr, $adjust:expr);* $(;)?) => {$(
         #[test]
@@ -99,6 +112,7 @@ survives_scaling_and_translation!(
     fresnel: 1e5, no_lengths;
     layered: 1e5, no_lengths;
     model_transform: 1e4, no_lengths;
+    photon_map: 1e5, photon_radius;
     reflect_v01: 1e5, no_lengths;
     reflect_v02: 1e5, no_lengths;
     refract: 1e5, no_lengths;
