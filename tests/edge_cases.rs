@@ -1,6 +1,7 @@
 //! The numeric edge cases of the geometry and the shaders, one by one: grazing rays on planes, rays along a
 //! sphere's tangents, rays through a cube's edges and corners, refraction one ulp either side of the
-//! critical angle, touching and nested dielectrics, and slivers and zero-area triangles in an OBJ file.
+//! critical angle, touching and nested dielectrics, slivers and zero-area triangles in an OBJ file, and
+//! mesh hits for directions of any length.
 
 mod common;
 
@@ -268,4 +269,30 @@ fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
         "1",
     ]);
     assert!(frame.pixels.iter().all(|c| c.is_finite()), "NaN in the frame");
+}
+
+/// A node's transform hands its geometry rays whose direction is not of unit length (1/s for a node scaled
+/// by s). The watertight triangle test once inflated its error bounds with that length until it rejected
+/// every hit of a teapot scaled by 1e4; the hit must not depend on the direction's length.
+#[test]
+fn a_mesh_hit_does_not_depend_on_the_length_of_the_direction() {
+    let mesh = Mesh::load(&lecture6::scenes::texture_path("teapot.obj")).unwrap();
+    let mut hits = 0;
+    for k in 0..200 {
+        let a = k as f32 * 0.31;
+        let start = Vector::new(8.0 * a.cos(), 1.5 + 3.0 * (a * 0.7).sin(), 8.0 * a.sin());
+        let target = Vector::new(0.5 * (a * 1.3).sin(), 1.5 + (a * 0.9).cos(), 0.5 * (a * 1.7).cos());
+        let dir = (target - start).normalize();
+        let unit = mesh.intersect(&Ray::new(start, dir), f32::INFINITY).map(|h| h.distance);
+        for length in [1e-6f32, 1e-4, 1e-2, 1e2, 1e4, 1e6] {
+            let scaled = mesh.intersect(&Ray::new(start, dir * length), f32::INFINITY).map(|h| h.distance * length);
+            match (unit, scaled) {
+                (Some(t), Some(u)) => assert!((t - u).abs() <= 1e-4 * t, "length {length}: {t} against {u}"),
+                (None, None) => {}
+                _ => panic!("length {length}: {unit:?} against {scaled:?} from {start} towards {target}"),
+            }
+        }
+        hits += unit.is_some() as u32;
+    }
+    assert!(hits > 100, "only {hits} of 200 rays aimed at the teapot hit it");
 }
