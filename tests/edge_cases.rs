@@ -296,3 +296,38 @@ fn a_mesh_hit_does_not_depend_on_the_length_of_the_direction() {
     }
     assert!(hits > 100, "only {hits} of 200 rays aimed at the teapot hit it");
 }
+
+/// The same for every canonical shape: the plane, the sphere, the cube and the prism hit the same point for
+/// directions of length 1e-6 to 1e6.
+#[test]
+fn every_shape_hits_the_same_point_whatever_the_length_of_the_direction() {
+    use lecture6::geometry::Prism;
+    let shapes: [(&str, Box<dyn Geometry>); 4] = [
+        ("plane", Box::new(Plane::new(0.0, 3.0))),
+        ("sphere", Box::new(Sphere::new(Vector::ZERO, 1.0))),
+        ("cube", Box::new(Cube::new(Vector::ZERO, 1.0))),
+        ("prism", Box::new(Prism::new(60.0, 1.0, 1.0))),
+    ];
+    for (name, shape) in &shapes {
+        let mut hits = 0;
+        for k in 0..300 {
+            let a = k as f32 * 0.37;
+            let start = Vector::new(4.0 * a.cos(), 3.0 * (a * 0.6).sin() + 0.5, 4.0 * a.sin());
+            let target = Vector::new(0.8 * (a * 1.3).sin(), 0.8 * (a * 0.9).cos(), 0.8 * (a * 1.7).cos());
+            let dir = (target - start).normalize();
+            let unit = shape.intersect(&Ray::new(start, dir), f32::INFINITY).map(|h| (h.distance, h.ip));
+            for length in [1e-6f32, 1e-3, 1e3, 1e6] {
+                let scaled = shape.intersect(&Ray::new(start, dir * length), f32::INFINITY);
+                match (unit, scaled) {
+                    (Some((_, p)), Some(h)) => {
+                        assert!((h.ip - p).length() <= 1e-4, "{name}, length {length}: {} against {p}", h.ip)
+                    }
+                    (None, None) => {}
+                    _ => panic!("{name}, length {length}: {unit:?} against {scaled:?}"),
+                }
+            }
+            hits += unit.is_some() as u32;
+        }
+        assert!(hits > 50, "{name}: only {hits} of 300 rays hit");
+    }
+}
