@@ -30,6 +30,7 @@ thread_count_independent!(
     dispersion,
     environment,
     fresnel,
+    glossy,
     layered,
     model_transform,
     photon_map,

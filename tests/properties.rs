@@ -67,8 +67,9 @@ fn tetrahedron() -> Mesh {
 }
 
 /// A scene with every shader: a Fresnel glass holding a second glass (nested dielectrics), a mirror box
-/// touching the floor, a Phong sphere, a checkered Lambert floor, and a transformed (non-uniformly scaled)
-/// glass ellipsoid, and a turned prism of dispersive flint glass.
+/// touching the floor, a glossy sphere resting on it and a fully rough one (glossiness 0), a Phong sphere, a
+/// checkered Lambert floor, a transformed (non-uniformly scaled) glass ellipsoid, and a turned prism of
+/// dispersive flint glass.
 fn all_shaders_scene() -> Scene {
     let mut scene = Scene::new(Camera::default());
     scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.8, 0.9, 1.0))));
@@ -88,6 +89,14 @@ fn all_shaders_scene() -> Scene {
         .add(Node::new(Arc::new(Sphere::new(Vector::new(0.0, 10.0, 20.0), 10.0)), glass.clone()))
         .add(Node::new(Arc::new(Sphere::new(Vector::new(0.0, 10.0, 20.0), 5.0)), Arc::new(Refraction::new(2.4, 0.9))))
         .add(Node::new(Arc::new(Cube::new(Vector::new(25.0, 5.0, 20.0), 5.0)), Arc::new(Reflection::new(0.9))))
+        .add(Node::new(
+            Arc::new(Sphere::new(Vector::new(25.0, 16.0, 20.0), 6.0)),
+            Arc::new(Reflection::glossy(Color::gray(0.9), 0.7, 3).expect("valid glossiness")),
+        ))
+        .add(Node::new(
+            Arc::new(Sphere::new(Vector::new(-25.0, 22.0, 20.0), 4.0)),
+            Arc::new(Reflection::glossy(Color::gray(0.8), 0.0, 2).expect("valid glossiness")),
+        ))
         .add(Node::new(
             Arc::new(Sphere::new(Vector::new(-25.0, 8.0, 20.0), 8.0)),
             Arc::new(Phong::new(Color::new(0.8, 0.2, 0.2), 0.5, 30.0)),

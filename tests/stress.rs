@@ -14,8 +14,8 @@
 //! detail: f32 coordinates near an offset t are t * 6e-8 apart, and world-space hit points carry that
 //! error, so a texel, a shadow's edge or a lamp seen through glass moves once the spacing reaches a fraction
 //! of it. Each example's case list says the offset its picture survives (measured, see the README): 1e6
-//! for `bitmap_textures`; 1e5 for `environment`, `fresnel`, `layered`, `photon_map`, `reflect_v01`,
-//! `reflect_v02` and `refract`; 1e4 for `model_transform` (its wood and planet textures are finer); 1e3 for
+//! for `bitmap_textures`; 1e5 for `environment`, `fresnel`, `glossy`, `layered`, `photon_map`,
+//! `reflect_v01`, `reflect_v02` and `refract`; 1e4 for `model_transform` (its wood and planet textures are finer); 1e3 for
 //! `dispersion` (its glass sphere magnifies the lamps' edges).
 //!
 //! The photon map is built for each transformed scene, as the examples build it, and its gathering radius
@@ -110,6 +110,7 @@ survives_scaling_and_translation!(
     dispersion: 1e3, no_lengths;
     environment: 1e5, no_lengths;
     fresnel: 1e5, no_lengths;
+    glossy: 1e5, no_lengths;
     layered: 1e5, no_lengths;
     model_transform: 1e4, no_lengths;
     photon_map: 1e5, photon_radius;
