@@ -3,7 +3,7 @@
 //! and print one summary line. The regression tests go through [`render_example`], the same path.
 //!
 //! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
-//! unknown options), never a panic.
+//! unknown options, whose message is put on one line too), never a panic.
 
 use crate::compare;
 use crate::environment;
@@ -141,7 +141,15 @@ pub fn output_path<E: Example>(args: &E) -> PathBuf {
 
 /// Runs an example end to end; the whole `main` of every example.
 pub fn main<E: Example>() -> ExitCode {
-    let args = E::parse();
+    let args = match E::try_parse() {
+        Ok(args) => args,
+        // --help and --version print to stdout and succeed.
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            eprintln!("{}: {}", E::NAME, one_line(&e.to_string()));
+            return ExitCode::from(2);
+        }
+    };
     match run(&args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -149,6 +157,12 @@ pub fn main<E: Example>() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// A clap error message on one line: its lines joined, without the usage and the pointer to --help.
+fn one_line(message: &str) -> String {
+    let keep = |l: &&str| !(l.is_empty() || l.starts_with("Usage:") || l.starts_with("For more information"));
+    message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
 }
 
 fn run<E: Example>(args: &E) -> Result<()> {

@@ -1,5 +1,6 @@
-//! Property tests: random rays, including degenerate ones, through every geometry and shader. Whatever the
-//! ray, nothing panics, every hit is finite and every colour finite and non-negative.
+//! Property tests: random rays, including degenerate ones, through every geometry and shader (and the caustic
+//! photon map's estimate). Whatever the ray, nothing panics, every hit is finite and every colour finite and
+//! non-negative.
 
 use lecture6::Color;
 use lecture6::camera::Camera;
@@ -8,6 +9,7 @@ use lecture6::geometry::{Cube, Geometry, Mesh, Plane, Prism, Sphere};
 use lecture6::light::PointLight;
 use lecture6::math::Vector;
 use lecture6::node::Node;
+use lecture6::photon_map::{PhotonMap, PhotonSettings};
 use lecture6::ray::Ray;
 use lecture6::rng::Rng;
 use lecture6::scene::{Scene, TraceContext};
@@ -15,7 +17,7 @@ use lecture6::shader::{Lambert, Layered, Phong, Reflection, Refraction, Shader};
 use lecture6::spectral::Ior;
 use lecture6::texture::{CheckerTexture, Fresnel, FresnelMode};
 use proptest::prelude::*;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Coordinates from tiny to huge, both signs, and exact zeros.
 fn coordinate() -> impl Strategy<Value = f32> {
@@ -65,8 +67,9 @@ fn tetrahedron() -> Mesh {
 }
 
 /// A scene with every shader: a Fresnel glass holding a second glass (nested dielectrics), a mirror box
-/// touching the floor, a Phong sphere, a checkered Lambert floor, and a transformed (non-uniformly scaled)
-/// glass ellipsoid, and a turned prism of dispersive flint glass.
+/// touching the floor, a glossy sphere resting on it and a fully rough one (glossiness 0), a Phong sphere, a
+/// checkered Lambert floor, a transformed (non-uniformly scaled) glass ellipsoid, and a turned prism of
+/// dispersive flint glass.
 fn all_shaders_scene() -> Scene {
     let mut scene = Scene::new(Camera::default());
     scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.8, 0.9, 1.0))));
@@ -87,6 +90,14 @@ fn all_shaders_scene() -> Scene {
         .add(Node::new(Arc::new(Sphere::new(Vector::new(0.0, 10.0, 20.0), 5.0)), Arc::new(Refraction::new(2.4, 0.9))))
         .add(Node::new(Arc::new(Cube::new(Vector::new(25.0, 5.0, 20.0), 5.0)), Arc::new(Reflection::new(0.9))))
         .add(Node::new(
+            Arc::new(Sphere::new(Vector::new(25.0, 16.0, 20.0), 6.0)),
+            Arc::new(Reflection::glossy(Color::gray(0.9), 0.7, 3).expect("valid glossiness")),
+        ))
+        .add(Node::new(
+            Arc::new(Sphere::new(Vector::new(-25.0, 22.0, 20.0), 4.0)),
+            Arc::new(Reflection::glossy(Color::gray(0.8), 0.0, 2).expect("valid glossiness")),
+        ))
+        .add(Node::new(
             Arc::new(Sphere::new(Vector::new(-25.0, 8.0, 20.0), 8.0)),
             Arc::new(Phong::new(Color::new(0.8, 0.2, 0.2), 0.5, 30.0)),
         ))
@@ -102,6 +113,19 @@ fn all_shaders_scene() -> Scene {
                 .translate(Vector::new(-10.0, 4.0, -5.0)),
         );
     scene
+}
+
+/// The all-shaders scene with a caustic photon map (built once; its glass and mirrors are the casters), so
+/// that the photon estimate in Lambert and Phong is shaded too.
+fn scene_with_caustics() -> &'static Scene {
+    static SCENE: OnceLock<Scene> = OnceLock::new();
+    SCENE.get_or_init(|| {
+        let mut scene = all_shaders_scene();
+        scene.photons = PhotonSettings { count: 20_000, k: 20, max_radius: None, show: false };
+        let map = PhotonMap::build(&scene, 7).expect("photon map").expect("the scene has caustic casters");
+        scene.photon_map = Some(Arc::new(map));
+        scene
+    })
 }
 
 proptest! {
@@ -129,8 +153,8 @@ proptest! {
         seed in any::<u64>(),
         wavelength in prop::option::of(400.0f32..700.0),
     ) {
-        let scene = all_shaders_scene();
-        let mut ctx = TraceContext::new(&scene, Rng::for_keys(&[seed]));
+        let scene = scene_with_caustics();
+        let mut ctx = TraceContext::new(scene, Rng::for_keys(&[seed]));
         let c = ctx.raytrace(&Ray { wavelength, ..Ray::new(start, dir) });
         prop_assert!(c.is_finite() && c.0.min_element() >= 0.0, "{c:?}");
     }

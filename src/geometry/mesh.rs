@@ -53,6 +53,8 @@ pub struct ShearedRay {
     start: Vector,
     /// v -> (v[kx] - sx v[kz], v[ky] - sy v[kz], v[kz] / dir[kz]) for v relative to `start`.
     shear: Mat3A,
+    /// |dir[kz]|: turns the sheared z (in units of the ray parameter) back into lengths, for the error bounds.
+    z_length: f32,
 }
 
 impl ShearedRay {
@@ -76,7 +78,7 @@ impl ShearedRay {
         cols[kx] = Vector::X;
         cols[ky] = Vector::Y;
         cols[kz] = Vector::new(-sx, -sy, sz);
-        ShearedRay { start: ray.start, shear: Mat3A::from_cols(cols[0], cols[1], cols[2]) }
+        ShearedRay { start: ray.start, shear: Mat3A::from_cols(cols[0], cols[1], cols[2]), z_length: d[kz].abs() }
     }
 
     /// The watertight test: the ray parameter in (0, `t_max`) and the barycentric coordinates of the hit.
@@ -107,8 +109,12 @@ impl ShearedRay {
         let max_x = a.x.abs().max(b.x.abs()).max(c.x.abs());
         let max_y = a.y.abs().max(b.y.abs()).max(c.y.abs());
         let delta_z = gamma(3) * max_z;
-        let delta_x = gamma(5) * (max_x + max_z);
-        let delta_y = gamma(5) * (max_y + max_z);
+        // The shear's rounding in x and y scales with the lengths involved, so z enters as a length, not in
+        // units of the ray parameter: a direction that is not of unit length (a ray brought into the
+        // canonical space of a node scaled by 1e4) must not inflate these bounds until every hit is rejected.
+        let max_z_length = max_z * self.z_length;
+        let delta_x = gamma(5) * (max_x + max_z_length);
+        let delta_y = gamma(5) * (max_y + max_z_length);
         let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
         let max_e = e0.abs().max(e1.abs()).max(e2.abs());
         let delta_t = 3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
