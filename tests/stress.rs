@@ -6,17 +6,20 @@
 //! gives the same irradiance. Pictures are 160 x 120 at one sample per pixel, so a change anywhere is not
 //! averaged away.
 //!
-//! Rule: at most 0.5% of the pixels may differ by more than 8 levels. Acne (a surface shadowing itself) or
-//! a light leak changes whole regions, far more than that; the last-ulp movement of silhouettes that f32
-//! coordinates far from the origin cause stays under it.
+//! Rules, each allowing at most 0.5% of the pixels (96 of 19200) to change:
+//! - scaled at the origin, a pixel changes when it differs by more than 8 levels in some channel: the
+//!   picture must stay the same (measured: at most 1 pixel for every example and scale);
+//! - moved far from the origin, a pixel changes when it differs by more than 8 levels from every pixel
+//!   of the 3 x 3 neighbourhood around it in the canonical picture. f32 coordinates near an offset t are
+//!   t * 6e-8 apart, so positions, hit points and ray offsets there are rounded by that much, and edges
+//!   (silhouettes, texels, shadows, things seen through glass) may move by about a pixel; acne or a light
+//!   leak changes whole surfaces and still counts (with the ray offsets switched off, 219 to 5497 pixels).
 //!
-//! Scales from 1e-4 to 1e5 hold for every example. How far a scene can be moved depends on its finest
-//! detail: f32 coordinates near an offset t are t * 6e-8 apart, and world-space hit points carry that
-//! error, so a texel, a shadow's edge or a lamp seen through glass moves once the spacing reaches a fraction
-//! of it. Each example's case list says the offset its picture survives (measured, see the README): 1e6
-//! for `bitmap_textures`; 1e5 for `environment`, `fresnel`, `glossy`, `layered`, `photon_map`,
-//! `reflect_v01`, `reflect_v02` and `refract`; 1e4 for `model_transform` (its wood and planet textures are finer); 1e3 for
-//! `dispersion` (its glass sphere magnifies the lamps' edges).
+//! Scales from 1e-4 to 1e5 hold for every example. How far a scene can be moved depends on how much it
+//! magnifies those roundings: 1e6 for `bitmap_textures`, `environment`, `photon_map`, `reflect_v01`,
+//! `reflect_v02` and `refract`; 1e5 for `fresnel`, `glossy`, `layered` and `model_transform` (glass and
+//! glossy mirrors magnify the moved edges: 153 to 317 pixels at 1e6); 1e4 for `dispersion` (its sphere
+//! magnifies the lamps' edges: 900 pixels at 1e6). The README lists the figures.
 //!
 //! The photon map is built for each transformed scene, as the examples build it, and its gathering radius
 //! (a length) is scaled with the scene; without that, scale 100 changes 731 of the 19200 pixels.
@@ -24,7 +27,7 @@
 mod common;
 
 use lecture6::cli::Example;
-use lecture6::compare::{difference, heat_map};
+use lecture6::compare::{Difference, difference, heat_map};
 use lecture6::math::Vector;
 use lecture6::photon_map::PhotonMap;
 use lecture6::render::{RenderSettings, render};
@@ -55,6 +58,25 @@ fn picture(scene: &Scene) -> image::RgbImage {
     frame.to_rgb8()
 }
 
+/// How many pixels of `actual` differ by more than `Difference::LARGE` levels in some channel from every
+/// pixel of the 3 x 3 neighbourhood around the same place in `reference`: a picture whose edges moved by
+/// up to a pixel (f32 positions far from the origin are rounded to a grid) counts nothing, while acne or a
+/// light leak, which change the colour of whole surfaces, counts every pixel it touches.
+fn pixels_not_found_nearby(actual: &image::RgbImage, reference: &image::RgbImage) -> usize {
+    let (w, h) = reference.dimensions();
+    let mut count = 0;
+    for (x, y, p) in actual.enumerate_pixels() {
+        let found = (y.saturating_sub(1)..=(y + 1).min(h - 1)).any(|ny| {
+            (x.saturating_sub(1)..=(x + 1).min(w - 1)).any(|nx| {
+                let q = reference.get_pixel(nx, ny);
+                (0..3).all(|c| p[c].abs_diff(q[c]) <= Difference::LARGE)
+            })
+        });
+        count += !found as usize;
+    }
+    count
+}
+
 /// The scales every example goes through, at the origin.
 const SCALES: [f32; 4] = [1e-4, 1e-2, 1e2, 1e5];
 
@@ -74,8 +96,10 @@ fn check_scales_and_offsets<E: Example>(far: f32, adjust: impl Fn(&mut Scene, f3
         adjust(&mut moved, s);
         let actual = picture(&moved);
         let d = difference(&actual, &reference).unwrap();
-        eprintln!("{} scaled by {s:e}, moved by {t:e}: {d}", E::NAME);
-        if d.large_pixels * 200 > d.pixels {
+        // At the origin the picture must not change; far from it, edges may move by a pixel (see the rule).
+        let changed = if t == 0.0 { d.large_pixels } else { pixels_not_found_nearby(&actual, &reference) };
+        eprintln!("{} scaled by {s:e}, moved by {t:e}: {changed} pixels changed; {d}", E::NAME);
+        if changed * 200 > d.pixels {
             let dir = common::root().join("target").join("stress");
             std::fs::create_dir_all(&dir).unwrap();
             let name = format!("{}-s{s:e}-t{t:e}", E::NAME);
@@ -107,14 +131,14 @@ macro_rules! survives_scaling_and_translation {
 survives_scaling_and_translation!(
     bitmap_textures: 1e6, no_lengths;
     // The slit and the lamps are in the environment, which depends on directions only.
-    dispersion: 1e3, no_lengths;
-    environment: 1e5, no_lengths;
+    dispersion: 1e4, no_lengths;
+    environment: 1e6, no_lengths;
     fresnel: 1e5, no_lengths;
     glossy: 1e5, no_lengths;
     layered: 1e5, no_lengths;
-    model_transform: 1e4, no_lengths;
-    photon_map: 1e5, photon_radius;
-    reflect_v01: 1e5, no_lengths;
-    reflect_v02: 1e5, no_lengths;
-    refract: 1e5, no_lengths;
+    model_transform: 1e5, no_lengths;
+    photon_map: 1e6, photon_radius;
+    reflect_v01: 1e6, no_lengths;
+    reflect_v02: 1e6, no_lengths;
+    refract: 1e6, no_lengths;
 );
