@@ -31,7 +31,7 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 480, help_heading = COMMON)]
     pub height: u32,
     /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
-    /// grid, any other count N-rooks stratification. [default: the example's own, see its --help text]
+    /// grid, any other count N-rooks stratification.
     #[arg(long, help_heading = COMMON)]
     pub spp: Option<u32>,
     /// Worker threads [default: all cores]. The picture is the same for any count.
@@ -139,9 +139,15 @@ pub fn output_path<E: Example>(args: &E) -> PathBuf {
     args.common().output.clone().unwrap_or_else(|| Path::new("out").join(format!("{}.png", E::NAME)))
 }
 
+/// The example's command line, its `--help` showing the example's own `--spp` default.
+pub fn command<E: Example>() -> clap::Command {
+    E::command().mut_arg("spp", |arg| arg.default_value(E::DEFAULT_SPP.to_string()))
+}
+
 /// Runs an example end to end; the whole `main` of every example.
 pub fn main<E: Example>() -> ExitCode {
-    let args = match E::try_parse() {
+    let parsed = command::<E>().try_get_matches().and_then(|matches| E::from_arg_matches(&matches));
+    let args = match parsed {
         Ok(args) => args,
         // --help and --version print to stdout and succeed.
         Err(e) if !e.use_stderr() => e.exit(),
