@@ -4,8 +4,8 @@
 //! cargo bench --features study --bench error_vs_time
 //! ```
 //!
-//! Each curve sweeps one sample-count option of one example (at 320 x 240; dispersion, the slowest, at
-//! 160 x 120) and measures the median wall time of 3 renders and the error against a converged reference
+//! Each curve sweeps one sample-count option of one example (at 320 x 240; dispersion and the photon map,
+//! the slowest, at 160 x 120) and measures the median wall time of 3 renders and the error against a converged reference
 //! (see `lecture6::study`). It writes `target/study/error_vs_time.md` (the tables, the Pareto-optimal points,
 //! and the equal-time error ratio of the two glossy samplers) and `target/study/error_vs_time.png` (log-log
 //! charts of error versus time). References are cached in `target/study/` and rendered again whenever the
@@ -13,7 +13,7 @@
 //!
 //! To add an example, add its sweeps to `sweeps()`.
 
-use lecture6::scenes::{bitmap_textures, dispersion, glossy};
+use lecture6::scenes::{bitmap_textures, dispersion, glossy, photon_map};
 use lecture6::study::{self, Measurement, Sweep};
 use plotters::prelude::*;
 use std::fmt::Write as _;
@@ -34,6 +34,10 @@ const PIXEL_CENTRE_REFERENCE: [&str; 8] =
 /// sample, 512 samples per pixel.
 const DISPERSION_REFERENCE: [&str; 6] = ["--spectral", "sampled", "--spp", "512", "--seed", "7"];
 const SMALL: [&str; 4] = ["--width", "160", "--height", "120"];
+
+/// The photon map's reference (at 160 x 120): 6.4 million photons, each estimate from the 400 nearest, so
+/// that both its noise (set by k) and its blur (the radius that holds k photons) are below every point's.
+const PHOTON_REFERENCE: [&str; 6] = ["--photons", "6400000", "--k", "400", "--seed", "7"];
 
 fn with_size(extra: &[&'static str]) -> Vec<&'static str> {
     SIZE.iter().chain(extra).copied().collect()
@@ -88,7 +92,24 @@ fn sweeps() -> Vec<Sweep> {
             &[4, 8, 16, 32, 64],
             &DISPERSION_REFERENCE,
         ),
+        // Caustics: the photon count at three values of k. With k fixed, the estimate's noise stops falling
+        // once enough photons are stored (it is set by k) while its blur keeps shrinking: each curve flattens,
+        // and the lower envelope of the three is the best pairing of photons and k for the time spent.
+        photon_sweep("--k 20", &["--k", "20"]),
+        photon_sweep("--k 80", &["--k", "80"]),
+        photon_sweep("--k 320", &["--k", "320"]),
     ]
+}
+
+/// A sweep of `photon_map`'s `--photons` at 160 x 120, 4 spp, with the other options in `fixed`.
+fn photon_sweep(label: &str, fixed: &[&'static str]) -> Sweep {
+    Sweep::new::<photon_map::Args>(
+        label,
+        &[&SMALL[..], fixed].concat(),
+        "--photons",
+        &[50_000, 100_000, 200_000, 400_000, 800_000, 1_600_000],
+        &PHOTON_REFERENCE,
+    )
 }
 
 fn main() {
