@@ -2,6 +2,7 @@
 //! small size with 1, 2 and 8 threads (more threads than the test machine has cores, so rows are stolen
 //! between workers in an order that changes from run to run).
 
+#[macro_use]
 mod common;
 
 use lecture6::scenes::bitmap_textures;
@@ -25,19 +26,7 @@ macro_rules! thread_count_independent {
     )*};
 }
 
-thread_count_independent!(
-    bitmap_textures,
-    dispersion,
-    environment,
-    fresnel,
-    glossy,
-    layered,
-    model_transform,
-    photon_map,
-    reflect_v01,
-    reflect_v02,
-    refract
-);
+every_example!(thread_count_independent);
 
 #[test]
 fn different_seeds_give_different_anti_aliasing() {

@@ -4,6 +4,27 @@
 #![allow(dead_code)] // each test file uses its own part of this module
 
 use lecture6::cli::{Example, render_example};
+
+/// Expands `$test!(name, name, ...)` with every example: the one list of examples the test files share
+/// (`tests/regression.rs` checks that it matches `examples/`).
+#[allow(unused_macros)]
+macro_rules! every_example {
+    ($test:ident) => {
+        $test! {
+           bitmap_textures,
+           dispersion,
+           environment,
+           fresnel,
+           glossy,
+           layered,
+           model_transform,
+           photon_map,
+           reflect_v01,
+           reflect_v02,
+           refract
+        }
+    };
+}
 use lecture6::compare::{Difference, difference, heat_map};
 use lecture6::render::Frame;
 use std::path::{Path, PathBuf};
