@@ -3,17 +3,19 @@
 //!
 //! - Build: top-down, binned surface area heuristic (16 bins on each axis over the primitives' centroids);
 //!   a node becomes a leaf when splitting it is not expected to be cheaper than testing its primitives.
-//! - Layout: the two children of an interior node are stored together in one 64-byte cache line, their
-//!   boxes axis by axis, so one memory access and one SIMD operation per axis test both; a node needs one
-//!   index. Primitives are reordered so that each leaf owns a contiguous range.
-//! - Traversal: both children's boxes are tested at each interior node; the nearer is visited first and the
-//!   farther is pushed with its entry distance, and skipped when popped if a closer hit has been found.
-//!   The slab test widens the exit distance by `1 + 2 gamma(3)` (pbrt-v4), so rounding never makes the box
-//!   test miss a triangle that the (watertight) triangle test would hit.
+//! - Layout: the binary tree is then collapsed into a 4-wide one (each node keeps the four largest nodes
+//!   of the top of its binary subtree as children), which halves the depth a ray walks down. A node stores
+//!   its up to four children's boxes plane by plane in two 64-byte cache lines, so one memory access and
+//!   one SIMD operation per plane test all four. Primitives are reordered so that each leaf owns a
+//!   contiguous range.
+//! - Traversal: all four children's boxes are tested at each node; the children hit are pushed sorted by
+//!   their entry distance, the nearest visited first, and a pushed child is skipped when popped if a closer
+//!   hit has been found meanwhile. The slab test widens the exit distance by `1 + 2 gamma(3)` (pbrt-v4), so
+//!   rounding never makes the box test miss a triangle that the (watertight) triangle test would hit.
 
 use super::Aabb;
 use crate::math::{Vector, gamma};
-use glam::{Vec4, Vec4Swizzles};
+use glam::Vec4;
 use std::ops::Range;
 
 /// Bins per axis of the binned SAH.
@@ -76,40 +78,70 @@ fn half_area(b: &Aabb) -> f32 {
     d.x * d.y + d.y * d.z + d.z * d.x
 }
 
-/// The two children of an interior node, side by side in one 64-byte cache line, their boxes stored axis
-/// by axis so that one SIMD operation per axis tests the ray against both.
+/// Up to four children of a node, their boxes stored plane by plane (lane `i` is child `i`) so that one
+/// SIMD operation per plane tests the ray against all four. An unused lane has an empty box (min +inf,
+/// max -inf), which no ray enters.
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(64))]
-struct Pair {
-    /// Per axis: (left min, right min, left max, right max).
-    x: Vec4,
-    y: Vec4,
-    z: Vec4,
-    /// Per child, as in [`Node`].
-    first: [u32; 2],
-    count: [u32; 2],
+struct Quad {
+    /// min x, max x, min y, max y, min z, max z.
+    planes: [Vec4; 6],
+    /// Per child, as in [`Node`]: a leaf's primitives, or (`count == 0`) the index of an interior child.
+    first: [u32; 4],
+    count: [u32; 4],
 }
 
-impl Pair {
-    fn new([a, b]: [Node; 2]) -> Pair {
-        let (ba, bb) = (a.aabb(), b.aabb());
-        let lanes = |k: usize| Vec4::new(ba.min[k], bb.min[k], ba.max[k], bb.max[k]);
-        Pair {
-            x: lanes(0),
-            y: lanes(1),
-            z: lanes(2),
-            first: [a.first() as u32, b.first() as u32],
-            count: [a.count() as u32, b.count() as u32],
+impl Quad {
+    fn new(children: &[Node]) -> Quad {
+        let mut quad = Quad {
+            planes: [Vec4::INFINITY, Vec4::NEG_INFINITY].repeat(3).try_into().expect("six planes"),
+            first: [0; 4],
+            count: [0; 4],
+        };
+        for (i, child) in children.iter().enumerate() {
+            let b = child.aabb();
+            for k in 0..3 {
+                quad.planes[2 * k][i] = b.min[k];
+                quad.planes[2 * k + 1][i] = b.max[k];
+            }
+            quad.first[i] = child.first() as u32;
+            quad.count[i] = child.count() as u32;
+        }
+        quad
+    }
+}
+
+/// Collapses the binary subtree under the interior node `node` (whose children are the pair it names) into
+/// 4-wide nodes appended to `quads`; returns the index of its top one. The children are found by opening,
+/// while there are fewer than four, the interior child of largest surface area (the one rays enter most).
+fn collapse(pairs: &[[Node; 2]], node: &Node, quads: &mut Vec<Quad>) -> u32 {
+    let mut children = pairs[node.first()].to_vec();
+    while children.len() < 4 {
+        let largest = children
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| c.count() == 0)
+            .max_by(|(_, a), (_, b)| half_area(&a.aabb()).total_cmp(&half_area(&b.aabb())));
+        let Some((i, _)) = largest else { break };
+        let opened = children.swap_remove(i);
+        children.extend(pairs[opened.first()]);
+    }
+    let at = quads.len();
+    quads.push(Quad::new(&children));
+    for (i, child) in children.iter().enumerate() {
+        if child.count() == 0 {
+            quads[at].first[i] = collapse(pairs, child, quads);
         }
     }
+    at as u32
 }
 
 /// A bounding volume hierarchy; see the module documentation.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
-    /// The root; the children of an interior node are the pair its `first` names.
+    /// The root; when it is interior (`count == 0`), it is `quads[0]`.
     root: Option<Node>,
-    pairs: Vec<Pair>,
+    quads: Vec<Quad>,
 }
 
 /// The chosen split of a node: primitives whose centroid falls in bins `..=bin` of `axis` go left.
@@ -167,7 +199,12 @@ impl Bvh {
             work.push((Some((children, 0)), depth + 1));
             work.push((Some((children, 1)), depth + 1));
         }
-        (Bvh { root: Some(root), pairs: pairs.into_iter().map(Pair::new).collect() }, order)
+        let mut quads = Vec::with_capacity(pairs.len() / 2 + 1);
+        if root.count() == 0 {
+            collapse(&pairs, &root, &mut quads);
+            root = Node::new(root.aabb(), 0, 0);
+        }
+        (Bvh { root: Some(root), quads }, order)
     }
 
     /// The box around everything, or `None` when there is nothing.
@@ -192,14 +229,14 @@ impl Bvh {
         }
         let (o, inv) =
             ([start.x, start.y, start.z].map(Vec4::splat), [inv_dir.x, inv_dir.y, inv_dir.z].map(Vec4::splat));
-        // Where a direction component is negative the max plane is met first: swap the min and max lanes.
-        let negative = [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0];
-        let slab = |planes: Vec4, k: usize| {
-            let t = (planes - o[k]) * inv[k];
-            if negative[k] { t.zwxy() } else { t }
-        };
+        // Per axis, the plane the ray meets first (the min plane, or the max plane where the direction is
+        // negative) and the one it leaves by.
+        let negative = [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0].map(usize::from);
+        let entry_plane = [0, 1, 2].map(|k| 2 * k + negative[k]);
+        let exit_plane = [0, 1, 2].map(|k| 2 * k + 1 - negative[k]);
         let grow = Vec4::splat(1.0 + 2.0 * gamma(3));
-        let mut stack = [(0u32, 0u32, 0.0f32); MAX_DEPTH];
+        // Each level of the tree pushes at most three children.
+        let mut stack = [(0u32, 0u32, 0.0f32); 3 * MAX_DEPTH + 1];
         let mut top = 0;
         let (mut first, mut count) = (root.first() as u32, root.count() as u32);
         loop {
@@ -208,22 +245,30 @@ impl Bvh {
                     return;
                 }
             } else {
-                let pair = &self.pairs[first as usize];
-                let (tx, ty, tz) = (slab(pair.x, 0), slab(pair.y, 1), slab(pair.z, 2));
-                // Lanes 0 and 1: where the ray enters each child's box; lanes 2 and 3: where it leaves.
-                let near = tx.max(ty).max(tz).max(Vec4::ZERO);
-                let far = tx.min(ty).min(tz).zwxy() * grow;
-                let hit = (near.cmple(far) & near.cmplt(Vec4::splat(t_max))).bitmask() & 3;
+                let quad = &self.quads[first as usize];
+                let slab = |plane: [usize; 3], k: usize| (quad.planes[plane[k]] - o[k]) * inv[k];
+                // Lane i: where the ray enters and leaves child i's box.
+                let near = slab(entry_plane, 0).max(slab(entry_plane, 1)).max(slab(entry_plane, 2)).max(Vec4::ZERO);
+                let far = slab(exit_plane, 0).min(slab(exit_plane, 1)).min(slab(exit_plane, 2)) * grow;
+                let mut hit = (near.cmple(far) & near.cmplt(Vec4::splat(t_max))).bitmask();
                 if hit != 0 {
-                    let side = if hit == 3 {
-                        let (near_side, far_side) = if near.x <= near.y { (0, 1) } else { (1, 0) };
-                        stack[top] = (pair.first[far_side], pair.count[far_side], near[far_side]);
+                    // Push the children hit, keeping those of this node sorted farthest first, then visit
+                    // the nearest.
+                    let base = top;
+                    while hit != 0 {
+                        let i = hit.trailing_zeros() as usize;
+                        hit &= hit - 1;
+                        let entry = (quad.first[i], quad.count[i], near[i]);
+                        let mut j = top;
+                        while j > base && stack[j - 1].2 < entry.2 {
+                            stack[j] = stack[j - 1];
+                            j -= 1;
+                        }
+                        stack[j] = entry;
                         top += 1;
-                        near_side
-                    } else {
-                        (hit >> 1) as usize
-                    };
-                    (first, count) = (pair.first[side], pair.count[side]);
+                    }
+                    top -= 1;
+                    (first, count, _) = stack[top];
                     continue;
                 }
             }
@@ -242,9 +287,11 @@ impl Bvh {
         }
     }
 
-    /// The number of nodes (for the benchmark's report).
+    /// The number of nodes, leaves included (for the benchmark's report).
     pub fn node_count(&self) -> usize {
-        self.root.map_or(0, |_| 1 + 2 * self.pairs.len())
+        let children: usize =
+            self.quads.iter().map(|q| q.planes[0].cmple(q.planes[1]).bitmask().count_ones() as usize).sum();
+        self.root.map_or(0, |_| 1 + children)
     }
 }
 
