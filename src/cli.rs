@@ -117,6 +117,7 @@ pub fn prepare_scene<E: Example>(args: &E) -> Result<Scene> {
     if common.exhaustive {
         scene.min_ray_weight = 0.0;
     }
+    scene.relative_to_camera();
     common.photons.apply(&mut scene.photons);
     scene.photons.check()?;
     if scene.photons.count > 0 {

@@ -18,7 +18,7 @@ use crate::environment::Environment;
 use crate::error::Result;
 use crate::geometry::IntersectionInfo;
 use crate::light::PointLight;
-use crate::math::Vector;
+use crate::math::{Vector, max_abs};
 use crate::node::Node;
 use crate::photon_map::{PhotonMap, PhotonSettings};
 use crate::ray::{Ray, spawn_point};
@@ -87,6 +87,38 @@ impl Scene {
     pub fn add(&mut self, node: Node) -> &mut Scene {
         self.nodes.push(node);
         self
+    }
+
+    /// Moves the whole scene so that the camera stands at the origin, when that makes the scene's
+    /// coordinates smaller: when the camera is farther from the origin than every corner of every bounded
+    /// node is from the camera. Every node is then translated by minus the camera's position (after its
+    /// own transform), and so are the lights. The picture does not change, but the coordinates the renderer
+    /// computes with become distances from the camera, so a scene far from the origin keeps the precision
+    /// of one near it (pbrt-v4's "camera-world" space). A scene around the origin is left as it is, and
+    /// costs nothing. Environments depend on directions only and are unaffected. The examples do this
+    /// before building the photon map and rendering (see `cli::prepare_scene`).
+    ///
+    /// Deviation from the slides: the course always renders in world coordinates; in f32, a scene moved
+    /// 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
+    pub fn relative_to_camera(&mut self) {
+        let camera = self.camera.position;
+        let farthest = self
+            .nodes
+            .iter()
+            .filter_map(Node::bounds)
+            .flat_map(|b| b.corners())
+            .map(|c| max_abs(c - camera))
+            .fold(0.0, f32::max);
+        if max_abs(camera) <= farthest {
+            return;
+        }
+        for node in &mut self.nodes {
+            node.transform = Some(node.transform.unwrap_or_default().translate(-camera));
+        }
+        for light in &mut self.lights {
+            light.position -= camera;
+        }
+        self.camera.position = Vector::ZERO;
     }
 
     /// Checks what can only be checked once the scene is complete: every node's transform is invertible.

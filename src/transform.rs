@@ -23,6 +23,9 @@ pub struct Transform {
     inverse: Affine3A,
     /// The inverse transpose of the linear part, for normals.
     normal_matrix: Mat3A,
+    /// The transform only moves (its linear part is the identity): rays and hits are then moved by one
+    /// vector addition, and directions and normals stay as they are.
+    translation_only: bool,
 }
 
 impl Default for Transform {
@@ -38,13 +41,18 @@ fn norm_inf(m: &Mat3A) -> f32 {
 }
 
 impl Transform {
-    pub const IDENTITY: Transform =
-        Transform { forward: Affine3A::IDENTITY, inverse: Affine3A::IDENTITY, normal_matrix: Mat3A::IDENTITY };
+    pub const IDENTITY: Transform = Transform {
+        forward: Affine3A::IDENTITY,
+        inverse: Affine3A::IDENTITY,
+        normal_matrix: Mat3A::IDENTITY,
+        translation_only: true,
+    };
 
     fn then(self, step: Affine3A) -> Transform {
         let forward = step * self.forward;
         let inverse = forward.inverse();
-        Transform { forward, inverse, normal_matrix: inverse.matrix3.transpose() }
+        let translation_only = forward.matrix3 == Mat3A::IDENTITY;
+        Transform { forward, inverse, normal_matrix: inverse.matrix3.transpose(), translation_only }
     }
 
     /// Scales by (x, y, z) after what the transform already does.
@@ -84,6 +92,9 @@ impl Transform {
 
     /// The world ray expressed in canonical space (direction not renormalised, so ray parameters agree).
     pub fn ray_to_canonical(&self, ray: &Ray) -> Ray {
+        if self.translation_only {
+            return Ray { start: ray.start - self.forward.translation, ..*ray };
+        }
         Ray { start: self.inverse.transform_point3a(ray.start), dir: self.inverse.transform_vector3a(ray.dir), ..*ray }
     }
 
@@ -95,6 +106,12 @@ impl Transform {
     /// A hit found in canonical space, brought back to world space: position by T, normals by the inverse
     /// transpose (renormalised), the error bound grown by T; distance and u/v unchanged.
     pub fn info_to_world(&self, info: &IntersectionInfo) -> IntersectionInfo {
+        if self.translation_only {
+            // |M| = 1: the same bound as below, without the matrix products.
+            let error =
+                (1.0 + gamma(3)) * info.error + gamma(3) * (max_abs(info.ip) + max_abs(self.forward.translation));
+            return IntersectionInfo { ip: info.ip + self.forward.translation, error, ..*info };
+        }
         let m = &self.forward.matrix3;
         let ip = self.forward.transform_point3a(info.ip);
         // The canonical error box grows by |M| (and by the rounding of that product), plus the rounding of

@@ -216,14 +216,21 @@ fn dispersive_glass_passes_white_light_in_coloured_photons() {
     );
 }
 
+/// Where the world point `p` of the `photon_map` scene lies in `prepared`, the scene as the examples render
+/// it (which `Scene::relative_to_camera` may have moved so that the camera stands at the origin).
+fn in_prepared_scene(prepared: &Scene, p: Vector) -> Vector {
+    let world = photon_map::Args::parse_from(["photon_map"]).build_scene().unwrap();
+    p + (prepared.camera.position - world.camera.position)
+}
+
 /// The largest relative difference between the channels of the caustic estimates on a grid of the floor
 /// around the glass sphere's focus.
 fn caustic_chroma(args: &[&str]) -> f32 {
     use photon_map::{GLASS_CENTER, LIGHT};
     let axis = GLASS_CENTER - LIGHT;
-    let focus = GLASS_CENTER + axis * (GLASS_CENTER.y / -axis.y);
     let scene = prepare_scene(&photon_map::Args::parse_from(std::iter::once("photon_map").chain(args.iter().copied())))
         .unwrap();
+    let focus = in_prepared_scene(&scene, GLASS_CENTER + axis * (GLASS_CENTER.y / -axis.y));
     let map = scene.photon_map.as_ref().unwrap();
     let mut chroma: f32 = 0.0;
     for i in -8..=8 {
@@ -267,6 +274,7 @@ fn the_caustic_under_the_glass_sphere_outshines_the_lit_floor_beside_it() {
     let without = prepare_scene(&photon_map::Args::parse_from(["photon_map", "--photons", "0"])).unwrap();
     assert!(with_map.photon_map.is_some() && without.photon_map.is_none());
 
+    let (focus, beside) = (in_prepared_scene(&with_map, focus), in_prepared_scene(&with_map, beside));
     let (caustic, lit) = (seen_at(&with_map, focus).luminance(), seen_at(&with_map, beside).luminance());
     assert!(caustic > 2.0 * lit, "caustic {caustic}, lit floor beside it {lit}");
     // Without photons the same point lies in the sphere's shadow.
@@ -284,7 +292,8 @@ fn args_with(extra: &[&'static str]) -> Vec<&'static str> {
 fn no_photons_renders_exactly_as_without_a_photon_map() {
     let zero = common::render::<photon_map::Args>(&args_with(&["--photons", "0"]));
     let args = photon_map::Args::parse_from(std::iter::once("photon_map").chain(SMALL));
-    let scene = args.build_scene().unwrap();
+    let mut scene = args.build_scene().unwrap();
+    scene.relative_to_camera();
     assert!(scene.photon_map.is_none() && scene.photons.count > 0);
     let (plain, _) = render(&scene, &settings(&args)).unwrap();
     assert!(zero == plain, "--photons 0 changed the picture");
