@@ -232,14 +232,6 @@ fn touching_and_nested_dielectrics_render_like_slightly_separated_ones() {
     assert_eq!(black.count(), 0, "black speckles where the dielectrics touch");
 }
 
-fn temp_obj(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = common::root().join("target").join("edge-cases");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
-    path
-}
-
 #[test]
 fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
     // One good triangle; a zero-area one (collinear points); one with a repeated vertex; a sliver whose
@@ -247,7 +239,7 @@ fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
     let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 0.5 1e-40 0\nv 1e6 0 1\nv 1e6 1e-6 1\nv 0 0 1\n\
                 v 1e6 1e6 1e6\nv 1e6 1.0001e6 1e6\nv 1.0001e6 1e6 1e6\n\
                 f 1 2 3\nf 1 2 4\nf 1 1 3\nf 1 2 5\nf 8 6 7\nf 9 10 11\n";
-    let path = temp_obj("slivers.obj", text);
+    let path = common::temp_file("edge-cases", "slivers.obj", text);
     let mesh = Mesh::load(&path).unwrap();
     assert!(mesh.triangle_count() >= 3, "the good triangle, the needle and the far one stay");
     for k in 0..400 {

@@ -8,7 +8,6 @@ use lecture6::geometry::{Geometry, Mesh};
 use lecture6::math::Vector;
 use lecture6::ray::Ray;
 use lecture6::rng::Rng;
-use std::path::PathBuf;
 
 fn random_unit(rng: &mut Rng) -> Vector {
     let z = 1.0 - 2.0 * rng.next_f32();
@@ -188,14 +187,6 @@ fn rays_through_shared_edges_and_vertices_never_slip_through() {
     }
 }
 
-fn temp_obj(name: &str, text: &str) -> PathBuf {
-    let dir = common::root().join("target").join("mesh-tests");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
-    path
-}
-
 #[test]
 fn a_missing_or_malformed_obj_is_an_error_naming_the_file() {
     let err = Mesh::load(std::path::Path::new("no/such/mesh.obj")).unwrap_err().to_string();
@@ -205,7 +196,7 @@ fn a_missing_or_malformed_obj_is_an_error_naming_the_file() {
         ("bad-index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
         ("bad-normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n"),
     ] {
-        let path = temp_obj(name, text);
+        let path = common::temp_file("mesh-tests", name, text);
         let err = Mesh::load(&path).err().unwrap_or_else(|| panic!("{name} was accepted")).to_string();
         assert!(err.contains(name) && !err.contains('\n'), "{err}");
     }
@@ -221,7 +212,7 @@ fn empty_and_degenerate_meshes_give_no_hits_and_no_nans() {
     ];
     let mut rng = Rng::for_keys(&[5]);
     for (name, text, count) in cases {
-        let mesh = Mesh::load(&temp_obj(name, text)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let mesh = Mesh::load(&common::temp_file("mesh-tests", name, text)).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!(mesh.triangle_count(), count, "{name}");
         assert_eq!(mesh.bounds().is_some(), count > 0, "{name}");
         for _ in 0..200 {
@@ -242,7 +233,7 @@ fn empty_and_degenerate_meshes_give_no_hits_and_no_nans() {
 fn normals_and_uvs_come_from_the_file_and_faceted_uses_the_face() {
     let text = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n\
                 vn -0.6 0 0.8\nvn 0.6 0 0.8\nf 1/1/1 2/2/2 3/3/2 4/4/1\n";
-    let path = temp_obj("quad.obj", text);
+    let path = common::temp_file("mesh-tests", "quad.obj", text);
     let mesh = Mesh::load(&path).unwrap();
     assert_eq!(mesh.triangle_count(), 2);
     let ray = Ray::new(Vector::new(0.5, 0.25, -2.0), Vector::Z);
@@ -267,7 +258,7 @@ fn model_transform_reports_a_bad_mesh_in_one_line() {
         err.contains("no/such/model.obj") && err.trim_end().lines().count() == 1 && !err.contains("panicked"),
         "{err}"
     );
-    let empty = temp_obj("nothing.obj", "# no triangles\n");
+    let empty = common::temp_file("mesh-tests", "nothing.obj", "# no triangles\n");
     let out =
         common::run_example("model_transform", &["--mesh", empty.to_str().unwrap(), "-o", "target/mesh-tests/y.png"]);
     assert_eq!(out.status.code(), Some(2));
@@ -278,7 +269,8 @@ fn model_transform_reports_a_bad_mesh_in_one_line() {
 #[test]
 fn a_students_mesh_is_scaled_to_fit() {
     // A tiny tetrahedron far from the origin renders in place of the teapots.
-    let path = temp_obj(
+    let path = common::temp_file(
+        "mesh-tests",
         "tetra.obj",
         "v 1000 1000 1000\nv 1000.01 1000 1000\nv 1000 1000.01 1000\nv 1000 1000 1000.01\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
     );

@@ -74,6 +74,15 @@ pub fn check_expected<E: Example>() {
     }
 }
 
+/// Writes `text` to `target/<folder>/<name>` and returns the path: a small input file made by a test.
+pub fn temp_file(folder: &str, name: &str, text: &str) -> PathBuf {
+    let dir = root().join("target").join(folder);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
 /// The path of a built example binary (cargo builds the examples before it runs the tests).
 pub fn example_binary(name: &str) -> PathBuf {
     let exe = std::env::current_exe().expect("test binary path");
