@@ -20,7 +20,8 @@ use std::sync::Arc;
 /// options, listed after them, keep the plain "Options" heading).
 const COMMON: &str = "Common options";
 
-/// Options every example accepts.
+// Options every example accepts. (A plain comment: a doc comment here would become every example's `--help`
+// description, which is its `Options` doc comment.)
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
     /// Image width in pixels.
@@ -113,7 +114,9 @@ pub trait Example: clap::Args + Clone + Send + Sync + 'static {
     fn scene(&self) -> Result<Scene>;
 }
 
-/// The whole command line of an example: its own options, then the ones every example shares.
+// The whole command line of an example: its own options, then the ones every example shares. (A plain
+// comment: a doc comment here would be every example's `--help` description; each example's own is its
+// `Options` doc comment.)
 #[derive(clap::Parser, Clone, Debug)]
 #[command(version)]
 pub struct Cli<E: Example> {
