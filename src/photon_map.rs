@@ -131,7 +131,8 @@ impl PhotonSettings {
 /// would also cover the options that follow it in an example's own list).
 const HEADING: &str = "Caustics (photon mapping)";
 
-/// The photon-mapping options every example accepts.
+// The photon-mapping options every example accepts. (A plain comment, as on `cli::CommonArgs`: a doc comment
+// here would become every example's `--help` description.)
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct PhotonArgs {
     /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.
