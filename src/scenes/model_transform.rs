@@ -12,7 +12,7 @@
 //! - Instancing: three more teapots from the same mesh (one `Arc`), each with its own transform and shader.
 //!
 //! `--mesh FILE.obj` puts any OBJ in place of every teapot, scaled and centred to the teapot's bounding box;
-//! `--faceted` shades with face normals; `--teapot low` loads the coarse teapot.
+//! `--faceted` shades with face normals (a mesh without normals is faceted unless `--smooth`); `--teapot low` loads the coarse teapot.
 //!
 //! [`Transform`]: crate::transform::Transform
 
@@ -51,6 +51,10 @@ pub struct Args {
     /// Shade meshes with their face normals instead of smooth vertex normals.
     #[arg(long)]
     pub faceted: bool,
+    /// Compute smooth normals for a mesh whose file has none (such meshes are faceted otherwise, as the
+    /// course renders them).
+    #[arg(long)]
+    pub smooth: bool,
     /// Which bundled teapot to use.
     #[arg(long, value_enum, default_value_t = Teapot::High)]
     pub teapot: Teapot,
@@ -76,14 +80,14 @@ impl Args {
         let (mesh, fit) = match &self.mesh {
             None => (teapot, None),
             Some(path) => {
-                let mesh = Mesh::load(path)?;
+                let mesh = Mesh::load_auto_smooth(path, self.smooth)?;
                 let b = mesh.bounds().ok_or_else(|| Error::file("cannot use mesh", path, "it has no triangles"))?;
                 let bottom = |b: &crate::geometry::Aabb| Vector::new(b.center().x, b.min.y, b.center().z);
                 let scale = (teapot_box.max - teapot_box.min).max_element() / (b.max - b.min).max_element();
                 (mesh, Some((bottom(&b), scale, bottom(&teapot_box))))
             }
         };
-        let mesh: Arc<dyn Geometry> = Arc::new(mesh.with_faceted(self.faceted));
+        let mesh: Arc<dyn Geometry> = Arc::new(if self.faceted { mesh.with_faceted(true) } else { mesh });
         Ok(move |shader: Arc<dyn Shader>| {
             let node = Node::new(mesh.clone(), shader);
             match fit {
