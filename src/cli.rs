@@ -6,7 +6,7 @@
 //! unknown options, whose message is put on one line too), never a panic.
 
 use crate::compare;
-use crate::environment;
+use crate::environment::{self, CubemapLayout};
 use crate::error::{Error, Result};
 use crate::photon_map::{PhotonArgs, PhotonMap};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
@@ -64,6 +64,11 @@ pub struct CommonArgs {
     /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
     #[arg(long, value_name = "FILE|FOLDER", help_heading = COMMON)]
     pub env: Option<PathBuf>,
+    /// How the faces of an `--env` cube-map folder are oriented: `opengl`, the default, is the layout of
+    /// skyboxes made for OpenGL and Direct3D and of the workbook's own `textures/sky_cubemap`; `course` is the
+    /// course's cube maps, whose negz face is turned by 180°.
+    #[arg(long, value_enum, default_value_t = CubemapLayout::OpenGl, help_heading = COMMON)]
+    pub env_layout: CubemapLayout,
     /// Wavelength passes K for scenes with dispersive materials (the slide's method): the frame is traced K
     /// times, once per band of the spectrum, and the passes are added with the bands' colours. Scenes
     /// without dispersive materials are traced once whatever K is.
@@ -112,7 +117,7 @@ pub fn prepare_scene<E: Example>(args: &E) -> Result<Scene> {
         scene.max_depth = depth;
     }
     if let Some(path) = &common.env {
-        scene.environment = Some(environment::load(path)?);
+        scene.environment = Some(environment::load_with_layout(path, common.env_layout)?);
     }
     if common.exhaustive {
         scene.min_ray_weight = 0.0;

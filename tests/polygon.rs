@@ -140,7 +140,7 @@ fn a_mesh_without_normals_is_faceted_unless_auto_smooth() {
 
 #[test]
 fn obj_errors_say_why() {
-    let err = |path: &std::path::Path| Mesh::load(path).err().expect("refused").to_string();
+    let err = |path: &std::path::Path| Mesh::load(path).unwrap_err().to_string();
     // A missing file: the OS error.
     let e = err(std::path::Path::new("no/such/mesh.obj"));
     assert!(e.contains("no/such/mesh.obj") && e.contains("No such file"), "{e}");
