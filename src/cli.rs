@@ -24,16 +24,20 @@ const COMMON: &str = "Common options";
 /// Options every example accepts.
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 640, help_heading = COMMON)]
-    pub width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 480, help_heading = COMMON)]
-    pub height: u32,
+    /// Image width in pixels. [default: 640, or a scene file's own]
+    #[arg(long, help_heading = COMMON)]
+    pub width: Option<u32>,
+    /// Image height in pixels. [default: 480, or a scene file's own]
+    #[arg(long, help_heading = COMMON)]
+    pub height: Option<u32>,
     /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
     /// grid, any other count N-rooks stratification.
     #[arg(long, help_heading = COMMON)]
     pub spp: Option<u32>,
+    /// The course's adaptive anti-aliasing: one sample through each pixel's centre, then four more in every
+    /// pixel that differs from a neighbour by more than 0.1 (needs --spp 1).
+    #[arg(long, help_heading = COMMON)]
+    pub adaptive_aa: bool,
     /// Worker threads [default: all cores]. The picture is the same for any count.
     #[arg(long, help_heading = COMMON)]
     pub threads: Option<usize>,
@@ -91,28 +95,41 @@ pub trait Example: Parser {
     fn common(&self) -> &CommonArgs;
     /// Builds the scene the options describe. Bad files or values are errors, not panics.
     fn build_scene(&self) -> Result<Scene>;
+    /// Builds the scene as [`Example::build_scene`] does, and sets the render settings that the scene
+    /// decides when the options leave them open (a scene file's frame size and anti-aliasing). By default
+    /// the settings are the options'.
+    fn build_scene_and_settings(&self, _settings: &mut RenderSettings) -> Result<Scene> {
+        self.build_scene()
+    }
 }
 
 /// The render settings the options ask for.
 pub fn settings<E: Example>(args: &E) -> RenderSettings {
     let c = args.common();
     RenderSettings {
-        width: c.width,
-        height: c.height,
+        width: c.width.unwrap_or(640),
+        height: c.height.unwrap_or(480),
         spp: c.spp.unwrap_or(E::DEFAULT_SPP),
         threads: c.threads,
         seed: c.seed,
         progress: !c.quiet,
         wavelengths: c.wavelengths,
         spectral: c.spectral,
+        adaptive_aa: c.adaptive_aa,
     }
 }
 
 /// Builds an example's scene as its options say, ready to render: the scene's own settings overridden by the
 /// options, and its caustic photon map built (in parallel, on `--threads` threads) if it needs one.
 pub fn prepare_scene<E: Example>(args: &E) -> Result<Scene> {
+    prepare_scene_and_settings(args, &mut settings(args))
+}
+
+/// [`prepare_scene`], letting the scene set what the options leave open in `settings` (see
+/// [`Example::build_scene_and_settings`]).
+pub fn prepare_scene_and_settings<E: Example>(args: &E, settings: &mut RenderSettings) -> Result<Scene> {
     let common = args.common();
-    let mut scene = args.build_scene()?;
+    let mut scene = args.build_scene_and_settings(settings)?;
     if let Some(depth) = common.max_depth {
         scene.max_depth = depth;
     }
@@ -134,10 +151,16 @@ pub fn prepare_scene<E: Example>(args: &E) -> Result<Scene> {
 
 /// Builds and renders an example's scene as its options say (the path both `main` and the tests use).
 pub fn render_example<E: Example>(args: &E) -> Result<(Frame, RenderStats)> {
-    let settings = settings(args);
+    render_example_and_settings(args).map(|(frame, stats, _)| (frame, stats))
+}
+
+/// [`render_example`], returning the settings it rendered with too.
+fn render_example_and_settings<E: Example>(args: &E) -> Result<(Frame, RenderStats, RenderSettings)> {
+    let mut settings = settings(args);
     settings.check()?;
-    let scene = prepare_scene(args)?;
-    render(&scene, &settings)
+    let scene = prepare_scene_and_settings(args, &mut settings)?;
+    let (frame, stats) = render(&scene, &settings)?;
+    Ok((frame, stats, settings))
 }
 
 /// Where the picture goes.
@@ -179,9 +202,8 @@ fn one_line(message: &str) -> String {
 
 fn run<E: Example>(args: &E) -> Result<()> {
     let output = output_path(args);
-    let (frame, stats) = render_example(args)?;
+    let (frame, stats, settings) = render_example_and_settings(args)?;
     frame.save(&output)?;
-    let settings = settings(args);
     if !args.common().quiet {
         let rays = stats.counters.total();
         let secs = stats.elapsed.as_secs_f64();
@@ -190,11 +212,12 @@ fn run<E: Example>(args: &E) -> Result<()> {
             plan => format!(" ({plan})"),
         };
         println!(
-            "{}: {}x{}, {} spp{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
             E::NAME,
             settings.width,
             settings.height,
             settings.spp,
+            if settings.adaptive_aa { " + adaptive AA" } else { "" },
             spectral,
             secs,
             stats.threads,

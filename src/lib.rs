@@ -12,14 +12,16 @@
 //! | [`environment`] | what rays that hit nothing see: constant, spherical (equirectangular) and cube-map environments |
 //! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
-//! | [`render`] | the parallel, deterministic renderer |
+//! | [`render`], [`adaptive_aa`] | the parallel, deterministic renderer; the course's adaptive anti-aliasing |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
+//! | [`scene_file`] | the course's `.qdmg` scene files |
 //! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
 
+pub mod adaptive_aa;
 pub mod assets;
 pub mod bitmap;
 pub mod camera;
@@ -38,6 +40,7 @@ pub mod render;
 pub mod rng;
 pub mod sampling;
 pub mod scene;
+pub mod scene_file;
 pub mod scenes;
 pub mod shader;
 pub mod spectral;

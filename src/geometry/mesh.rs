@@ -45,6 +45,9 @@ pub struct Mesh {
     uvs: Vec<[[f32; 2]; 3]>,
     /// Shade with the face normals instead of the interpolated vertex normals.
     pub faceted: bool,
+    /// Ignore the triangles whose front (the side their corners wind counter-clockwise around, as the file
+    /// lists them) faces away from the ray, for every ray: the course's `backfaceCulling`.
+    pub backface_culling: bool,
 }
 
 /// Extensions of image files, which are refused as meshes with a message saying so.
@@ -246,6 +249,7 @@ impl Mesh {
                 order.iter().map(|&k| idx[original(k)].map(|i| values[i as usize])).collect()
             }),
             faceted: false,
+            backface_culling: false,
         })
     }
 
@@ -325,6 +329,17 @@ impl Mesh {
         self
     }
 
+    /// The same mesh, ignoring (`true`) or seeing (`false`) the triangles a ray meets from their back.
+    pub fn with_backface_culling(mut self, culling: bool) -> Mesh {
+        self.backface_culling = culling;
+        self
+    }
+
+    /// Whether triangle `i` is ignored by a ray along `dir` (back-face culling).
+    fn culled(&self, i: usize, dir: Vector) -> bool {
+        self.backface_culling && face_normal(&self.triangles[i]).dot(dir) > 0.0
+    }
+
     /// The number of triangles (after dropping degenerate ones).
     pub fn triangle_count(&self) -> usize {
         self.triangles.len()
@@ -367,7 +382,7 @@ impl Geometry for Mesh {
         let sheared = ShearedRay::new(ray);
         let mut best = None;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            for i in range {
+            for i in range.filter(|&i| !self.culled(i, ray.dir)) {
                 if let Some((t, b)) = sheared.hit(&self.triangles[i], *t_max) {
                     *t_max = t;
                     best = Some((i, t, b));
@@ -382,7 +397,9 @@ impl Geometry for Mesh {
         let sheared = ShearedRay::new(ray);
         let mut hit = false;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            hit = range.into_iter().any(|i| sheared.hit(&self.triangles[i], *t_max).is_some());
+            hit = range
+                .into_iter()
+                .any(|i| !self.culled(i, ray.dir) && sheared.hit(&self.triangles[i], *t_max).is_some());
             hit
         });
         hit
