@@ -10,14 +10,18 @@
 //!
 //! Timings are medians of 3 runs of the render alone (scene building excluded).
 
-use lecture6::cli::{Example, render_example};
+#[macro_use]
+#[path = "../tests/common/examples.rs"]
+mod examples;
+
+use examples::{bitmap_textures, dispersion};
+use lecture6::cli::{Cli, Example};
 use lecture6::render::{Frame, RenderStats};
-use lecture6::scenes::{bitmap_textures, dispersion};
 use std::path::Path;
 
 fn render<E: Example>(args: &[&str]) -> (Frame, RenderStats) {
-    let argv = [E::NAME, "--quiet"].into_iter().chain(args.iter().copied());
-    render_example(&E::try_parse_from(argv).expect("bench arguments parse")).expect("render")
+    let argv = std::iter::once("--quiet").chain(args.iter().copied());
+    Cli::<E>::parse_args("bench", argv).expect("bench arguments parse").render().expect("render")
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -42,7 +46,7 @@ fn load_or_render(path: &Path, args: &[&str]) -> Frame {
         let pixels = img.pixels().map(|p| lecture6::Color::new(p[0], p[1], p[2])).collect();
         return Frame { width: img.width(), height: img.height(), pixels };
     }
-    let (frame, stats) = render::<dispersion::Args>(args);
+    let (frame, stats) = render::<dispersion::Options>(args);
     println!("  rendered {} in {:.1} s", path.display(), stats.elapsed.as_secs_f64());
     frame.save(path).expect("cache the reference");
     frame
@@ -53,10 +57,10 @@ fn main() {
     let (mut t1, mut t8) = (Vec::new(), Vec::new());
     let (mut rays1, mut rays8) = (0, 0);
     for _ in 0..5 {
-        let (_, s) = render::<bitmap_textures::Args>(&["--wavelengths", "1"]);
+        let (_, s) = render::<bitmap_textures::Options>(&["--wavelengths", "1"]);
         t1.push(s.elapsed.as_secs_f64());
         rays1 = s.counters.total();
-        let (_, s) = render::<bitmap_textures::Args>(&["--wavelengths", "8"]);
+        let (_, s) = render::<bitmap_textures::Options>(&["--wavelengths", "8"]);
         t8.push(s.elapsed.as_secs_f64());
         rays8 = s.counters.total();
     }
@@ -103,7 +107,7 @@ fn main() {
         let mut times = Vec::new();
         let mut frame = None;
         for _ in 0..3 {
-            let (f, s) = render::<dispersion::Args>(&args);
+            let (f, s) = render::<dispersion::Options>(&args);
             times.push(s.elapsed.as_secs_f64());
             frame = Some(f);
         }

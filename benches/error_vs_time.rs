@@ -13,7 +13,11 @@
 //!
 //! To add an example, add its sweeps to `sweeps()`.
 
-use lecture6::scenes::{bitmap_textures, dispersion, glossy, photon_map};
+#[macro_use]
+#[path = "../tests/common/examples.rs"]
+mod examples;
+
+use examples::{bitmap_textures, dispersion, glossy, photon_map};
 use lecture6::study::{self, Measurement, Sweep};
 use plotters::prelude::*;
 use std::fmt::Write as _;
@@ -45,11 +49,12 @@ fn with_size(extra: &[&'static str]) -> Vec<&'static str> {
 
 fn sweeps() -> Vec<Sweep> {
     let glossy_samples = |label: &str, fixed: &[&'static str], values: &[u32], reference: &[&str]| {
-        Sweep::new::<glossy::Args>(label, &with_size(fixed), "--glossy-samples", values, reference)
+        Sweep::new::<glossy::Options>("glossy", label, &with_size(fixed), "--glossy-samples", values, reference)
     };
     let doubling = [1, 2, 4, 8, 16, 32, 64, 128];
     vec![
-        Sweep::new::<bitmap_textures::Args>(
+        Sweep::new::<bitmap_textures::Options>(
+            "bitmap_textures",
             "anti-aliasing",
             &with_size(&[]),
             "--spp",
@@ -58,7 +63,8 @@ fn sweeps() -> Vec<Sweep> {
         ),
         // The whole picture against the converged reference: how to share samples between anti-aliasing
         // and the glossy cone (this is where the example's defaults come from).
-        Sweep::new::<glossy::Args>(
+        Sweep::new::<glossy::Options>(
+            "glossy",
             "--glossy-samples 1",
             &with_size(&["--glossy-samples", "1"]),
             "--spp",
@@ -78,14 +84,16 @@ fn sweeps() -> Vec<Sweep> {
         glossy_samples("stratified", &["--spp", "1", "--sampler", "stratified"], &doubling, &PIXEL_CENTRE_REFERENCE),
         // Dispersion: the slide's 8 wavelength passes against one wavelength per sample (its own bench,
         // `benches/dispersion.rs`, studies the methods in depth).
-        Sweep::new::<dispersion::Args>(
+        Sweep::new::<dispersion::Options>(
+            "dispersion",
             "8 passes",
             &[&SMALL[..], &["--spectral", "passes"]].concat(),
             "--spp",
             &[1, 2, 4, 8],
             &DISPERSION_REFERENCE,
         ),
-        Sweep::new::<dispersion::Args>(
+        Sweep::new::<dispersion::Options>(
+            "dispersion",
             "spectral sampling",
             &[&SMALL[..], &["--spectral", "sampled"]].concat(),
             "--spp",
@@ -104,7 +112,8 @@ fn sweeps() -> Vec<Sweep> {
 /// A sweep of `photon_map`'s `--photons` at 160 x 120 with the other options in `fixed`, through the pixel
 /// centres (`--spp 1`, as its reference) so that the error is the caustic estimate's alone.
 fn photon_sweep(label: &str, fixed: &[&'static str]) -> Sweep {
-    Sweep::new::<photon_map::Args>(
+    Sweep::new::<photon_map::Options>(
+        "photon_map",
         label,
         &[&SMALL[..], &["--spp", "1"], fixed].concat(),
         "--photons",

@@ -17,11 +17,15 @@
 //! cargo bench --bench layered_fresnel -- 15      # 15 runs of each
 //! ```
 
-use lecture6::cli::{Example, render_example};
+#[macro_use]
+#[path = "../tests/common/examples.rs"]
+mod examples;
+
+use examples::{fresnel, layered};
+use lecture6::cli::{Cli, Example};
 use lecture6::compare::difference;
 use lecture6::render::{Frame, RenderStats};
 use lecture6::scene::Counters;
-use lecture6::scenes::{fresnel, layered};
 use std::time::Duration;
 
 /// CPU time used by this process so far (user + system, all threads, including finished ones), if the
@@ -39,14 +43,14 @@ fn cpu_time() -> Option<Duration> {
 fn render<E: Example>(args: &[&str]) -> (Frame, RenderStats, Option<Duration>) {
     let parsed = parse::<E>(args);
     let before = cpu_time();
-    let (frame, stats) = render_example(&parsed).expect("the example renders");
+    let (frame, stats) = parsed.render().expect("the example renders");
     let cpu = before.zip(cpu_time()).map(|(b, a)| a.saturating_sub(b));
     (frame, stats, cpu)
 }
 
-fn parse<E: Example>(args: &[&str]) -> E {
-    let argv = [E::NAME, "--quiet", "--threads", "2"].into_iter().chain(args.iter().copied());
-    E::try_parse_from(argv).expect("valid bench arguments")
+fn parse<E: Example>(args: &[&str]) -> Cli<E> {
+    let argv = ["--quiet", "--threads", "2"].into_iter().chain(args.iter().copied());
+    Cli::<E>::parse_args("bench", argv).expect("valid bench arguments")
 }
 
 /// The CPU time of building the example's scene (reading its textures), `runs` times in a row.
@@ -54,7 +58,7 @@ fn load_cpu_time<E: Example>(runs: usize) -> Option<Duration> {
     let parsed = parse::<E>(&[]);
     let before = cpu_time();
     for _ in 0..runs {
-        parsed.build_scene().expect("the scene builds");
+        parsed.example.scene().expect("the scene builds");
     }
     before.zip(cpu_time()).map(|(b, a)| a.saturating_sub(b) / runs as u32)
 }
@@ -104,7 +108,7 @@ fn median_ms(times: &[Duration]) -> f64 {
     t.get(t.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
-fn compare_ways<'a, E: Example>(runs: usize, a: &mut Way<'a>, b: &mut Way<'a>) {
+fn compare_ways<'a, E: Example>(name: &str, runs: usize, a: &mut Way<'a>, b: &mut Way<'a>) {
     for _ in 0..runs {
         for way in [&mut *a, &mut *b] {
             let (frame, stats, cpu) = render::<E>(way.args);
@@ -117,7 +121,7 @@ fn compare_ways<'a, E: Example>(runs: usize, a: &mut Way<'a>, b: &mut Way<'a>) {
     let load = load_cpu_time::<E>(runs).map_or(f64::NAN, |d| d.as_secs_f64() * 1e3);
     println!(
         "{} {} (640x480, default spp, 2 threads; CPU times include {load:.0} ms of loading textures):",
-        E::NAME,
+        name,
         a.args.join(" ")
     );
     a.print();
@@ -136,18 +140,21 @@ fn compare_ways<'a, E: Example>(runs: usize, a: &mut Way<'a>, b: &mut Way<'a>) {
 fn main() {
     // `cargo bench` passes `--bench`; the only argument this program takes is the number of runs.
     let runs = std::env::args().skip(1).find_map(|a| a.parse().ok()).unwrap_or(7usize);
-    compare_ways::<fresnel::Args>(
+    compare_ways::<fresnel::Options>(
+        "fresnel",
         runs,
         &mut Way::new("adaptive", &[]),
         &mut Way::new("--exhaustive", &["--exhaustive"]),
     );
-    compare_ways::<layered::Args>(
+    compare_ways::<layered::Options>(
+        "layered",
         runs,
         &mut Way::new("layer skipping", &[]),
         &mut Way::new("--shade-every-layer", &["--shade-every-layer"]),
     );
     // Without adaptive depth control, the rays of a hidden layer are traced too, not just its shading done.
-    compare_ways::<layered::Args>(
+    compare_ways::<layered::Options>(
+        "layered",
         runs,
         &mut Way::new("layer skipping", &["--exhaustive"]),
         &mut Way::new("--shade-every-layer", &["--exhaustive", "--shade-every-layer"]),

@@ -7,13 +7,16 @@
 //! cargo bench --bench photon_map -- --photons 1000000 --k 100
 //! ```
 
-use clap::Parser;
-use lecture6::cli::{Example, prepare_scene};
+#[macro_use]
+#[path = "../tests/common/examples.rs"]
+mod examples;
+
+use examples::photon_map::Options;
+use lecture6::cli::Cli;
 use lecture6::math::Vector;
 use lecture6::photon_map::{Emitter, PhotonMap, StoredPhoton, trace_photons};
 use lecture6::render::thread_pool;
 use lecture6::rng::Rng;
-use lecture6::scenes::photon_map::Args;
 use std::time::{Duration, Instant};
 
 /// Runs of each measurement; the median is reported.
@@ -57,12 +60,12 @@ fn query_points(count: usize, photons: &[StoredPhoton], in_caustics: bool) -> Ve
 
 fn main() {
     // `cargo bench` passes `--bench`; everything else is the example's own options.
-    let argv = std::env::args().filter(|a| a != "--bench");
-    let args = Args::parse_from(argv);
-    let mut scene = prepare_scene(&args).unwrap_or_else(|e| panic!("{e}"));
+    let argv = std::env::args().skip(1).filter(|a| a != "--bench");
+    let args = Cli::<Options>::parse_args("photon_map", argv).unwrap_or_else(|e| e.exit());
+    let mut scene = args.prepare_scene().unwrap_or_else(|e| panic!("{e}"));
     scene.photon_map = None;
     let settings = scene.photons;
-    let seed = args.common().seed;
+    let seed = args.common.seed;
     let emitter = Emitter::new(&scene, settings.count, seed).expect("the scene has caustic casters");
 
     for threads in [Some(1), None] {

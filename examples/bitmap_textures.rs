@@ -12,6 +12,57 @@
 //! Homework ideas: add a `--scaling` option for the floor; implement trilinear filtering (mip-maps) and
 //! compare the far floor with `--spp 1`.
 
-fn main() -> std::process::ExitCode {
-    lecture6::cli::main::<lecture6::scenes::bitmap_textures::Args>()
+use lecture6::prelude::*;
+
+/// Bitmap textures: a tiled floor, a planet, a magnified checker and a wooden cube under a point light.
+#[derive(clap::Args, Clone, Debug)]
+pub struct Options {
+    /// How texels are filtered: nearest shows each texel as a block, bilinear blends neighbours.
+    #[arg(long, value_enum, default_value_t = Filter::Bilinear)]
+    pub filter: Filter,
+    /// How texture coordinates outside [0, 1) wrap (both directions).
+    #[arg(long, value_enum, default_value_t = Wrap::Repeat)]
+    pub wrap: Wrap,
+    /// An image of your own (PNG, JPEG, BMP, HDR, EXR) to put on the spheres and the cube.
+    #[arg(long, value_name = "FILE")]
+    pub texture: Option<PathBuf>,
+}
+
+impl Options {
+    /// The bundled texture `name`, or the student's `--texture` in its place, filtered and wrapped as asked.
+    fn load(&self, name: &str, own: Option<&Path>) -> Result<BitmapTexture> {
+        Ok(load_texture(name, own, self.filter)?.with_wrap(self.wrap, self.wrap))
+    }
+}
+
+impl Example for Options {
+    const DEFAULT_SPP: u32 = 4;
+
+    fn scene(&self) -> Result<Scene> {
+        let own = self.texture.as_deref();
+        let camera = Camera { position: Vector::new(0.0, 48.0, -95.0), pitch: -20.0, fov: 75.0, ..Camera::default() };
+        let mut scene = Scene::new(camera);
+        scene.ambient = Color::gray(0.12);
+        scene.lights.push(PointLight::new(Vector::new(-60.0, 160.0, -90.0), Color::WHITE, 38000.0));
+
+        // The floor keeps the bundled tiles, so a student's own image is judged on the objects.
+        let floor = self.load("floor_tiles.png", None)?.with_scaling(40.0);
+        scene.add(Node::new(Plane::new(0.0, 200.0), Lambert::new(floor)));
+
+        // A 2:1 world map wrapped once around a sphere: u is the longitude, v the latitude.
+        let planet = self.load("world.png", own)?;
+        scene.add(Node::new(Sphere::new(Vector::new(-42.0, 20.0, 25.0), 20.0), Phong::new(planet, 0.25, 40.0)));
+
+        // An 8 x 8 checker image, magnified: the filter decides whether its texels show as blocks.
+        let checker = self.load("checker8.png", own)?.with_scaling(0.5);
+        scene.add(Node::new(Sphere::new(Vector::new(0.0, 20.0, 25.0), 20.0), Lambert::new(checker)));
+
+        let wood = self.load("wood.png", own)?;
+        scene.add(Node::new(Cube::new(Vector::new(42.0, 16.0, 25.0), 16.0), Lambert::new(wood)));
+        Ok(scene)
+    }
+}
+
+fn main() -> ExitCode {
+    run::<Options>()
 }

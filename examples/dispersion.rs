@@ -20,6 +20,93 @@
 //! Homework ideas: draw the spectrum on a diffuse wall with photons that carry a wavelength; make the
 //! sphere a brilliant-cut gem from planes; weight the passes by the Planck spectrum of a warm light.
 
-fn main() -> std::process::ExitCode {
-    lecture6::cli::main::<lecture6::scenes::dispersion::Args>()
+use lecture6::prelude::*;
+use lecture6::workbook::SlitEnvironment;
+
+/// Which glass the prism and the sphere are made of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Glass {
+    /// Schott SF11, a dense flint (n_d 1.785, V_d 25.7), by its Sellmeier coefficients.
+    Sf11,
+    /// Schott N-BK7, a crown glass (n_d 1.517, V_d 64.2), by its Sellmeier coefficients.
+    NBk7,
+    /// The slide's model: `--nd` and `--abbe`, fitted by Cauchy's equation.
+    Abbe,
+}
+
+/// Dispersion: a prism fanning a white slit into a spectrum, and a glass sphere with coloured fringes.
+#[derive(clap::Args, Clone, Debug)]
+pub struct Options {
+    /// The glass of the prism and the sphere.
+    #[arg(long, value_enum, default_value_t = Glass::Sf11)]
+    pub glass: Glass,
+    /// Index of refraction at 587.6 nm, for `--glass abbe`.
+    #[arg(long, default_value_t = 1.7847)]
+    pub nd: f32,
+    /// Abbe number V_d for `--glass abbe`: smaller is more dispersive; `inf` is no dispersion.
+    #[arg(long, default_value_t = 25.68)]
+    pub abbe: f32,
+}
+
+impl Options {
+    /// The glass the options ask for.
+    pub fn ior(&self) -> Result<Ior> {
+        match self.glass {
+            Glass::Sf11 => Ok(Ior::SF11),
+            Glass::NBk7 => Ok(Ior::N_BK7),
+            Glass::Abbe => Ior::abbe(self.nd, self.abbe),
+        }
+    }
+}
+
+/// The wavelength (nm) whose minimum-deviation ray through the prism's centre meets the slit.
+pub const SLIT_WAVELENGTH: f32 = 560.0;
+
+/// The prism's apex angle, degrees.
+pub const APEX_ANGLE: f32 = 60.0;
+
+/// The angle by which a prism of apex angle `apex` (degrees) and index `n` turns a ray passing it
+/// symmetrically (minimum deviation), in degrees: `2 asin(n sin(A/2)) - A`. None if no ray gets through.
+pub fn minimum_deviation(apex: f32, n: f32) -> Option<f32> {
+    let s = n * (0.5 * apex.to_radians()).sin();
+    (s < 1.0).then(|| 2.0 * s.asin().to_degrees() - apex)
+}
+
+impl Example for Options {
+    const DEFAULT_SPP: u32 = 2;
+
+    fn scene(&self) -> Result<Scene> {
+        let ior = self.ior()?;
+        let mut scene = Scene::new(Camera { position: Vector::ZERO, fov: 60.0, ..Camera::default() });
+        scene.max_depth = 5;
+        // The slides' glass: refraction under a Fresnel-blended reflection, with the dispersive index.
+        let glass = Arc::new(fresnel_glass(ior, FresnelMode::Schlick, 1.0));
+
+        // The prism, left of the view. The ray from the camera to its centre has azimuth `view`; at minimum
+        // deviation it crosses the prism parallel to the base, turned by half the deviation, so the base faces
+        // the side it bends to. Turning the canonical prism (base towards -Z) by `yaw` puts it there. (An
+        // index with no ray through the prism, n sin(A/2) >= 1, leaves the slit straight ahead.)
+        let centre = Vector::new(-2.6, 0.0, 10.0);
+        let view = centre.x.atan2(centre.z).to_degrees();
+        let deviation = minimum_deviation(APEX_ANGLE, ior.at(Some(SLIT_WAVELENGTH))).unwrap_or(0.0);
+        let yaw = 90.0 - (view + 0.5 * deviation);
+        scene.add(Node::new(Prism::new(APEX_ANGLE, 1.8, 2.4), glass.clone()).rotate(yaw, 0.0, 0.0).translate(centre));
+
+        // The gem: a sphere of the same glass.
+        scene.add(Node::new(Sphere::new(Vector::new(2.8, -0.3, 10.0), 2.1), glass));
+
+        // A dark studio with a bright slit, where the prism's central ray leaves it, and a ring of lamps.
+        scene.environment = Some(Arc::new(SlitEnvironment {
+            azimuth: (view + deviation).to_radians(),
+            half_width: 0.4f32.to_radians(),
+            bottom: (-8.0f32).to_radians(),
+            top: 12.0f32.to_radians(),
+            radiance: 6.0,
+        }));
+        Ok(scene)
+    }
+}
+
+fn main() -> ExitCode {
+    run::<Options>()
 }

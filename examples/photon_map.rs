@@ -22,6 +22,76 @@
 //! colour bleeding; a caustic from a glass cube; project the photons' hit points to find where the camera
 //! should look.
 
-fn main() -> std::process::ExitCode {
-    lecture6::cli::main::<lecture6::scenes::photon_map::Args>()
+use lecture6::prelude::*;
+
+/// Caustics by photon mapping: a glass sphere focusing a point light onto the floor, and a small mirror
+/// throwing a bright spot.
+#[derive(clap::Args, Clone, Debug)]
+pub struct Options {
+    /// Index of refraction n_d of the glass sphere: higher focuses closer to the sphere.
+    #[arg(long, default_value_t = 1.5)]
+    pub ior: f32,
+    /// Abbe number of the glass sphere (the slide's measure of dispersion; 64 for crown glass, 25 for dense
+    /// flint). A finite number makes the caustic chromatic: photons carry wavelengths, and the picture is
+    /// traced per wavelength (try it with `--spectral sampled --spp 16`). inf: no dispersion.
+    #[arg(long, default_value_t = f32::INFINITY)]
+    pub abbe: f32,
+}
+
+/// Where the light is.
+pub const LIGHT: Vector = Vector::new(5.0, 120.0, 95.0);
+/// The glass sphere: its centre and radius.
+pub const GLASS_CENTER: Vector = Vector::new(-22.0, 19.0, 20.0);
+pub const GLASS_RADIUS: f32 = 12.0;
+/// The mirror's centre, and the point of the wall it throws the light's reflection to.
+pub const MIRROR_CENTER: Vector = Vector::new(28.0, 10.0, 15.0);
+pub const MIRROR_SPOT: Vector = Vector::new(20.0, 22.0, WALL_Z);
+/// The low wall at the back: where its face is, and how high it is.
+pub const WALL_Z: f32 = 70.0;
+pub const WALL_HEIGHT: f32 = 35.0;
+
+impl Example for Options {
+    const DEFAULT_SPP: u32 = 4;
+
+    fn scene(&self) -> Result<Scene> {
+        let ior = Ior::abbe(self.ior, self.abbe)?;
+        let camera = Camera { position: Vector::new(0.0, 55.0, -100.0), pitch: -22.0, fov: 70.0, ..Camera::default() };
+        let mut scene = Scene::new(camera);
+        scene.ambient = Color::gray(0.06);
+        scene.max_depth = 6;
+        scene.lights.push(PointLight::new(LIGHT, Color::WHITE, 20000.0));
+        // The photon map: photons shot at the glass and the mirror, and how many the estimate gathers, from
+        // how far (`--photons`, `--k`, `--radius` change them).
+        scene.photons = PhotonSettings { count: 400_000, k: 80, max_radius: Some(2.0), show: false };
+
+        let floor = CheckerTexture { color1: Color::gray(0.7), color2: Color::gray(0.55), scaling: 1.0 / 25.0 };
+        scene.add(Node::new(Plane::new(0.0, 150.0), Lambert::new(floor)));
+
+        // The wall: a plane, squeezed to its height and stood up facing the camera. The light is behind it,
+        // so its face is in shade: the mirror's spot shows on it.
+        let half = 0.5 * WALL_HEIGHT;
+        scene.add(
+            Node::new(Plane::new(0.0, 80.0), Lambert::new(Color::gray(0.75)))
+                .scale(Vector::new(1.0, 1.0, half / 80.0))
+                .rotate(0.0, 90.0, 0.0)
+                .translate(Vector::new(0.0, half, WALL_Z)),
+        );
+
+        // The slides' glass: a refraction layer, and over it a mirror layer blended by the Fresnel texture.
+        let glass = fresnel_glass(ior, FresnelMode::Schlick, 1.0);
+        scene.add(Node::new(Sphere::new(GLASS_CENTER, GLASS_RADIUS), glass));
+
+        // The law of reflection: the mirror's normal is halfway between the directions to the light and to
+        // the spot. A plane's normal is +Y; roll tilts it, yaw turns it about the vertical.
+        let normal = ((LIGHT - MIRROR_CENTER).normalize() + (MIRROR_SPOT - MIRROR_CENTER).normalize()).normalize();
+        let roll = normal.y.acos().to_degrees();
+        let yaw = normal.z.atan2(normal.x).to_degrees();
+        scene
+            .add(Node::new(Plane::new(0.0, 4.0), Reflection::new(0.9)).rotate(yaw, 0.0, roll).translate(MIRROR_CENTER));
+        Ok(scene)
+    }
+}
+
+fn main() -> ExitCode {
+    run::<Options>()
 }

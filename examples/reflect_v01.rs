@@ -11,6 +11,33 @@
 //!
 //! Homework ideas: colour the mirrors (a multiplier per channel); count how deep the deepest ray went.
 
-fn main() -> std::process::ExitCode {
-    lecture6::cli::main::<lecture6::scenes::reflect_v01::Args>()
+use lecture6::prelude::*;
+
+/// Reflection v0.1: mirrors with 20% loss per bounce and no depth limit.
+#[derive(clap::Args, Clone, Debug)]
+pub struct Options {
+    /// Put two large mirrors facing each other around the camera: the runaway recursion of v0.1.
+    #[arg(long)]
+    pub mirrors: bool,
+    /// The fraction of light every mirror reflects (the slide's 0.8: "20% loss of energy").
+    #[arg(long, default_value_t = 0.8)]
+    pub multiplier: f32,
+}
+
+impl Example for Options {
+    const DEFAULT_SPP: u32 = 4;
+
+    fn scene(&self) -> Result<Scene> {
+        // Two mirror spheres (`Reflection`, src/shader/reflection.rs) and a red ball on a checker floor.
+        let mut scene = workbook::mirror_room(self.multiplier, self.mirrors)?;
+        // The slide's v0.1 has no depth limit (only the renderer's safety cap remains), and no adaptive depth
+        // control either: a ray keeps bouncing however faint it has become, which is the danger it shows.
+        scene.max_depth = u32::MAX;
+        scene.min_ray_weight = 0.0;
+        Ok(scene)
+    }
+}
+
+fn main() -> ExitCode {
+    run::<Options>()
 }

@@ -12,6 +12,27 @@
 //! Homework ideas: instead of black past the limit, return the environment; stop a ray early when its
 //! `weight` (the product of the multipliers on its way) drops below 1%, and compare the time.
 
-fn main() -> std::process::ExitCode {
-    lecture6::cli::main::<lecture6::scenes::reflect_v02::Args>()
+use lecture6::prelude::*;
+
+/// Reflection v0.2: the facing mirrors of v0.1 with a depth limit (`MAX_RAY_DEPTH`, 2 unless `--max-depth`).
+#[derive(clap::Args, Clone, Debug)]
+pub struct Options {
+    /// The fraction of light every mirror reflects.
+    #[arg(long, default_value_t = 0.8)]
+    pub multiplier: f32,
+}
+
+impl Example for Options {
+    const DEFAULT_SPP: u32 = 4;
+
+    fn scene(&self) -> Result<Scene> {
+        // `reflect_v01`'s scene, always with the two mirrors facing each other around the camera.
+        let mut scene = workbook::mirror_room(self.multiplier, true)?;
+        scene.max_depth = MAX_RAY_DEPTH;
+        Ok(scene)
+    }
+}
+
+fn main() -> ExitCode {
+    run::<Options>()
 }

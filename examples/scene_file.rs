@@ -22,19 +22,14 @@
 //!
 //! Homework ideas: write your homework's scene as a file; add a `Const` shader to the loader.
 
-use lecture6::cli::{self, CommonArgs, Example};
-use lecture6::error::Result;
+use lecture6::cli::CommonArgs;
+use lecture6::prelude::*;
 use lecture6::render::RenderSettings;
-use lecture6::scene::Scene;
 use lecture6::scene_file::{self, LoadOptions};
-use std::path::PathBuf;
 
 /// Renders a scene file of the course's format (.qdmg).
-#[derive(clap::Parser, Clone, Debug)]
-#[command(name = "scene_file", version)]
+#[derive(clap::Args, Clone, Debug)]
 pub struct Options {
-    #[command(flatten)]
-    pub common: CommonArgs,
     /// The scene file.
     #[arg(value_name = "FILE.qdmg", default_value = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/data/fresnel.qdmg"))]
     pub file: PathBuf,
@@ -44,28 +39,29 @@ pub struct Options {
     pub skip_unsupported: bool,
 }
 
+impl Options {
+    fn load(&self) -> Result<scene_file::SceneFile> {
+        scene_file::load(&self.file, &LoadOptions { skip_unsupported: self.skip_unsupported })
+    }
+}
+
 impl Example for Options {
-    const NAME: &'static str = "scene_file";
     const DEFAULT_SPP: u32 = 1;
 
-    fn common(&self) -> &CommonArgs {
-        &self.common
+    fn scene(&self) -> Result<Scene> {
+        Ok(self.load()?.scene)
     }
 
-    fn build_scene(&self) -> Result<Scene> {
-        self.build_scene_and_settings(&mut cli::settings(self))
-    }
-
-    fn build_scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
-        let file = scene_file::load(&self.file, &LoadOptions { skip_unsupported: self.skip_unsupported })?;
-        if !self.common.quiet {
+    /// The file's frame size and anti-aliasing, where the options leave them open; its warnings on stderr.
+    fn scene_and_settings(&self, common: &CommonArgs, settings: &mut RenderSettings) -> Result<Scene> {
+        let file = self.load()?;
+        if !common.quiet {
             for w in &file.warnings {
                 eprintln!("{w}");
             }
         }
-        let c = &self.common;
-        settings.width = c.width.unwrap_or(file.width);
-        settings.height = c.height.unwrap_or(file.height);
+        settings.width = common.width.unwrap_or(file.width);
+        settings.height = common.height.unwrap_or(file.height);
         // With one sample per pixel (the default) the file's `wantAA` decides; more samples replace it.
         if settings.spp == 1 {
             settings.adaptive_aa |= file.adaptive_aa;
@@ -74,6 +70,6 @@ impl Example for Options {
     }
 }
 
-fn main() -> std::process::ExitCode {
-    cli::main::<Options>()
+fn main() -> ExitCode {
+    run::<Options>()
 }

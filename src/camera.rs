@@ -53,6 +53,18 @@ pub struct CameraFrame {
 }
 
 impl Camera {
+    /// A camera at `from` looking at `to`, with the picture upright (no roll) and a field of view of `fov`
+    /// degrees across the diagonal: the course's yaw and pitch computed from the direction, so that a scene
+    /// is framed without trying angles. The direction must not be straight up or down.
+    pub fn look_at(from: Vector, to: Vector, fov: f32) -> Camera {
+        let d = (to - from).normalize();
+        // With zero angles the camera looks along +Z; pitch lifts the view towards +Y, then a positive yaw
+        // turns it towards -X (see `rotation`).
+        let pitch = d.y.clamp(-1.0, 1.0).asin().to_degrees();
+        let yaw = (-d.x).atan2(d.z).to_degrees();
+        Camera { position: from, yaw, pitch, fov, ..Camera::default() }
+    }
+
     /// Prepares the camera for a `width` x `height` image (sets `aspect`).
     pub fn frame(&self, width: u32, height: u32) -> CameraFrame {
         let aspect = width as f32 / height as f32;

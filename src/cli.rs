@@ -1,6 +1,6 @@
 //! The command line every example shares, and the one function that runs an example end to end:
 //! parse the options, build the scene, render, write the picture, compare it with a reference if asked,
-//! and print one summary line. The regression tests go through [`render_example`], the same path.
+//! and print one summary line. The regression tests go through [`Cli::render`], the same path.
 //!
 //! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
 //! unknown options, whose message is put on one line too), never a panic.
@@ -12,7 +12,6 @@ use crate::photon_map::{PhotonArgs, PhotonMap};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::spectral::{SpectralMode, SpectralPlan};
-use clap::Parser;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -53,14 +52,14 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,
     /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
-    /// [default: out/<example>.png]
+    /// [default: out/EXAMPLE.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
     /// Print nothing but errors: no progress bar, no summary.
     #[arg(long, short, help_heading = COMMON)]
     pub quiet: bool,
     /// Compare the picture with a reference PNG: print RMSE, PSNR and the largest difference, and write a
-    /// heat map of the difference next to the output (<output stem>-diff.png).
+    /// heat map of the difference next to the output (OUTPUT-diff.png).
     #[arg(long, value_name = "REFERENCE.png", help_heading = COMMON)]
     pub compare: Option<PathBuf>,
     /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
@@ -86,109 +85,174 @@ pub struct CommonArgs {
     pub photons: PhotonArgs,
 }
 
-/// An example: its options (clap) and how they turn into a scene.
-pub trait Example: Parser {
-    /// The example's name: its binary, its default output `out/<NAME>.png`, its `expected/<NAME>.png`.
-    const NAME: &'static str;
+/// An example: its own options (a `clap::Args` struct) and how they turn into a scene. The options every
+/// example shares ([`CommonArgs`]) and the command itself come from [`Cli`]; an example states only what is
+/// its own:
+///
+/// ```no_run
+/// use lecture6::prelude::*;
+///
+/// /// A red ball.
+/// #[derive(clap::Args, Clone, Debug)]
+/// pub struct Options {
+///     /// The ball's radius.
+///     #[arg(long, default_value_t = 10.0)]
+///     radius: f32,
+/// }
+///
+/// impl Example for Options {
+///     const DEFAULT_SPP: u32 = 4;
+///
+///     fn scene(&self) -> Result<Scene> {
+///         let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 10.0, -50.0), Vector::ZERO, 60.0));
+///         scene.lights.push(PointLight::new(Vector::new(-30.0, 60.0, -40.0), Color::WHITE, 5000.0));
+///         scene.add(Node::new(Sphere::new(Vector::ZERO, self.radius), Lambert::new(Color::new(0.8, 0.1, 0.1))));
+///         Ok(scene)
+///     }
+/// }
+///
+/// fn main() -> ExitCode {
+///     run::<Options>()
+/// }
+/// ```
+pub trait Example: clap::Args + Clone + Send + Sync + 'static {
     /// Samples per pixel when `--spp` is not given.
     const DEFAULT_SPP: u32;
-    fn common(&self) -> &CommonArgs;
     /// Builds the scene the options describe. Bad files or values are errors, not panics.
-    fn build_scene(&self) -> Result<Scene>;
-    /// Builds the scene as [`Example::build_scene`] does, and sets the render settings that the scene
-    /// decides when the options leave them open (a scene file's frame size and anti-aliasing). By default
+    fn scene(&self) -> Result<Scene>;
+    /// Builds the scene as [`Example::scene`] does, and sets the render settings that the scene decides
+    /// where the common options leave them open (a scene file's frame size and anti-aliasing). By default
     /// the settings are the options'.
-    fn build_scene_and_settings(&self, _settings: &mut RenderSettings) -> Result<Scene> {
-        self.build_scene()
+    fn scene_and_settings(&self, _common: &CommonArgs, _settings: &mut RenderSettings) -> Result<Scene> {
+        self.scene()
     }
 }
 
-/// The render settings the options ask for.
-pub fn settings<E: Example>(args: &E) -> RenderSettings {
-    let c = args.common();
-    RenderSettings {
-        width: c.width.unwrap_or(640),
-        height: c.height.unwrap_or(480),
-        spp: c.spp.unwrap_or(E::DEFAULT_SPP),
-        threads: c.threads,
-        seed: c.seed,
-        progress: !c.quiet,
-        wavelengths: c.wavelengths,
-        spectral: c.spectral,
-        adaptive_aa: c.adaptive_aa,
+/// The whole command line of an example: its own options, then the ones every example shares.
+#[derive(clap::Parser, Clone, Debug)]
+#[command(version)]
+pub struct Cli<E: Example> {
+    #[command(flatten)]
+    pub example: E,
+    #[command(flatten)]
+    pub common: CommonArgs,
+}
+
+impl<E: Example> Cli<E> {
+    /// The example's command, named `name` (its binary), its `--help` showing the example's own `--spp`
+    /// default.
+    pub fn command_named(name: &str) -> clap::Command {
+        <Cli<E> as clap::CommandFactory>::command()
+            .name(name.to_string())
+            .bin_name(name.to_string())
+            .mut_arg("spp", |arg| arg.default_value(E::DEFAULT_SPP.to_string()))
+    }
+
+    /// Parses the options `args` (without the program name) as the example's binary would.
+    pub fn parse_args<I, T>(name: &str, args: I) -> std::result::Result<Cli<E>, clap::Error>
+    where
+        I: IntoIterator<Item = T>,
+        T: Into<std::ffi::OsString> + Clone,
+    {
+        let argv = std::iter::once(std::ffi::OsString::from(name)).chain(args.into_iter().map(Into::into));
+        let matches = Self::command_named(name).try_get_matches_from(argv)?;
+        <Cli<E> as clap::FromArgMatches>::from_arg_matches(&matches)
+    }
+
+    /// The render settings the options ask for.
+    pub fn settings(&self) -> RenderSettings {
+        let c = &self.common;
+        RenderSettings {
+            width: c.width.unwrap_or(640),
+            height: c.height.unwrap_or(480),
+            spp: c.spp.unwrap_or(E::DEFAULT_SPP),
+            threads: c.threads,
+            seed: c.seed,
+            progress: !c.quiet,
+            wavelengths: c.wavelengths,
+            spectral: c.spectral,
+            adaptive_aa: c.adaptive_aa,
+        }
+    }
+
+    /// Builds the example's scene as the options say, ready to render: the scene's own settings overridden
+    /// by the common options, and its caustic photon map built (in parallel, on `--threads` threads) if it
+    /// needs one.
+    pub fn prepare_scene(&self) -> Result<Scene> {
+        self.prepare_scene_and_settings(&mut self.settings())
+    }
+
+    /// [`Cli::prepare_scene`], letting the scene set what the options leave open in `settings` (see
+    /// [`Example::scene_and_settings`]).
+    pub fn prepare_scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
+        let common = &self.common;
+        let mut scene = self.example.scene_and_settings(common, settings)?;
+        if let Some(depth) = common.max_depth {
+            scene.max_depth = depth;
+        }
+        if let Some(path) = &common.env {
+            scene.environment = Some(environment::load_with_layout(path, common.env_layout)?);
+        }
+        if common.exhaustive {
+            scene.min_ray_weight = 0.0;
+        }
+        scene.check()?;
+        scene.relative_to_camera();
+        common.photons.apply(&mut scene.photons);
+        scene.photons.check()?;
+        if scene.photons.count > 0 {
+            let map = thread_pool(common.threads)?.install(|| PhotonMap::build(&scene, common.seed))?;
+            scene.photon_map = map.map(Arc::new);
+        }
+        Ok(scene)
+    }
+
+    /// Builds and renders the example's scene as the options say (the path both `main` and the tests use).
+    pub fn render(&self) -> Result<(Frame, RenderStats)> {
+        self.render_and_settings().map(|(frame, stats, _)| (frame, stats))
+    }
+
+    /// [`Cli::render`], returning the settings it rendered with too.
+    fn render_and_settings(&self) -> Result<(Frame, RenderStats, RenderSettings)> {
+        let mut settings = self.settings();
+        settings.check()?;
+        let scene = self.prepare_scene_and_settings(&mut settings)?;
+        let (frame, stats) = render(&scene, &settings)?;
+        Ok((frame, stats, settings))
+    }
+
+    /// Where the picture of the example called `name` goes.
+    pub fn output_path(&self, name: &str) -> PathBuf {
+        self.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}.png")))
     }
 }
 
-/// Builds an example's scene as its options say, ready to render: the scene's own settings overridden by the
-/// options, and its caustic photon map built (in parallel, on `--threads` threads) if it needs one.
-pub fn prepare_scene<E: Example>(args: &E) -> Result<Scene> {
-    prepare_scene_and_settings(args, &mut settings(args))
+/// The name of the running example: its binary's file name (`fresnel`, or `hw1` for a student's copy).
+fn program_name() -> String {
+    std::env::args_os()
+        .next()
+        .and_then(|arg0| Path::new(&arg0).file_stem().map(|s| s.to_string_lossy().into_owned()))
+        .unwrap_or_else(|| "example".to_string())
 }
 
-/// [`prepare_scene`], letting the scene set what the options leave open in `settings` (see
-/// [`Example::build_scene_and_settings`]).
-pub fn prepare_scene_and_settings<E: Example>(args: &E, settings: &mut RenderSettings) -> Result<Scene> {
-    let common = args.common();
-    let mut scene = args.build_scene_and_settings(settings)?;
-    if let Some(depth) = common.max_depth {
-        scene.max_depth = depth;
-    }
-    if let Some(path) = &common.env {
-        scene.environment = Some(environment::load_with_layout(path, common.env_layout)?);
-    }
-    if common.exhaustive {
-        scene.min_ray_weight = 0.0;
-    }
-    scene.relative_to_camera();
-    common.photons.apply(&mut scene.photons);
-    scene.photons.check()?;
-    if scene.photons.count > 0 {
-        let map = thread_pool(common.threads)?.install(|| PhotonMap::build(&scene, common.seed))?;
-        scene.photon_map = map.map(Arc::new);
-    }
-    Ok(scene)
-}
-
-/// Builds and renders an example's scene as its options say (the path both `main` and the tests use).
-pub fn render_example<E: Example>(args: &E) -> Result<(Frame, RenderStats)> {
-    render_example_and_settings(args).map(|(frame, stats, _)| (frame, stats))
-}
-
-/// [`render_example`], returning the settings it rendered with too.
-fn render_example_and_settings<E: Example>(args: &E) -> Result<(Frame, RenderStats, RenderSettings)> {
-    let mut settings = settings(args);
-    settings.check()?;
-    let scene = prepare_scene_and_settings(args, &mut settings)?;
-    let (frame, stats) = render(&scene, &settings)?;
-    Ok((frame, stats, settings))
-}
-
-/// Where the picture goes.
-pub fn output_path<E: Example>(args: &E) -> PathBuf {
-    args.common().output.clone().unwrap_or_else(|| Path::new("out").join(format!("{}.png", E::NAME)))
-}
-
-/// The example's command line, its `--help` showing the example's own `--spp` default.
-pub fn command<E: Example>() -> clap::Command {
-    E::command().mut_arg("spp", |arg| arg.default_value(E::DEFAULT_SPP.to_string()))
-}
-
-/// Runs an example end to end; the whole `main` of every example.
-pub fn main<E: Example>() -> ExitCode {
-    let parsed = command::<E>().try_get_matches().and_then(|matches| E::from_arg_matches(&matches));
-    let args = match parsed {
+/// Runs an example end to end (parse the options, build the scene, render, write the picture, compare it
+/// with a reference if asked, print one summary line): the whole `main` of every example. The example's
+/// name, which names its default output `out/<name>.png`, is its binary's.
+pub fn run<E: Example>() -> ExitCode {
+    let name = program_name();
+    let args = match Cli::<E>::parse_args(&name, std::env::args_os().skip(1)) {
         Ok(args) => args,
         // --help and --version print to stdout and succeed.
         Err(e) if !e.use_stderr() => e.exit(),
         Err(e) => {
-            eprintln!("{}: {}", E::NAME, one_line(&e.to_string()));
+            eprintln!("{name}: {}", one_line(&e.to_string()));
             return ExitCode::from(2);
         }
     };
-    match run(&args) {
+    match run_parsed(&name, &args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("{}: error: {e}", E::NAME);
+            eprintln!("{name}: error: {e}");
             ExitCode::from(2)
         }
     }
@@ -200,11 +264,11 @@ fn one_line(message: &str) -> String {
     message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
 }
 
-fn run<E: Example>(args: &E) -> Result<()> {
-    let output = output_path(args);
-    let (frame, stats, settings) = render_example_and_settings(args)?;
+fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
+    let output = args.output_path(name);
+    let (frame, stats, settings) = args.render_and_settings()?;
     frame.save(&output)?;
-    if !args.common().quiet {
+    if !args.common.quiet {
         let rays = stats.counters.total();
         let secs = stats.elapsed.as_secs_f64();
         let spectral = match &stats.spectral {
@@ -213,7 +277,7 @@ fn run<E: Example>(args: &E) -> Result<()> {
         };
         println!(
             "{}: {}x{}, {} spp{}{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
-            E::NAME,
+            name,
             settings.width,
             settings.height,
             settings.spp,
@@ -229,9 +293,7 @@ fn run<E: Example>(args: &E) -> Result<()> {
             println!(
                 "{}: {} ray(s) bounced past the safety cap of {} and returned black: without a depth limit, facing \
                  mirrors recurse until the stack overflows; that is why Reflection v0.2 adds MAX_RAY_DEPTH",
-                E::NAME,
-                stats.counters.capped_rays,
-                RECURSION_SAFETY_CAP
+                name, stats.counters.capped_rays, RECURSION_SAFETY_CAP
             );
         }
         if let Some(p) = &stats.photons {
@@ -239,7 +301,7 @@ fn run<E: Example>(args: &E) -> Result<()> {
             println!(
                 "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), k-d tree \
                  built in {:.3} s",
-                E::NAME,
+                name,
                 p.emitted,
                 p.stored,
                 trace,
@@ -248,7 +310,7 @@ fn run<E: Example>(args: &E) -> Result<()> {
             );
         }
     }
-    if let Some(reference) = &args.common().compare {
+    if let Some(reference) = &args.common.compare {
         let expected = compare::load_reference(reference)?;
         let actual = frame.to_rgb8();
         let diff = compare::difference(&actual, &expected).map_err(|e| match e {

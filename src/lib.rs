@@ -17,9 +17,13 @@
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
-//! | [`scenes`], [`cli`] | the examples' scenes and their shared command line |
+//! | [`cli`] | the command line every example shares, and the `run` that is every example's `main` |
+//! | [`workbook`] | what the examples share that is not a slide's lesson: bundled textures, the sky, studios |
 //! | [`scene_file`] | the course's `.qdmg` scene files |
 //! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
+//!
+//! An example, or a homework, starts with `use lecture6::prelude::*;`, which brings in everything it needs to
+//! build a scene and run it (see [`cli::Example`] for a whole example in 25 lines).
 
 pub mod adaptive_aa;
 pub mod assets;
@@ -41,14 +45,43 @@ pub mod rng;
 pub mod sampling;
 pub mod scene;
 pub mod scene_file;
-pub mod scenes;
 pub mod shader;
 pub mod spectral;
 pub mod study;
 pub mod teapot;
 pub mod texture;
 pub mod transform;
+pub mod workbook;
 
 pub use color::Color;
 pub use error::{Error, Result};
 pub use math::Vector;
+
+/// Everything an example or a homework needs: `use lecture6::prelude::*;`.
+pub mod prelude {
+    pub use crate::bitmap::{Bitmap, Filter, Wrap};
+    pub use crate::camera::Camera;
+    pub use crate::cli::{Example, run};
+    pub use crate::color::Color;
+    pub use crate::environment::{
+        ConstantEnvironment, CubemapEnvironment, Environment, SphericalEnvironment, load as load_environment,
+    };
+    pub use crate::error::{Error, Result};
+    pub use crate::geometry::{Aabb, Cube, Geometry, IntersectionInfo, Mesh, Plane, Prism, Sphere};
+    pub use crate::light::{PointLight, diffuse_light, light_loop};
+    pub use crate::math::{Vector, faceforward, reflect, refract};
+    pub use crate::node::Node;
+    pub use crate::photon_map::{PhotonScatter, PhotonSettings};
+    pub use crate::ray::Ray;
+    pub use crate::rng::Rng;
+    pub use crate::sampling::DiscSampler;
+    pub use crate::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
+    pub use crate::shader::{ColorSource, Lambert, Layered, Phong, Reflection, Refraction, Shader, fresnel_glass};
+    pub use crate::spectral::Ior;
+    pub use crate::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
+    pub use crate::transform::Transform;
+    pub use crate::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
+    pub use std::path::{Path, PathBuf};
+    pub use std::process::ExitCode;
+    pub use std::sync::Arc;
+}

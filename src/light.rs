@@ -20,13 +20,26 @@ impl PointLight {
     }
 }
 
-/// Calls `f(to_light, irradiance)` for every light that reaches the hit point, where `n` is the
-/// face-forwarded shading normal, `to_light` the unit direction to the light and `irradiance` the light's
-/// colour times its intensity over the squared distance (not yet multiplied by the cosine).
+/// The light loop of the diffuse shaders (Lambert, Phong, and any new one): the irradiance a diffuse surface
+/// receives at the hit point, whose face-forwarded shading normal is `n`. It is the sum of
 ///
-/// A light behind the surface (`dot(n, to_light) <= 0`) costs no shadow ray.
-pub fn for_each_light(ctx: &mut TraceContext, info: &IntersectionInfo, n: Vector, mut f: impl FnMut(Vector, Color)) {
+/// - the scene's ambient light,
+/// - for every lamp that reaches the point (a shadow ray says so), its irradiance times the cosine of its
+///   angle to the normal; a lamp behind the surface costs no shadow ray,
+/// - the caustic light of the photon map, if the scene has one (slide "Photon Mapping"): light that reaches
+///   the point through mirrors and glass, which shadow rays cannot find.
+///
+/// For each lamp that reaches the point it also calls `each_lamp(to_light, irradiance)`, with the unit
+/// direction to the lamp and its irradiance before the cosine, for the terms that depend on where the light
+/// comes from (Phong's highlight). A shader that takes its light from here gets caustics without asking.
+pub fn light_loop(
+    ctx: &mut TraceContext,
+    info: &IntersectionInfo,
+    n: Vector,
+    mut each_lamp: impl FnMut(Vector, Color),
+) -> Color {
     let scene = ctx.scene;
+    let mut irradiance = scene.ambient;
     for light in &scene.lights {
         let to_light = light.position - info.ip;
         let dist2 = to_light.length_squared();
@@ -35,7 +48,18 @@ pub fn for_each_light(ctx: &mut TraceContext, info: &IntersectionInfo, n: Vector
             continue;
         }
         if ctx.visible(info, light.position) {
-            f(l, light.color * (light.intensity / dist2));
+            let lamp = light.color * (light.intensity / dist2);
+            irradiance += lamp * n.dot(l);
+            each_lamp(l, lamp);
         }
     }
+    if let Some(map) = &scene.photon_map {
+        irradiance += map.irradiance(info.ip, n);
+    }
+    irradiance
+}
+
+/// The irradiance a diffuse surface receives at the hit point (see [`light_loop`]).
+pub fn diffuse_light(ctx: &mut TraceContext, info: &IntersectionInfo, n: Vector) -> Color {
+    light_loop(ctx, info, n, |_, _| {})
 }

@@ -1,14 +1,38 @@
 //! `Node` (slide "Model трансформация"): a geometry, the shader that colours it, and the transform that
 //! places it. Rays are intersected with nodes, not with bare geometry; a node takes its transform into
-//! account (`Node::intersect` on the slide). Geometry and shaders are shared through `Arc`, so two nodes can
+//! account (`Node::intersect` on the slide). Geometry and shaders can be shared through `Arc`, so two nodes can
 //! show the same mesh with different transforms and shaders (instancing) without a copy.
 
 use crate::geometry::{Aabb, Geometry, IntersectionInfo};
 use crate::math::Vector;
 use crate::ray::Ray;
-use crate::shader::Shader;
+use crate::shader::{IntoShader, Shader};
 use crate::transform::Transform;
 use std::sync::Arc;
+
+/// Anything that can be a node's geometry: a shape, or a shape shared with other nodes (`Arc<Mesh>`,
+/// `Arc<dyn Geometry>`), which is how two nodes show one mesh without a copy (instancing).
+pub trait IntoGeometry {
+    fn into_geometry(self) -> Arc<dyn Geometry>;
+}
+
+impl<G: Geometry + 'static> IntoGeometry for G {
+    fn into_geometry(self) -> Arc<dyn Geometry> {
+        Arc::new(self)
+    }
+}
+
+impl<G: Geometry + 'static> IntoGeometry for Arc<G> {
+    fn into_geometry(self) -> Arc<dyn Geometry> {
+        self
+    }
+}
+
+impl IntoGeometry for Arc<dyn Geometry> {
+    fn into_geometry(self) -> Arc<dyn Geometry> {
+        self
+    }
+}
 
 #[derive(Clone)]
 pub struct Node {
@@ -19,8 +43,10 @@ pub struct Node {
 }
 
 impl Node {
-    pub fn new(geometry: Arc<dyn Geometry>, shader: Arc<dyn Shader>) -> Node {
-        Node { geometry, shader, transform: None }
+    /// A node showing `geometry` with `shader`, not yet transformed. Either may be shared with other nodes
+    /// by passing an `Arc` of it (`Arc::new(mesh)`, then `mesh.clone()` for each node).
+    pub fn new(geometry: impl IntoGeometry, shader: impl IntoShader) -> Node {
+        Node { geometry: geometry.into_geometry(), shader: shader.into_shader(), transform: None }
     }
 
     fn with_transform(mut self, f: impl FnOnce(Transform) -> Transform) -> Node {

@@ -4,12 +4,12 @@
 //! raytracing": rays that start at the lamps), followed through mirrors, glass and layered surfaces, and
 //! stored where they land on a diffuse surface after at least one reflection or refraction: the *caustic*
 //! photon map. The stored photons go into a k-d tree. When a diffuse shader shades a point it asks the map
-//! ([`TraceContext::caustics`](crate::scene::TraceContext::caustics)), which finds the k nearest photons
+//! (through the light loop, [`crate::light::light_loop`]), which finds the k nearest photons
 //! and turns their power into the caustic light arriving there.
 //!
 //! How a photon behaves at a surface is the shader's business: [`Shader::scatter_photon`] returns a
-//! [`PhotonScatter`]. Its default is a diffuse surface (the photon lands); `Reflection`, `Refraction` and
-//! `Layered` override it, and the `Fresnel` texture takes part through a layer's blend.
+//! [`PhotonScatter`]: on a diffuse surface (Lambert, Phong) the photon lands; `Reflection`, `Refraction` and
+//! `Layered` send it on, and the `Fresnel` texture takes part through a layer's blend.
 //!
 //! Where this differs from the slides, and why:
 //! - The slide shoots photons "in all directions". Here each light aims only at the caustic casters (objects
@@ -356,7 +356,7 @@ fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Opti
                     return None;
                 }
                 power = power * filter / survival;
-                ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir, filter.max_channel());
+                ray = ray.spawn(&info, dir, filter.max_channel());
             }
             PhotonScatter::Absorb => return None,
         }

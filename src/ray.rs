@@ -4,6 +4,7 @@
 //! factors along its path, for adaptive ray-tree depth control), and `wavelength`, set for the passes of a
 //! dispersive render.
 
+use crate::geometry::IntersectionInfo;
 use crate::math::{Vector, offset_ray_origin};
 
 #[derive(Clone, Copy, Debug)]
@@ -31,13 +32,14 @@ impl Ray {
         self.start + t * self.dir
     }
 
-    /// A secondary ray spawned by a shader at a hit point: one level deeper, carrying this ray's wavelength,
-    /// its weight scaled by `attenuation`, starting at `p` offset robustly to the side of the surface
-    /// (normal `n`, error bound `error`) that `dir` goes to. This replaces the slides' `info.p + 1e-6 * n`,
-    /// which fails for scenes much larger or smaller than the course's.
-    pub fn spawn(&self, p: Vector, n: Vector, error: f32, dir: Vector, attenuation: f32) -> Ray {
+    /// A secondary ray spawned by a shader at the hit `info` (a reflection, a refraction, a glossy sample):
+    /// going in the unit direction `dir`, one level deeper, carrying this ray's wavelength, its weight scaled
+    /// by `attenuation` (how much of what it brings back the shader passes on). It starts at the hit point
+    /// moved off the surface, to the side `dir` goes to, by the hit's error bound. This replaces the slides'
+    /// `info.ip + 1e-6 * n`, which fails for scenes much larger or smaller than the course's.
+    pub fn spawn(&self, info: &IntersectionInfo, dir: Vector, attenuation: f32) -> Ray {
         Ray {
-            start: spawn_point(p, n, error, dir),
+            start: spawn_point(info.ip, info.geometric_normal, info.error, dir),
             dir,
             depth: self.depth + 1,
             weight: self.weight * attenuation,

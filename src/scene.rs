@@ -3,7 +3,7 @@
 //! `TraceContext` is what the course's C++ keeps in globals: the scene, the ray-depth limit, the random
 //! generator of the pixel being rendered and the ray counters. Shaders receive it and call
 //! [`TraceContext::raytrace`] to follow reflected and refracted rays, and [`TraceContext::visible`] for
-//! shadow rays, and [`TraceContext::caustics`] for the caustic light of the photon map. One context exists
+//! shadow rays (through [`crate::light::light_loop`], which adds the caustic light of the photon map as well). One context exists
 //! per pixel row being rendered, so threads never share one.
 //!
 //! Adaptive ray-tree depth control (the classic Whitted optimisation, beyond the slides): besides the
@@ -63,7 +63,7 @@ pub struct Scene {
     pub min_ray_weight: f32,
     /// How the caustic photon map is made (no photons by default).
     pub photons: PhotonSettings,
-    /// The caustic photon map, built before rendering (see [`crate::cli::prepare_scene`]); `None` renders
+    /// The caustic photon map, built before rendering (see [`crate::cli::Cli::prepare_scene`]); `None` renders
     /// without caustics.
     pub photon_map: Option<Arc<PhotonMap>>,
 }
@@ -216,11 +216,5 @@ impl<'a> TraceContext<'a> {
         let t_max = to_light.length();
         let ray = Ray::new(start, to_light / t_max);
         !self.scene.nodes.iter().any(|node| node.intersects(&ray, t_max))
-    }
-
-    /// The caustic light arriving at a diffuse hit point whose face-forwarded normal is `n` (slide "Photon
-    /// Mapping"): the photon map's irradiance estimate, black when the scene has no photon map.
-    pub fn caustics(&self, info: &IntersectionInfo, n: Vector) -> Color {
-        self.scene.photon_map.as_ref().map_or(Color::BLACK, |map| map.irradiance(info.ip, n))
     }
 }

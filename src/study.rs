@@ -13,7 +13,7 @@
 //! log-log chart. Another example joins it with one more [`Sweep::new`] there; a test
 //! (`tests/study.rs`) checks on a tiny picture that the error really falls as the sample count rises.
 
-use crate::cli::{Example, render_example};
+use crate::cli::{Cli, Example};
 use crate::error::{Error, Result};
 use crate::render::Frame;
 use crate::rng::mix64;
@@ -34,12 +34,11 @@ pub type RenderFn = fn(&[String]) -> Result<Timed>;
 
 /// Renders the example `E` with the options `args`, exactly as its binary would.
 pub fn render_timed<E: Example>(args: &[String]) -> Result<Timed> {
-    let argv = std::iter::once(E::NAME.to_string()).chain(args.iter().cloned());
-    let parsed = E::try_parse_from(argv).map_err(|e| {
+    let parsed = Cli::<E>::parse_args("study", args).map_err(|e| {
         let message = e.to_string();
         Error::parameter("study options", args.join(" "), message.lines().next().unwrap_or_default())
     })?;
-    let (frame, stats) = render_example(&parsed)?;
+    let (frame, stats) = parsed.render()?;
     // A caustic render's cost includes the photon pass that runs before it.
     let photon_pass = stats.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time);
     Ok(Timed { frame, seconds: (stats.elapsed + photon_pass).as_secs_f64(), rays: stats.counters.total() })
@@ -67,9 +66,10 @@ fn strings(args: &[&str]) -> Vec<String> {
 }
 
 impl Sweep {
-    /// A sweep of example `E`: `fixed` options for every render, `knob` taking each of `values`, and a
+    /// A sweep of example `E`, called `example`: `fixed` options for every render, `knob` taking each of `values`, and a
     /// reference rendered with `fixed` followed by `reference`.
     pub fn new<E: Example>(
+        example: &'static str,
         label: &str,
         fixed: &[&str],
         knob: &'static str,
@@ -77,7 +77,7 @@ impl Sweep {
         reference: &[&str],
     ) -> Sweep {
         Sweep {
-            example: E::NAME,
+            example,
             label: label.to_string(),
             fixed: strings(fixed),
             knob,

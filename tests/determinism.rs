@@ -5,13 +5,13 @@
 #[macro_use]
 mod common;
 
-use lecture6::scenes::bitmap_textures;
+use common::examples::bitmap_textures;
 
 macro_rules! thread_count_independent {
     ($($name:ident),* $(,)?) => {$(
         #[test]
         fn $name() {
-            type Args = lecture6::scenes::$name::Args;
+            type Args = common::examples::$name::Options;
             let size = ["--width", "96", "--height", "72", "--spp", "2"];
             let frame = |threads: &str| {
                 let args: Vec<&str> = size.iter().copied().chain(["--threads", threads]).collect();
@@ -30,18 +30,18 @@ every_example!(thread_count_independent);
 
 #[test]
 fn different_seeds_give_different_anti_aliasing() {
-    let a = common::render::<bitmap_textures::Args>(&["--seed", "1", "--width", "160", "--height", "120"]);
-    let b = common::render::<bitmap_textures::Args>(&["--seed", "2", "--width", "160", "--height", "120"]);
+    let a = common::render::<bitmap_textures::Options>(&["--seed", "1", "--width", "160", "--height", "120"]);
+    let b = common::render::<bitmap_textures::Options>(&["--seed", "2", "--width", "160", "--height", "120"]);
     assert_ne!(a, b, "the seed must reach the sampler");
 }
 
 #[test]
 fn glossy_is_identical_for_one_and_two_threads_with_either_sampler() {
-    use lecture6::scenes::glossy;
+    use common::examples::glossy;
     for sampler in ["random", "stratified"] {
         let args = |threads| ["--threads", threads, "--width", "96", "--height", "72", "--sampler", sampler];
-        let one = common::render::<glossy::Args>(&args("1"));
-        let two = common::render::<glossy::Args>(&args("2"));
+        let one = common::render::<glossy::Options>(&args("1"));
+        let two = common::render::<glossy::Options>(&args("2"));
         assert!(one == two, "{sampler}: the picture changed with the thread count");
     }
 }

@@ -3,8 +3,8 @@
 
 mod common;
 
-use clap::Parser;
-use lecture6::cli::{Example, render_example, settings};
+use common::examples::{bitmap_textures, dispersion};
+use lecture6::cli::Example;
 use lecture6::color::Color;
 use lecture6::environment::{ConstantEnvironment, Environment};
 use lecture6::geometry::{Prism, Sphere};
@@ -13,7 +13,6 @@ use lecture6::node::Node;
 use lecture6::render::{Frame, RenderStats, render_with_plan};
 use lecture6::rng::Rng;
 use lecture6::scene::{Scene, TraceContext};
-use lecture6::scenes::{bitmap_textures, dispersion};
 use lecture6::shader::Refraction;
 use lecture6::spectral::{
     Band, Ior, LAMBDA_C, LAMBDA_D, LAMBDA_F, LAMBDA_MAX, LAMBDA_MIN, SpectralPlan, bands, cie_xyz,
@@ -23,8 +22,7 @@ use std::sync::Arc;
 const SMALL: [&str; 4] = ["--width", "96", "--height", "72"];
 
 fn run<E: Example>(args: &[&str]) -> (Frame, RenderStats) {
-    let argv = std::iter::once(E::NAME).chain(args.iter().copied());
-    render_example(&E::try_parse_from(argv).expect("test arguments parse")).expect("render")
+    common::parse::<E>(args).render().expect("render")
 }
 
 fn args_with<'a>(extra: &[&'a str]) -> Vec<&'a str> {
@@ -195,9 +193,9 @@ fn the_prism_deviates_each_wavelength_as_snells_law_says() {
 
 #[test]
 fn a_scene_without_dispersion_renders_one_pass_whatever_the_wavelength_count() {
-    let (one, stats_one) = run::<bitmap_textures::Args>(&args_with(&["--wavelengths", "1"]));
-    let (eight, stats_eight) = run::<bitmap_textures::Args>(&args_with(&["--wavelengths", "8"]));
-    let (sampled, _) = run::<bitmap_textures::Args>(&args_with(&["--spectral", "sampled"]));
+    let (one, stats_one) = run::<bitmap_textures::Options>(&args_with(&["--wavelengths", "1"]));
+    let (eight, stats_eight) = run::<bitmap_textures::Options>(&args_with(&["--wavelengths", "8"]));
+    let (sampled, _) = run::<bitmap_textures::Options>(&args_with(&["--spectral", "sampled"]));
     assert_eq!(stats_eight.spectral, SpectralPlan::White);
     assert_eq!(stats_one.counters, stats_eight.counters, "the same rays");
     assert_eq!(stats_eight.counters.rays_by_depth[0], 96 * 72 * 4, "one camera ray per sample");
@@ -206,9 +204,9 @@ fn a_scene_without_dispersion_renders_one_pass_whatever_the_wavelength_count() {
 
 #[test]
 fn a_dispersive_scene_traces_every_pass_and_counts_its_rays() {
-    let (_, two) = run::<dispersion::Args>(&args_with(&["--wavelengths", "2", "--spp", "1"]));
-    let (_, five) = run::<dispersion::Args>(&args_with(&["--wavelengths", "5", "--spp", "1"]));
-    let (_, sampled) = run::<dispersion::Args>(&args_with(&["--spectral", "sampled", "--spp", "3"]));
+    let (_, two) = run::<dispersion::Options>(&args_with(&["--wavelengths", "2", "--spp", "1"]));
+    let (_, five) = run::<dispersion::Options>(&args_with(&["--wavelengths", "5", "--spp", "1"]));
+    let (_, sampled) = run::<dispersion::Options>(&args_with(&["--spectral", "sampled", "--spp", "3"]));
     assert_eq!(two.spectral.passes(), 2);
     assert_eq!(two.counters.rays_by_depth[0], 96 * 72 * 2);
     assert_eq!(five.counters.rays_by_depth[0], 96 * 72 * 5);
@@ -219,28 +217,24 @@ fn a_dispersive_scene_traces_every_pass_and_counts_its_rays() {
 #[test]
 fn glass_without_dispersion_renders_as_the_constant_index_glass() {
     let flat = ["--glass", "abbe", "--nd", "1.7", "--abbe", "inf", "--spp", "1"];
-    let parse = |extra: &[&str]| {
-        let argv: Vec<&str> = std::iter::once("dispersion").chain(args_with(extra)).collect();
-        dispersion::Args::try_parse_from(argv).unwrap()
-    };
+    let parse = |extra: &[&str]| common::parse::<dispersion::Options>(&args_with(extra));
     let args = parse(&flat);
-    let (white, stats) = render_example(&args).unwrap();
+    let (white, stats) = args.render().unwrap();
     assert_eq!(stats.spectral, SpectralPlan::White, "V_d = inf is not dispersive: one pass");
     // The same scene traced in 8 wavelength passes gives the same picture, bit for bit.
-    let scene = args.build_scene().unwrap();
-    let (passes, _) = render_with_plan(&scene, &settings(&args), SpectralPlan::Passes(bands(8))).unwrap();
+    let scene = args.example.scene().unwrap();
+    let (passes, _) = render_with_plan(&scene, &args.settings(), SpectralPlan::Passes(bands(8))).unwrap();
     assert!(white == passes, "V_d = inf traced in 8 passes differs from the white render");
     // A little dispersion does change the picture (so the comparison above could fail).
-    let (dispersive, _) =
-        render_example(&parse(&["--glass", "abbe", "--nd", "1.7", "--abbe", "60", "--spp", "1"])).unwrap();
+    let (dispersive, _) = parse(&["--glass", "abbe", "--nd", "1.7", "--abbe", "60", "--spp", "1"]).render().unwrap();
     assert!(white != dispersive);
 }
 
 #[test]
 fn dispersion_is_identical_for_any_thread_count_and_finite() {
     for mode in ["passes", "sampled"] {
-        let a = run::<dispersion::Args>(&args_with(&["--threads", "1", "--spectral", mode])).0;
-        let b = run::<dispersion::Args>(&args_with(&["--threads", "2", "--spectral", mode])).0;
+        let a = run::<dispersion::Options>(&args_with(&["--threads", "1", "--spectral", mode])).0;
+        let b = run::<dispersion::Options>(&args_with(&["--threads", "2", "--spectral", mode])).0;
         assert!(a == b, "{mode}: the picture changed with the thread count");
         assert!(a.pixels.iter().all(|p| p.is_finite() && p.0.min_element() >= 0.0), "{mode}");
     }
@@ -251,8 +245,8 @@ fn the_gem_shows_colour_where_white_glass_shows_none() {
     // Through dispersive glass some pixels are strongly coloured; through the same glass without
     // dispersion (lit only by white light) none are.
     let chroma = |f: &Frame| f.pixels.iter().map(|p| p.max_channel() - p.0.min_element()).fold(0.0f32, f32::max);
-    let dispersive = run::<dispersion::Args>(&args_with(&[])).0;
-    let flat = run::<dispersion::Args>(&args_with(&["--glass", "abbe", "--abbe", "inf"])).0;
+    let dispersive = run::<dispersion::Options>(&args_with(&[])).0;
+    let flat = run::<dispersion::Options>(&args_with(&["--glass", "abbe", "--abbe", "inf"])).0;
     assert!(chroma(&flat) < 0.05, "white glass made colour: {}", chroma(&flat));
     assert!(chroma(&dispersive) > 0.5, "dispersive glass made no colour: {}", chroma(&dispersive));
 }

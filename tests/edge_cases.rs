@@ -91,7 +91,7 @@ fn rays_along_sphere_tangents_hit_on_the_sphere_or_miss() {
             let tangent = hit.normal.cross(Vector::new(dir.z, dir.x, dir.y)).normalize();
             for tilt in [0.0, 1e-6, -1e-6] {
                 let along = (tangent + hit.normal * tilt).normalize();
-                let ray = Ray::new(center, dir).spawn(hit.ip, hit.geometric_normal, hit.error, along, 1.0);
+                let ray = Ray::new(center, dir).spawn(&hit, along, 1.0);
                 let inside = (ray.start - center).length() < radius;
                 assert_eq!(inside, along.dot(hit.normal) < 0.0, "spawned on the wrong side: {ray:?}");
                 match sphere.intersect(&ray, f32::INFINITY) {
@@ -250,7 +250,7 @@ fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
         }
     }
     // The same file placed in the model_transform scene renders without NaN (through the example's path).
-    let frame = common::render::<lecture6::scenes::model_transform::Args>(&[
+    let frame = common::render::<common::examples::model_transform::Options>(&[
         "--mesh",
         path.to_str().unwrap(),
         "--width",
@@ -268,7 +268,7 @@ fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
 /// every hit of a teapot scaled by 1e4; the hit must not depend on the direction's length.
 #[test]
 fn a_mesh_hit_does_not_depend_on_the_length_of_the_direction() {
-    let mesh = Mesh::load(&lecture6::scenes::texture_path("teapot.obj")).unwrap();
+    let mesh = Mesh::load(&lecture6::workbook::texture_path("teapot.obj")).unwrap();
     let mut hits = 0;
     for k in 0..200 {
         let a = k as f32 * 0.31;

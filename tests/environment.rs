@@ -3,7 +3,7 @@
 
 mod common;
 
-use clap::Parser;
+use common::examples::bitmap_textures;
 use lecture6::assets::sun_direction;
 use lecture6::bitmap::{Bitmap, Filter};
 use lecture6::camera::Camera;
@@ -15,7 +15,6 @@ use lecture6::environment::{
 };
 use lecture6::math::Vector;
 use lecture6::rng::Rng;
-use lecture6::scenes::bitmap_textures;
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -195,17 +194,17 @@ fn a_missing_or_unreadable_face_is_an_error_naming_its_file() {
 #[test]
 fn env_option_sets_the_environment_of_any_example() {
     let args = ["--width", "32", "--height", "24", "--spp", "1"];
-    let scene = bitmap_textures::Args::try_parse_from(["bitmap_textures"]).unwrap().build_scene().unwrap();
+    let scene = common::parse::<bitmap_textures::Options>(&[]).example.scene().unwrap();
     let ray = scene.camera.frame(32, 24).get_screen_ray(0.5, 0.5);
     assert!(scene.closest_hit(&ray).is_none(), "the top-left pixel must see the environment");
-    assert_eq!(common::render::<bitmap_textures::Args>(&args).get(0, 0), Color::BLACK);
+    assert_eq!(common::render::<bitmap_textures::Options>(&args).get(0, 0), Color::BLACK);
 
     for (path, env) in [
         (sky_path(), environment::load(&sky_path()).unwrap()),
         (cubemap_path(), environment::load(&cubemap_path()).unwrap()),
     ] {
         let with_env = [&args[..], &["--env", path.to_str().unwrap()]].concat();
-        let frame = common::render::<bitmap_textures::Args>(&with_env);
+        let frame = common::render::<bitmap_textures::Options>(&with_env);
         assert_eq!(frame.get(0, 0), env.get(ray.dir), "{}", path.display());
     }
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use clap::Parser;
+use common::examples::glossy;
 use lecture6::Color;
 use lecture6::camera::Camera;
 use lecture6::cli::Example;
@@ -15,7 +15,6 @@ use lecture6::render::{RenderSettings, render};
 use lecture6::rng::Rng;
 use lecture6::sampling::{DiscSampler, DiscSamples};
 use lecture6::scene::Scene;
-use lecture6::scenes::glossy;
 use lecture6::shader::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 use std::sync::{Arc, Mutex};
 
@@ -25,8 +24,8 @@ fn small(spp: u32) -> RenderSettings {
 
 #[test]
 fn glossiness_one_is_the_mirror_exactly() {
-    let args = glossy::Args::try_parse_from(["glossy", "--glossiness", "1", "--glossy-samples", "50"]).unwrap();
-    let glossy_scene = args.build_scene().unwrap();
+    let args = common::parse::<glossy::Options>(&["--glossiness", "1", "--glossy-samples", "50"]);
+    let glossy_scene = args.example.scene().unwrap();
     let mut mirror_scene = glossy_scene.clone();
     let spheres = mirror_scene.nodes.len() - 3;
     for node in &mut mirror_scene.nodes[spheres..] {
@@ -154,8 +153,8 @@ fn adaptive_depth_control_never_prunes_glossy_samples() {
     // Each sample carries the mirror's full weight: were it given its 1/2048 share, the reflections of the
     // spheres in each other (depth 1, weight below the finest sRGB step) would be pruned and turn black.
     let args = ["--width", "40", "--height", "30", "--spp", "1", "--glossy-samples", "2048"];
-    let adaptive = common::render::<glossy::Args>(&args);
-    let exhaustive = common::render::<glossy::Args>(&[&args[..], &["--exhaustive"]].concat());
+    let adaptive = common::render::<glossy::Options>(&args);
+    let exhaustive = common::render::<glossy::Options>(&[&args[..], &["--exhaustive"]].concat());
     assert!(adaptive == exhaustive, "adaptive depth control changed the glossy picture");
 }
 

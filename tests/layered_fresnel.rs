@@ -3,19 +3,19 @@
 
 mod common;
 
+use common::examples::{fresnel as fresnel_example, layered};
 use lecture6::Color;
 use lecture6::camera::Camera;
 use lecture6::environment::ConstantEnvironment;
 use lecture6::geometry::{Cube, IntersectionInfo, Sphere};
 use lecture6::math::{Vector, fresnel, fresnel_exact};
 use lecture6::node::Node;
+use lecture6::photon_map::PhotonScatter;
 use lecture6::ray::Ray;
 use lecture6::render::{Frame, RenderSettings, render};
 use lecture6::rng::Rng;
 use lecture6::scene::{Scene, TraceContext};
-use lecture6::scenes::fresnel::fresnel_glass;
-use lecture6::scenes::{fresnel as fresnel_example, layered};
-use lecture6::shader::{Layered, Shader};
+use lecture6::shader::{Layered, Shader, fresnel_glass};
 use lecture6::texture::{FresnelMode, Texture};
 use proptest::prelude::*;
 use std::sync::Arc;
@@ -180,6 +180,14 @@ impl Shader for Counting {
         self.calls.fetch_add(1, Ordering::Relaxed);
         self.color
     }
+
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Absorb
+    }
+
+    fn casts_caustics(&self) -> bool {
+        false
+    }
 }
 
 /// A texture that returns a constant colour and counts how often it is looked up.
@@ -280,8 +288,8 @@ fn share_within_one_level(a: &Frame, b: &Frame) -> f64 {
 
 #[test]
 fn adaptive_fresnel_is_within_one_level_of_exhaustive() {
-    let adaptive = common::render::<fresnel_example::Args>(&[]);
-    let exhaustive = common::render::<fresnel_example::Args>(&["--exhaustive"]);
+    let adaptive = common::render::<fresnel_example::Options>(&[]);
+    let exhaustive = common::render::<fresnel_example::Options>(&["--exhaustive"]);
     let share = share_within_one_level(&adaptive, &exhaustive);
     assert!(share >= 0.999, "only {:.4}% of pixels within one level", share * 100.0);
     // Adaptive control did leave rays out: the two renders are not the same render.
@@ -291,8 +299,8 @@ fn adaptive_fresnel_is_within_one_level_of_exhaustive() {
 #[test]
 fn adaptive_layered_is_within_one_level_of_exhaustive() {
     let size = ["--width", "320", "--height", "240"];
-    let adaptive = common::render::<layered::Args>(&size);
-    let exhaustive = common::render::<layered::Args>(&[&size[..], &["--exhaustive"]].concat());
+    let adaptive = common::render::<layered::Options>(&size);
+    let exhaustive = common::render::<layered::Options>(&[&size[..], &["--exhaustive"]].concat());
     let share = share_within_one_level(&adaptive, &exhaustive);
     assert!(share >= 0.999, "only {:.4}% of pixels within one level", share * 100.0);
 }
@@ -300,8 +308,8 @@ fn adaptive_layered_is_within_one_level_of_exhaustive() {
 #[test]
 fn shading_every_layer_gives_the_same_picture() {
     let size = ["--width", "160", "--height", "120"];
-    let skipping = common::render::<layered::Args>(&size).to_rgb8();
-    let every = common::render::<layered::Args>(&[&size[..], &["--shade-every-layer"]].concat()).to_rgb8();
+    let skipping = common::render::<layered::Options>(&size).to_rgb8();
+    let every = common::render::<layered::Options>(&[&size[..], &["--shade-every-layer"]].concat()).to_rgb8();
     let d = lecture6::compare::difference(&skipping, &every).unwrap();
     assert!(d.max_diff <= 1, "{d}");
 }
@@ -309,10 +317,10 @@ fn shading_every_layer_gives_the_same_picture() {
 #[test]
 fn fresnel_modes_and_threads() {
     let small = ["--width", "160", "--height", "120", "--spp", "2"];
-    let one = common::render::<fresnel_example::Args>(&[&small[..], &["--threads", "1"]].concat());
-    let two = common::render::<fresnel_example::Args>(&[&small[..], &["--threads", "2"]].concat());
+    let one = common::render::<fresnel_example::Options>(&[&small[..], &["--threads", "1"]].concat());
+    let two = common::render::<fresnel_example::Options>(&[&small[..], &["--threads", "2"]].concat());
     assert!(one == two, "the picture changed with the thread count");
-    let exact = common::render::<fresnel_example::Args>(&[&small[..], &["--fresnel", "exact"]].concat());
+    let exact = common::render::<fresnel_example::Options>(&[&small[..], &["--fresnel", "exact"]].concat());
     assert_ne!(one, exact, "--fresnel exact must change the glass");
 }
 

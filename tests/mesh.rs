@@ -274,7 +274,7 @@ fn a_students_mesh_is_scaled_to_fit() {
         "tetra.obj",
         "v 1000 1000 1000\nv 1000.01 1000 1000\nv 1000 1000.01 1000\nv 1000 1000 1000.01\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
     );
-    let with = common::render::<lecture6::scenes::model_transform::Args>(&[
+    let with = common::render::<common::examples::model_transform::Options>(&[
         "--mesh",
         path.to_str().unwrap(),
         "--width",
@@ -284,8 +284,9 @@ fn a_students_mesh_is_scaled_to_fit() {
         "--spp",
         "1",
     ]);
-    let without =
-        common::render::<lecture6::scenes::model_transform::Args>(&["--width", "160", "--height", "120", "--spp", "1"]);
+    let without = common::render::<common::examples::model_transform::Options>(&[
+        "--width", "160", "--height", "120", "--spp", "1",
+    ]);
     let changed = with.pixels.iter().zip(&without.pixels).filter(|(a, b)| a != b).count();
     assert!(changed > 1000, "only {changed} pixels changed: the mesh did not take the teapots' place");
     assert!(with.pixels.iter().all(|c| c.is_finite()));

@@ -13,7 +13,7 @@ fn out_dir() -> std::path::PathBuf {
 
 #[test]
 fn float_outputs_hold_the_linear_frame() {
-    let frame = common::render::<lecture6::scenes::bitmap_textures::Args>(&["--width", "32", "--height", "24"]);
+    let frame = common::render::<common::examples::bitmap_textures::Options>(&["--width", "32", "--height", "24"]);
     for ext in ["exr", "hdr"] {
         let path = out_dir().join(format!("frame.{ext}"));
         frame.save(&path).unwrap();

@@ -5,9 +5,9 @@
 
 mod common;
 
-use clap::Parser;
+use common::examples::{bitmap_textures, photon_map};
 use lecture6::camera::Camera;
-use lecture6::cli::{Example, prepare_scene, settings};
+use lecture6::cli::Example;
 use lecture6::color::Color;
 use lecture6::geometry::{Geometry, Plane, Sphere};
 use lecture6::light::PointLight;
@@ -18,7 +18,6 @@ use lecture6::ray::Ray;
 use lecture6::render::render;
 use lecture6::rng::Rng;
 use lecture6::scene::{Scene, TraceContext};
-use lecture6::scenes::{bitmap_textures, photon_map};
 use lecture6::shader::{Lambert, Layered, Reflection, Refraction, Shader};
 use lecture6::spectral::Ior;
 use lecture6::texture::{Fresnel, FresnelMode};
@@ -203,7 +202,7 @@ fn a_layered_surface_sends_photons_on_in_proportion_to_its_blends() {
 #[test]
 fn dispersive_glass_passes_white_light_in_coloured_photons() {
     // A dense flint: photons get wavelengths and band colours, but together they are as white as the light.
-    let glass = lecture6::scenes::dispersion::fresnel_glass(Ior::SF11);
+    let glass = lecture6::shader::fresnel_glass(Ior::SF11, lecture6::texture::FresnelMode::Schlick, 1.0);
     let map = build(&glass_scene(glass, vec![]));
     let expected = INTENSITY as f64 * sphere_solid_angle(1.0, 5.0);
     for channel in 0..3 {
@@ -219,7 +218,7 @@ fn dispersive_glass_passes_white_light_in_coloured_photons() {
 /// Where the world point `p` of the `photon_map` scene lies in `prepared`, the scene as the examples render
 /// it (which `Scene::relative_to_camera` may have moved so that the camera stands at the origin).
 fn in_prepared_scene(prepared: &Scene, p: Vector) -> Vector {
-    let world = photon_map::Args::parse_from(["photon_map"]).build_scene().unwrap();
+    let world = common::parse::<photon_map::Options>(&[]).example.scene().unwrap();
     p + (prepared.camera.position - world.camera.position)
 }
 
@@ -228,8 +227,7 @@ fn in_prepared_scene(prepared: &Scene, p: Vector) -> Vector {
 fn caustic_chroma(args: &[&str]) -> f32 {
     use photon_map::{GLASS_CENTER, LIGHT};
     let axis = GLASS_CENTER - LIGHT;
-    let scene = prepare_scene(&photon_map::Args::parse_from(std::iter::once("photon_map").chain(args.iter().copied())))
-        .unwrap();
+    let scene = common::parse::<photon_map::Options>(args).prepare_scene().unwrap();
     let focus = in_prepared_scene(&scene, GLASS_CENTER + axis * (GLASS_CENTER.y / -axis.y));
     let map = scene.photon_map.as_ref().unwrap();
     let mut chroma: f32 = 0.0;
@@ -270,8 +268,8 @@ fn the_caustic_under_the_glass_sphere_outshines_the_lit_floor_beside_it() {
     // on a square of the same colour as the focus's: directly lit floor.
     let across = Vector::new(axis.z, 0.0, -axis.x).normalize();
     let beside = focus + across * (3.0 * GLASS_RADIUS) + Vector::new(0.0, 0.0, 25.0);
-    let with_map = prepare_scene(&photon_map::Args::parse_from(["photon_map"])).unwrap();
-    let without = prepare_scene(&photon_map::Args::parse_from(["photon_map", "--photons", "0"])).unwrap();
+    let with_map = common::parse::<photon_map::Options>(&[]).prepare_scene().unwrap();
+    let without = common::parse::<photon_map::Options>(&["--photons", "0"]).prepare_scene().unwrap();
     assert!(with_map.photon_map.is_some() && without.photon_map.is_none());
 
     let (focus, beside) = (in_prepared_scene(&with_map, focus), in_prepared_scene(&with_map, beside));
@@ -290,48 +288,48 @@ fn args_with(extra: &[&'static str]) -> Vec<&'static str> {
 
 #[test]
 fn no_photons_renders_exactly_as_without_a_photon_map() {
-    let zero = common::render::<photon_map::Args>(&args_with(&["--photons", "0"]));
-    let args = photon_map::Args::parse_from(std::iter::once("photon_map").chain(SMALL));
-    let mut scene = args.build_scene().unwrap();
+    let zero = common::render::<photon_map::Options>(&args_with(&["--photons", "0"]));
+    let args = common::parse::<photon_map::Options>(&SMALL);
+    let mut scene = args.example.scene().unwrap();
     scene.relative_to_camera();
     assert!(scene.photon_map.is_none() && scene.photons.count > 0);
-    let (plain, _) = render(&scene, &settings(&args)).unwrap();
+    let (plain, _) = render(&scene, &args.settings()).unwrap();
     assert!(zero == plain, "--photons 0 changed the picture");
-    let with_map = common::render::<photon_map::Args>(&SMALL);
+    let with_map = common::render::<photon_map::Options>(&SMALL);
     assert!(with_map != plain, "the photon map must change the picture");
 }
 
 #[test]
 fn a_scene_without_caustic_casters_builds_no_map_and_renders_as_before() {
-    let args = bitmap_textures::Args::parse_from(["bitmap_textures", "--photons", "100000"]);
-    let scene = prepare_scene(&args).unwrap();
+    let args = common::parse::<bitmap_textures::Options>(&["--photons", "100000"]);
+    let scene = args.prepare_scene().unwrap();
     assert_eq!(scene.photons.count, 100_000);
     assert!(scene.photon_map.is_none(), "a photon map without casters");
-    let with = common::render::<bitmap_textures::Args>(&args_with(&["--photons", "100000"]));
-    let without = common::render::<bitmap_textures::Args>(&SMALL);
+    let with = common::render::<bitmap_textures::Options>(&args_with(&["--photons", "100000"]));
+    let without = common::render::<bitmap_textures::Options>(&SMALL);
     assert!(with == without, "asking for photons changed a scene without caustics");
 }
 
 #[test]
 fn the_photon_map_and_picture_are_the_same_for_any_thread_count() {
-    let one = common::render::<photon_map::Args>(&args_with(&["--threads", "1", "--photons", "50000"]));
-    let two = common::render::<photon_map::Args>(&args_with(&["--threads", "2", "--photons", "50000"]));
+    let one = common::render::<photon_map::Options>(&args_with(&["--threads", "1", "--photons", "50000"]));
+    let two = common::render::<photon_map::Options>(&args_with(&["--threads", "2", "--photons", "50000"]));
     assert!(one == two, "the picture changed with the thread count");
-    let other_seed = common::render::<photon_map::Args>(&args_with(&["--seed", "2", "--photons", "50000"]));
+    let other_seed = common::render::<photon_map::Options>(&args_with(&["--seed", "2", "--photons", "50000"]));
     assert!(one != other_seed, "the seed must reach the photons");
 }
 
 #[test]
 fn show_photons_draws_dots_where_photons_landed() {
-    let scene = prepare_scene(&photon_map::Args::parse_from(["photon_map", "--show-photons"])).unwrap();
+    let scene = common::parse::<photon_map::Options>(&["--show-photons"]).prepare_scene().unwrap();
     let map = scene.photon_map.as_ref().unwrap();
     let photon = map.photons()[0];
     let dot = map.irradiance(photon.position, -photon.dir);
     assert!(dot.max_channel() > 100.0, "no dot on a photon: {dot:?}");
     // Far from every photon (the camera's side of the floor, behind the sphere's shadow), no dot.
     assert!(map.irradiance(Vector::new(60.0, 0.0, -60.0), Vector::Y).is_black());
-    let dots = common::render::<photon_map::Args>(&args_with(&["--show-photons"]));
-    let estimate = common::render::<photon_map::Args>(&SMALL);
+    let dots = common::render::<photon_map::Options>(&args_with(&["--show-photons"]));
+    let estimate = common::render::<photon_map::Options>(&SMALL);
     assert!(dots != estimate);
 }
 

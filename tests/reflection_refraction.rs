@@ -4,8 +4,8 @@
 
 mod common;
 
+use common::examples::{reflect_v01, reflect_v02, refract as refract_scene};
 use lecture6::camera::Camera;
-use lecture6::cli::render_example;
 use lecture6::color::Color;
 use lecture6::environment::{ConstantEnvironment, Environment};
 use lecture6::geometry::{Cube, Sphere};
@@ -15,7 +15,6 @@ use lecture6::ray::Ray;
 use lecture6::render::{RenderSettings, render};
 use lecture6::rng::Rng;
 use lecture6::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
-use lecture6::scenes::{reflect_v01, reflect_v02, refract as refract_scene};
 use lecture6::shader::{Reflection, Refraction};
 use std::sync::Arc;
 
@@ -176,8 +175,7 @@ fn a_perfect_mirror_sphere_shows_exactly_its_environment() {
 }
 
 fn counters<E: lecture6::cli::Example>(args: &[&str]) -> Counters {
-    let argv = std::iter::once(E::NAME).chain(args.iter().copied());
-    render_example(&E::try_parse_from(argv).unwrap()).unwrap().1.counters
+    common::parse::<E>(args).render().unwrap().1.counters
 }
 
 // Odd image sizes put the centre pixel's ray exactly on the camera's axis, square-on to the mirrors.
@@ -185,20 +183,20 @@ const SMALL: [&str; 6] = ["--width", "65", "--height", "49", "--spp", "1"];
 
 #[test]
 fn reflection_v02_stops_at_max_ray_depth() {
-    let c = counters::<reflect_v02::Args>(&SMALL);
+    let c = counters::<reflect_v02::Options>(&SMALL);
     assert!(c.rays_by_depth[2] > 0 && c.rays_by_depth[3..].iter().all(|&n| n == 0), "{c:?}");
-    let c = counters::<reflect_v02::Args>(&[&SMALL[..], &["--max-depth", "5"]].concat());
+    let c = counters::<reflect_v02::Options>(&[&SMALL[..], &["--max-depth", "5"]].concat());
     assert!(c.rays_by_depth[5] > 0 && c.rays_by_depth[6..].iter().all(|&n| n == 0), "{c:?}");
     assert_eq!(c.capped_rays, 0);
 }
 
 #[test]
 fn reflection_v01_survives_facing_mirrors_by_the_safety_cap() {
-    let c = counters::<reflect_v01::Args>(&[&SMALL[..], &["--mirrors"]].concat());
+    let c = counters::<reflect_v01::Options>(&[&SMALL[..], &["--mirrors"]].concat());
     assert!(c.capped_rays > 0, "{c:?}");
     // The centre ray bounced all the way to the cap (the last counter holds depths 15 and more).
     assert!(c.rays_by_depth[15] >= (RECURSION_SAFETY_CAP - 14) as u64, "{c:?}");
-    assert_eq!(counters::<reflect_v01::Args>(&SMALL).capped_rays, 0, "no runaway without the facing mirrors");
+    assert_eq!(counters::<reflect_v01::Options>(&SMALL).capped_rays, 0, "no runaway without the facing mirrors");
 
     let out =
         common::run_example("reflect_v01", &[&SMALL[..], &["--mirrors", "-o", "target/reflect/v01.png"]].concat());
@@ -211,11 +209,11 @@ fn reflection_v01_survives_facing_mirrors_by_the_safety_cap() {
 
 #[test]
 fn the_examples_are_the_same_for_any_thread_count() {
-    let one = common::render::<refract_scene::Args>(&["--width", "96", "--height", "72", "--threads", "1"]);
-    let two = common::render::<refract_scene::Args>(&["--width", "96", "--height", "72", "--threads", "2"]);
+    let one = common::render::<refract_scene::Options>(&["--width", "96", "--height", "72", "--threads", "1"]);
+    let two = common::render::<refract_scene::Options>(&["--width", "96", "--height", "72", "--threads", "2"]);
     assert!(one == two, "refract changed with the thread count");
-    let one = common::render::<reflect_v02::Args>(&["--width", "96", "--height", "72", "--threads", "1"]);
-    let two = common::render::<reflect_v02::Args>(&["--width", "96", "--height", "72", "--threads", "2"]);
+    let one = common::render::<reflect_v02::Options>(&["--width", "96", "--height", "72", "--threads", "1"]);
+    let two = common::render::<reflect_v02::Options>(&["--width", "96", "--height", "72", "--threads", "2"]);
     assert!(one == two, "reflect_v02 changed with the thread count");
 }
 

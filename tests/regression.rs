@@ -8,7 +8,7 @@ macro_rules! regression {
     ($($name:ident),* $(,)?) => {$(
         #[test]
         fn $name() {
-            common::check_expected::<lecture6::scenes::$name::Args>();
+            common::check_expected::<common::examples::$name::Options>(stringify!($name));
         }
     )*};
 }
@@ -21,14 +21,42 @@ macro_rules! example_names {
     };
 }
 
+/// The workbook's examples, by name: the registry must hold exactly these (a student's own files in
+/// `examples/` are not the workbook's and are not checked).
+const WORKBOOK: [&str; 11] = [
+    "bitmap_textures",
+    "model_transform",
+    "environment",
+    "reflect_v01",
+    "reflect_v02",
+    "refract",
+    "layered",
+    "fresnel",
+    "glossy",
+    "dispersion",
+    "photon_map",
+];
+
 #[test]
-fn every_example_is_checked() {
-    let mut on_disk: Vec<String> = std::fs::read_dir(common::root().join("examples"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
-        .map(|p| p.file_stem().unwrap().to_string_lossy().into_owned())
-        .collect();
-    on_disk.sort();
-    assert_eq!(on_disk, every_example!(example_names), "tests/common/mod.rs's every_example! is out of date");
+fn the_registry_holds_the_workbooks_examples() {
+    assert_eq!(every_example!(example_names), WORKBOOK, "tests/common/examples.rs is out of date");
+}
+
+#[test]
+fn every_registered_example_has_its_file_and_expected_picture() {
+    for name in every_example!(example_names) {
+        for path in [format!("examples/{name}.rs"), format!("expected/{name}.png")] {
+            assert!(common::root().join(&path).is_file(), "{path} is missing");
+        }
+    }
+}
+
+#[test]
+fn every_expected_picture_belongs_to_a_registered_example() {
+    let names = every_example!(example_names);
+    for entry in std::fs::read_dir(common::root().join("expected")).unwrap() {
+        let path = entry.unwrap().path();
+        let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
+        assert!(names.contains(&stem.as_str()), "{} belongs to no example of the registry", path.display());
+    }
 }

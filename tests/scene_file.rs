@@ -4,6 +4,10 @@
 
 mod common;
 
+#[allow(dead_code)] // the example's `main` is its binary's
+#[path = "../examples/scene_file.rs"]
+mod scene_file_example;
+
 use lecture6::Vector;
 use lecture6::color::Color;
 use lecture6::compare::difference;
@@ -59,12 +63,15 @@ fn the_fresnel_scene_file_renders_the_fresnel_example() {
 
 #[test]
 fn the_scene_file_example_renders_its_expected_picture_and_refuses_bad_files_in_one_line() {
-    let out = common::run_example("scene_file", &["-q", "-o", "target/scene-file-tests/default.png"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let actual = image::open(common::root().join("target/scene-file-tests/default.png")).unwrap().to_rgb8();
-    let expected = image::open(common::root().join("expected/scene_file.png")).unwrap().to_rgb8();
-    let d = difference(&actual, &expected).unwrap();
+    common::check_expected::<scene_file_example::Options>("scene_file");
+    // The same file through the example with `--spp 5` is the fresnel example's picture.
+    let frame = common::render::<scene_file_example::Options>(&["--spp", "5"]);
+    let expected = image::open(common::root().join("expected/fresnel.png")).unwrap().to_rgb8();
+    let d = difference(&frame.to_rgb8(), &expected).unwrap();
     assert!(common::within_regression_tolerance(&d), "{d}");
+    // The file's frame size unless an option overrides it.
+    let small = common::render::<scene_file_example::Options>(&["--width", "64", "--height", "48"]);
+    assert_eq!((small.width, small.height), (64, 48));
     let bad = write("bad-class.qdmg", "Camera {\n position (0, 0, 0)\n}\nRectLight {\n}\n");
     let out = common::run_example("scene_file", &[bad.to_str().unwrap(), "-o", "target/scene-file-tests/bad.png"]);
     let err = String::from_utf8_lossy(&out.stderr);

@@ -19,6 +19,7 @@
 //! The photon map is built for each transformed scene, as the examples build it, and its gathering radius
 //! (a length) is scaled with the scene; without that, scale 100 changes 731 of the 19200 pixels.
 
+#[macro_use]
 mod common;
 
 use lecture6::cli::Example;
@@ -86,9 +87,8 @@ fn cases() -> Vec<(f32, f32)> {
     SCALES.iter().map(|&s| (s, 0.0)).chain([(1.0, FAR), (1.0, -FAR), (1e2, FAR)]).collect()
 }
 
-fn check_scales_and_offsets<E: Example>(adjust: impl Fn(&mut Scene, f32)) {
-    let args = E::try_parse_from([E::NAME]).unwrap();
-    let scene = args.build_scene().unwrap();
+fn check_scales_and_offsets<E: Example>(example: &str, adjust: impl Fn(&mut Scene, f32)) {
+    let scene = common::parse::<E>(&[]).example.scene().unwrap();
     let reference = picture(&scene);
     let mut failures = Vec::new();
     for (s, t) in cases() {
@@ -98,47 +98,33 @@ fn check_scales_and_offsets<E: Example>(adjust: impl Fn(&mut Scene, f32)) {
         let d = difference(&actual, &reference).unwrap();
         // At the origin the picture must not change; far from it, edges may move by a pixel (see the rule).
         let changed = if t == 0.0 { d.large_pixels } else { pixels_not_found_nearby(&actual, &reference) };
-        eprintln!("{} scaled by {s:e}, moved by {t:e}: {changed} pixels changed; {d}", E::NAME);
+        eprintln!("{example} scaled by {s:e}, moved by {t:e}: {changed} pixels changed; {d}");
         if changed * 200 > d.pixels {
             let dir = common::root().join("target").join("stress");
             std::fs::create_dir_all(&dir).unwrap();
-            let name = format!("{}-s{s:e}-t{t:e}", E::NAME);
+            let name = format!("{example}-s{s:e}-t{t:e}");
             actual.save(dir.join(format!("{name}.png"))).unwrap();
             heat_map(&actual, &reference).unwrap().save(dir.join(format!("{name}-diff.png"))).unwrap();
             failures.push(format!("scaled by {s:e}, moved by {t:e}: {d}"));
         }
     }
-    assert!(failures.is_empty(), "{}: {}", E::NAME, failures.join("; "));
+    assert!(failures.is_empty(), "{example}: {}", failures.join("; "));
 }
 
-/// A scene whose options hold no lengths: the node transforms, camera and lights are all there is to scale.
-fn no_lengths(_: &mut Scene, _: f32) {}
-
-/// The photon map's gathering radius is a length: it scales with the scene (its k stays).
-fn photon_radius(scene: &mut Scene, s: f32) {
+/// Scales what the scene holds as a length outside its nodes, camera and lights: the photon map's
+/// gathering radius (its k stays). The other examples' options hold no lengths (the dispersion studio's slit
+/// and lamps are in the environment, which depends on directions only).
+fn scale_lengths(scene: &mut Scene, s: f32) {
     scene.photons.max_radius = scene.photons.max_radius.map(|r| r * s);
 }
 
 macro_rules! survives_scaling_and_translation {
-    ($($name:ident: $adjust:expr);* $(;)?) => {$(
+    ($($name:ident),* $(,)?) => {$(
         #[test]
         fn $name() {
-            check_scales_and_offsets::<lecture6::scenes::$name::Args>($adjust);
+            check_scales_and_offsets::<common::examples::$name::Options>(stringify!($name), scale_lengths);
         }
     )*};
 }
 
-survives_scaling_and_translation!(
-    bitmap_textures: no_lengths;
-    // The slit and the lamps are in the environment, which depends on directions only.
-    dispersion: no_lengths;
-    environment: no_lengths;
-    fresnel: no_lengths;
-    glossy: no_lengths;
-    layered: no_lengths;
-    model_transform: no_lengths;
-    photon_map: photon_radius;
-    reflect_v01: no_lengths;
-    reflect_v02: no_lengths;
-    refract: no_lengths;
-);
+every_example!(survives_scaling_and_translation);

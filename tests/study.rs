@@ -1,7 +1,9 @@
 //! The error-versus-time study measures what it claims: on tiny pictures, the error against the converged
 //! reference falls as the sample count rises, and the stratified disc sampler beats the slide's random one.
 
-use lecture6::scenes::{bitmap_textures, glossy};
+mod common;
+
+use common::examples::{bitmap_textures, glossy};
 use lecture6::study::{Measurement, Sweep, pareto_front, rmse_at_time};
 
 fn rmse_curve(sweep: &Sweep) -> Vec<f64> {
@@ -17,7 +19,8 @@ fn assert_falls(name: &str, rmse: &[f64]) {
 fn glossy_error_falls_with_the_sample_count_and_stratified_beats_random() {
     // One pixel-centre sample per pixel, so the error is that of the glossy reflections alone.
     let sweep = |sampler| {
-        Sweep::new::<glossy::Args>(
+        Sweep::new::<glossy::Options>(
+            "glossy",
             sampler,
             &["--width", "64", "--height", "48", "--spp", "1", "--sampler", sampler],
             "--glossy-samples",
@@ -38,7 +41,8 @@ fn glossy_error_falls_with_the_sample_count_and_stratified_beats_random() {
 
 #[test]
 fn anti_aliasing_error_falls_with_the_sample_count() {
-    let sweep = Sweep::new::<bitmap_textures::Args>(
+    let sweep = Sweep::new::<bitmap_textures::Options>(
+        "bitmap_textures",
         "anti-aliasing",
         &["--width", "80", "--height", "60"],
         "--spp",

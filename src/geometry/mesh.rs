@@ -13,7 +13,7 @@
 //!   `geometric_normal` is the face normal, turned to the side of the shading normal.
 //! - u/v: from the file when it has texture coordinates (as written there), else the barycentric
 //!   coordinates of the hit.
-//! - Intersection: a [`Bvh`](super::bvh::Bvh) built once at load time, and the watertight ray-triangle test
+//! - Intersection: a [`Bvh`] built once at load time, and the watertight ray-triangle test
 //!   of Woop, Benthin and Wald ("Watertight Ray/Triangle Intersection", JCGT 2013): the vertices are moved
 //!   into a frame where the ray runs along +z from the origin, and the 2D edge functions decide the hit.
 //!   Every vertex is transformed the same way whichever triangle it belongs to, and an edge function that

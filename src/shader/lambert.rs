@@ -5,9 +5,11 @@
 use super::{ColorSource, Shader};
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
-use crate::light::for_each_light;
+use crate::light::diffuse_light;
 use crate::math::faceforward;
+use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::TraceContext;
 
 #[derive(Clone)]
@@ -25,9 +27,14 @@ impl Shader for Lambert {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let diffuse = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
-        let mut light = ctx.scene.ambient;
-        for_each_light(ctx, info, n, |l, irradiance| light += irradiance * n.dot(l));
-        light += ctx.caustics(info, n);
-        diffuse * light
+        diffuse * diffuse_light(ctx, info, n)
+    }
+
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Land { scale: 1.0 }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        false
     }
 }

@@ -19,7 +19,7 @@
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
-use super::Shader;
+use super::{IntoShader, Shader};
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
 use crate::photon_map::{PhotonScatter, strength};
@@ -62,15 +62,16 @@ impl Layered {
         Layered::default()
     }
 
-    /// Adds a layer on top of the others (the slide's `addLayer`). Panics past [`MAX_LAYERS`] layers.
+    /// Adds a layer on top of the others (the slide's `addLayer`): `shader` seen with opacity `blend`, times
+    /// the texture `blend_tex` if there is one. Panics past `MAX_LAYERS` (32) layers.
     pub fn add_layer(
         &mut self,
-        shader: Arc<dyn Shader>,
+        shader: impl IntoShader,
         blend: Color,
         blend_tex: Option<Arc<dyn Texture>>,
     ) -> &mut Layered {
         assert!(self.layers.len() < MAX_LAYERS, "a Layered shader holds at most {MAX_LAYERS} layers");
-        self.layers.push(Layer { shader, blend, blend_tex });
+        self.layers.push(Layer { shader: shader.into_shader(), blend, blend_tex });
         self
     }
 

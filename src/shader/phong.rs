@@ -5,9 +5,11 @@
 use super::{ColorSource, Shader};
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
-use crate::light::for_each_light;
+use crate::light::light_loop;
 use crate::math::{faceforward, reflect};
+use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::rng::Rng;
 use crate::scene::TraceContext;
 
 #[derive(Clone)]
@@ -29,16 +31,21 @@ impl Shader for Phong {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let diffuse_color = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
-        let mut diffuse = ctx.scene.ambient;
         let mut specular = Color::BLACK;
-        for_each_light(ctx, info, n, |l, irradiance| {
-            diffuse += irradiance * n.dot(l);
+        let diffuse = light_loop(ctx, info, n, |l, irradiance| {
             let cos_gamma = (-ray.dir).dot(reflect(-l, n));
             if cos_gamma > 0.0 {
                 specular += irradiance * (self.specular * cos_gamma.powf(self.exponent));
             }
         });
-        diffuse += ctx.caustics(info, n);
         diffuse_color * diffuse + specular
+    }
+
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Land { scale: 1.0 }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        false
     }
 }

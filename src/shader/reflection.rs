@@ -86,7 +86,7 @@ impl Reflection {
     /// The perfect mirror ray.
     fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
         let dir = reflect(ray.dir, n);
-        let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir, m.max_channel());
+        let new_ray = ray.spawn(info, dir, m.max_channel());
         ctx.raytrace(&new_ray) * m
     }
 }
@@ -107,7 +107,7 @@ impl Shader for Reflection {
         let mut kept = 0u32;
         for i in 0..num_samples {
             if let Some(dir) = cone.direction(disc.point(i, &mut ctx.rng)) {
-                sum += ctx.raytrace(&ray.spawn(info.ip, info.geometric_normal, info.error, dir, attenuation));
+                sum += ctx.raytrace(&ray.spawn(info, dir, attenuation));
                 kept += 1;
             }
         }

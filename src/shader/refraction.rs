@@ -55,7 +55,7 @@ impl Shader for Refraction {
         let Some(dir) = self.refracted(ray, info) else {
             return Color::BLACK; // total internal reflection
         };
-        let new_ray = ray.spawn(info.ip, info.geometric_normal, info.error, dir, self.multiplier);
+        let new_ray = ray.spawn(info, dir, self.multiplier);
         ctx.raytrace(&new_ray) * self.multiplier
     }
 

@@ -1,30 +1,14 @@
-//! Shared by the integration tests: rendering an example exactly as `cargo run --example` does, the
-//! regression check against `expected/`, and running the example binaries.
+//! Shared by the integration tests: the registry of the workbook's examples ([`examples`]), rendering an
+//! example exactly as `cargo run --example` does, the regression check against `expected/`, and running the
+//! example binaries.
 
 #![allow(dead_code)] // each test file uses its own part of this module
 
-use lecture6::cli::{Example, render_example};
+use lecture6::cli::{Cli, Example};
 
-/// Expands `$test!(name, name, ...)` with every example: the one list of examples the test files share
-/// (`tests/regression.rs` checks that it matches `examples/`).
-#[allow(unused_macros)]
-macro_rules! every_example {
-    ($test:ident) => {
-        $test! {
-           bitmap_textures,
-           dispersion,
-           environment,
-           fresnel,
-           glossy,
-           layered,
-           model_transform,
-           photon_map,
-           reflect_v01,
-           reflect_v02,
-           refract
-        }
-    };
-}
+#[macro_use]
+pub mod examples;
+
 use lecture6::compare::{Difference, difference, heat_map};
 use lecture6::render::Frame;
 use std::path::{Path, PathBuf};
@@ -35,11 +19,14 @@ pub fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// Parses the example's options from `args` as its `main` would.
+pub fn parse<E: Example>(args: &[&str]) -> Cli<E> {
+    Cli::<E>::parse_args("example", args).unwrap_or_else(|e| panic!("bad test arguments {args:?}: {e}"))
+}
+
 /// Parses the example's options from `args` (as its `main` would) and renders it.
 pub fn render<E: Example>(args: &[&str]) -> Frame {
-    let argv = std::iter::once(E::NAME).chain(args.iter().copied());
-    let parsed = E::try_parse_from(argv).unwrap_or_else(|e| panic!("{}: bad test arguments: {e}", E::NAME));
-    render_example(&parsed).unwrap_or_else(|e| panic!("{}: {e}", E::NAME)).0
+    parse::<E>(args).render().unwrap_or_else(|e| panic!("{args:?}: {e}")).0
 }
 
 /// The regression rule for the examples' pictures at 640 x 480: at most one pixel in 5000 may differ by
@@ -53,9 +40,9 @@ pub fn within_regression_tolerance(d: &Difference) -> bool {
 /// Renders an example with its default options and compares it with `expected/<name>.png`. On a mismatch the
 /// actual picture and a heat map go to `target/regression/`. With `UPDATE_EXPECTED=1` the expected picture
 /// is rewritten instead.
-pub fn check_expected<E: Example>() {
+pub fn check_expected<E: Example>(name: &str) {
     let actual = render::<E>(&[]).to_rgb8();
-    let expected_path = root().join("expected").join(format!("{}.png", E::NAME));
+    let expected_path = root().join("expected").join(format!("{name}.png"));
     if std::env::var_os("UPDATE_EXPECTED").is_some_and(|v| v == "1") {
         actual.save(&expected_path).expect("write expected image");
         eprintln!("rewrote {}", expected_path.display());
@@ -68,9 +55,9 @@ pub fn check_expected<E: Example>() {
     if !within_regression_tolerance(&d) {
         let dir = root().join("target").join("regression");
         std::fs::create_dir_all(&dir).expect("create target/regression");
-        actual.save(dir.join(format!("{}.png", E::NAME))).expect("write actual");
-        heat_map(&actual, &expected).unwrap().save(dir.join(format!("{}-diff.png", E::NAME))).expect("write heat map");
-        panic!("{} differs from {}: {d}; see target/regression/", E::NAME, expected_path.display());
+        actual.save(dir.join(format!("{name}.png"))).expect("write actual");
+        heat_map(&actual, &expected).unwrap().save(dir.join(format!("{name}-diff.png"))).expect("write heat map");
+        panic!("{name} differs from {}: {d}; see target/regression/", expected_path.display());
     }
 }
 

@@ -1,0 +1,114 @@
+//! What a student starting a homework relies on: a copy of an example is an example of its own (its
+//! output named after it, the same picture), `cargo run` alone lists the examples instead of rewriting
+//! `textures/`, a shader of the student's own gets the caustics through the light loop, and
+//! `Camera::look_at` frames what it is told to.
+
+#[macro_use]
+mod common;
+
+use common::{example_binary, root};
+use lecture6::prelude::*;
+use std::process::Command;
+
+/// A scratch folder of its own for each test, emptied first.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = root().join("target").join("homework-test").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_copied_example_writes_its_own_picture_and_the_same_one() {
+    // `cp examples/fresnel.rs examples/hw1.rs` builds a binary called hw1 from the same source: the same
+    // binary under another name is what that gives.
+    let dir = scratch("copy");
+    let hw1 = dir.join(format!("hw1{}", std::env::consts::EXE_SUFFIX));
+    std::fs::copy(example_binary("fresnel"), &hw1).unwrap();
+    let small = ["--width", "64", "--height", "48", "--spp", "1"];
+    let out = Command::new(&hw1).args(small).current_dir(&dir).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let summary = String::from_utf8_lossy(&out.stdout);
+    assert!(summary.starts_with("hw1: 64x48"), "the summary names the copy: {summary}");
+    let copy = image::open(dir.join("out").join("hw1.png")).expect("the copy writes out/hw1.png").to_rgb8();
+    let original = common::render::<common::examples::fresnel::Options>(&small).to_rgb8();
+    assert!(copy == original, "the copy renders another picture");
+}
+
+#[test]
+fn cargo_run_alone_lists_the_examples_and_writes_nothing() {
+    let dir = scratch("list");
+    let out = Command::new(env!("CARGO_BIN_EXE_lecture6")).current_dir(&dir).output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    macro_rules! listed {
+        ($($name:ident),*) => {$(
+            assert!(text.contains(stringify!($name)), "{} is not listed:\n{text}", stringify!($name));
+        )*};
+    }
+    every_example!(listed);
+    assert!(text.contains("cargo run --release --example"), "{text}");
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0, "cargo run wrote files");
+}
+
+/// A diffuse shader as a student would write it: white, lit through the light loop, nothing else.
+struct Chalk;
+
+impl Shader for Chalk {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        diffuse_light(ctx, info, faceforward(info.normal, ray.dir))
+    }
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Land { scale: 1.0 }
+    }
+    fn casts_caustics(&self) -> bool {
+        false
+    }
+}
+
+/// A glass ball over a floor of `floor`, lit from straight above; the photon map's caustic lies under it.
+fn caustic_scene(floor: impl Shader + 'static) -> Scene {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 30.0, -30.0), Vector::ZERO, 60.0));
+    scene.lights.push(PointLight::new(Vector::new(0.0, 60.0, 0.0), Color::WHITE, 3600.0));
+    scene.add(Node::new(Plane::new(0.0, 50.0), floor));
+    scene.add(Node::new(Sphere::new(Vector::new(0.0, 10.0, 0.0), 5.0), fresnel_glass(1.5, FresnelMode::Schlick, 1.0)));
+    scene.photons = PhotonSettings { count: 50_000, k: 50, max_radius: Some(1.0), show: false };
+    scene
+}
+
+#[test]
+fn a_students_diffuse_shader_gets_the_caustics_through_the_light_loop() {
+    let under_the_ball = |floor: Box<dyn Fn() -> Scene>| {
+        let mut scene = floor();
+        scene.photon_map = lecture6::photon_map::PhotonMap::build(&scene, 1).unwrap().map(Arc::new);
+        let map = scene.photon_map.clone().expect("the glass is a caustic caster");
+        let ray = Ray::new(Vector::new(0.0, 1.0, 0.0), Vector::new(0.0, -1.0, 0.0));
+        let (info, node) = scene.closest_hit(&ray).expect("the floor");
+        let mut ctx = TraceContext::new(&scene, Rng::for_keys(&[1]));
+        (node.shader.shade(&ray, &info, &mut ctx), map.irradiance(info.ip, Vector::Y))
+    };
+    let (chalk, caustic) = under_the_ball(Box::new(|| caustic_scene(Chalk)));
+    assert!(caustic.max_channel() > 1.0, "the test needs a caustic under the ball: {caustic:?}");
+    // Under the ball the lamp is in the ball's shadow: what the chalk shows is the caustic light.
+    assert!((chalk.max_channel() - caustic.max_channel()).abs() < 1e-3 * caustic.max_channel(), "{chalk:?}");
+    let (lambert, _) = under_the_ball(Box::new(|| caustic_scene(Lambert::new(Color::WHITE))));
+    assert_eq!(chalk, lambert, "a white Lambert floor shows the same light");
+}
+
+#[test]
+fn look_at_points_the_centre_of_the_picture_at_the_target() {
+    let targets = [
+        (Vector::new(0.0, 60.0, -120.0), Vector::new(0.0, 30.0, -30.0)),
+        (Vector::new(5.0, -3.0, 2.0), Vector::new(-40.0, 7.0, -9.0)),
+    ];
+    for (from, to) in targets {
+        let camera = Camera::look_at(from, to, 70.0);
+        let ray = camera.frame(640, 480).get_screen_ray(320.0, 240.0);
+        let expected = (to - from).normalize();
+        assert!(ray.dir.dot(expected) > 1.0 - 1e-6, "{from} -> {to}: the centre ray goes {}", ray.dir);
+        // Upright: the top of the picture is above its bottom.
+        let (top, bottom) =
+            (camera.frame(640, 480).get_screen_ray(320.0, 0.0), camera.frame(640, 480).get_screen_ray(320.0, 480.0));
+        assert!(top.dir.y > bottom.dir.y);
+    }
+}
