@@ -3,7 +3,7 @@
 //! several nodes can share one mesh (instancing).
 //!
 //! - Loading: tobj; polygons are cut into triangles in their own plane by ear clipping (see
-//!   [`polygon`](super::polygon)), so non-convex faces keep their shape. Triangles with a zero area or a non-finite vertex are dropped
+//!   [`polygon`]), so non-convex faces keep their shape. Triangles with a zero area or a non-finite vertex are dropped
 //!   (they cannot be hit and have no normal), so an empty or degenerate file gives an empty mesh, never a
 //!   NaN.
 //! - Shading: smooth with the file's vertex normals; a file without normals is faceted, as the course renders
@@ -254,7 +254,7 @@ impl Mesh {
     }
 
     /// Loads a Wavefront OBJ file (every object in it, polygons triangulated in their plane, see
-    /// [`polygon`](super::polygon)). A mesh whose file has no normals is faceted, as the course renders it;
+    /// [`polygon`]). A mesh whose file has no normals is faceted, as the course renders it;
     /// [`Mesh::load_auto_smooth`] computes smooth normals for it instead. A missing, unreadable or malformed
     /// file is an error naming it (and the OS error, or the line at fault).
     pub fn load(path: &Path) -> Result<Mesh> {
