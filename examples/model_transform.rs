@@ -10,7 +10,7 @@
 //! - the wooden box turned 31 degrees around Z, and the tilted checker square (a plane keeps its u/v);
 //! - the small teapots: instances of the one mesh, each with its own transform and colour.
 //!
-//! Try: `--faceted`, `--teapot low`, `--mesh my_model.obj` (any OBJ, scaled to fit).
+//! Try: `--faceted`, `--smooth` (for a mesh without normals, faceted otherwise), `--teapot low`, `--mesh my_model.obj` (any OBJ, scaled to fit).
 //!
 //! Homework ideas: add a `--spin DEGREES` option that turns every teapot; make a ring of 100 teapot instances
 //! and compare the memory with 100 copies; add a cylinder in canonical form (axis Y) and make an elliptic tube.
@@ -36,6 +36,10 @@ pub struct Options {
     /// Shade meshes with their face normals instead of smooth vertex normals.
     #[arg(long)]
     pub faceted: bool,
+    /// Compute smooth normals for a mesh whose file has none (such meshes are faceted otherwise, as the
+    /// course renders them).
+    #[arg(long)]
+    pub smooth: bool,
     /// Which bundled teapot to use.
     #[arg(long, value_enum, default_value_t = Teapot::High)]
     pub teapot: Teapot,
@@ -62,9 +66,10 @@ impl Options {
             Teapot::Low => "teapot_low.obj",
             Teapot::High => "teapot.obj",
         });
-        let teapot = Mesh::load(&bundled)?.with_faceted(self.faceted);
+        let faceted = |mesh: Mesh| if self.faceted { mesh.with_faceted(true) } else { mesh };
+        let teapot = faceted(Mesh::load(&bundled)?);
         let Some(path) = &self.mesh else { return Ok((Arc::new(teapot), None)) };
-        let mesh = Mesh::load(path)?.with_faceted(self.faceted);
+        let mesh = faceted(Mesh::load_auto_smooth(path, self.smooth)?);
         let empty = |path: &Path| Error::file("cannot use mesh", path, "it has no triangles");
         let (to, from) = (teapot.bounds().ok_or_else(|| empty(&bundled))?, mesh.bounds().ok_or_else(|| empty(path))?);
         let bottom = |b: &Aabb| Vector::new(b.center().x, b.min.y, b.center().z);

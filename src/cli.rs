@@ -6,7 +6,7 @@
 //! unknown options, whose message is put on one line too), never a panic.
 
 use crate::compare;
-use crate::environment;
+use crate::environment::{self, CubemapLayout};
 use crate::error::{Error, Result};
 use crate::photon_map::{PhotonArgs, PhotonMap};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
@@ -24,16 +24,20 @@ const COMMON: &str = "Common options";
 // description, which is its `Options` doc comment.)
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 640, help_heading = COMMON)]
-    pub width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 480, help_heading = COMMON)]
-    pub height: u32,
+    /// Image width in pixels. [default: 640, or a scene file's own]
+    #[arg(long, help_heading = COMMON)]
+    pub width: Option<u32>,
+    /// Image height in pixels. [default: 480, or a scene file's own]
+    #[arg(long, help_heading = COMMON)]
+    pub height: Option<u32>,
     /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
     /// grid, any other count N-rooks stratification.
     #[arg(long, help_heading = COMMON)]
     pub spp: Option<u32>,
+    /// The course's adaptive anti-aliasing: one sample through each pixel's centre, then four more in every
+    /// pixel that differs from a neighbour by more than 0.1 (needs --spp 1).
+    #[arg(long, help_heading = COMMON)]
+    pub adaptive_aa: bool,
     /// Worker threads [default: all cores]. The picture is the same for any count.
     #[arg(long, help_heading = COMMON)]
     pub threads: Option<usize>,
@@ -64,6 +68,11 @@ pub struct CommonArgs {
     /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
     #[arg(long, value_name = "FILE|FOLDER", help_heading = COMMON)]
     pub env: Option<PathBuf>,
+    /// How the faces of an `--env` cube-map folder are oriented: `opengl`, the default, is the layout of
+    /// skyboxes made for OpenGL and Direct3D and of the workbook's own `textures/sky_cubemap`; `course` is the
+    /// course's cube maps, whose negz face is turned by 180°.
+    #[arg(long, value_enum, default_value_t = CubemapLayout::OpenGl, help_heading = COMMON)]
+    pub env_layout: CubemapLayout,
     /// Wavelength passes K for scenes with dispersive materials (the slide's method): the frame is traced K
     /// times, once per band of the spectrum, and the passes are added with the bands' colours. Scenes
     /// without dispersive materials are traced once whatever K is.
@@ -112,6 +121,12 @@ pub trait Example: clap::Args + Clone + Send + Sync + 'static {
     const DEFAULT_SPP: u32;
     /// Builds the scene the options describe. Bad files or values are errors, not panics.
     fn scene(&self) -> Result<Scene>;
+    /// Builds the scene as [`Example::scene`] does, and sets the render settings that the scene decides
+    /// where the common options leave them open (a scene file's frame size and anti-aliasing). By default
+    /// the settings are the options'.
+    fn scene_and_settings(&self, _common: &CommonArgs, _settings: &mut RenderSettings) -> Result<Scene> {
+        self.scene()
+    }
 }
 
 // The whole command line of an example: its own options, then the ones every example shares. (A plain
@@ -151,14 +166,15 @@ impl<E: Example> Cli<E> {
     pub fn settings(&self) -> RenderSettings {
         let c = &self.common;
         RenderSettings {
-            width: c.width,
-            height: c.height,
+            width: c.width.unwrap_or(640),
+            height: c.height.unwrap_or(480),
             spp: c.spp.unwrap_or(E::DEFAULT_SPP),
             threads: c.threads,
             seed: c.seed,
             progress: !c.quiet,
             wavelengths: c.wavelengths,
             spectral: c.spectral,
+            adaptive_aa: c.adaptive_aa,
         }
     }
 
@@ -166,13 +182,19 @@ impl<E: Example> Cli<E> {
     /// by the common options, and its caustic photon map built (in parallel, on `--threads` threads) if it
     /// needs one.
     pub fn prepare_scene(&self) -> Result<Scene> {
+        self.prepare_scene_and_settings(&mut self.settings())
+    }
+
+    /// [`Cli::prepare_scene`], letting the scene set what the options leave open in `settings` (see
+    /// [`Example::scene_and_settings`]).
+    pub fn prepare_scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
         let common = &self.common;
-        let mut scene = self.example.scene()?;
+        let mut scene = self.example.scene_and_settings(common, settings)?;
         if let Some(depth) = common.max_depth {
             scene.max_depth = depth;
         }
         if let Some(path) = &common.env {
-            scene.environment = Some(environment::load(path)?);
+            scene.environment = Some(environment::load_with_layout(path, common.env_layout)?);
         }
         if common.exhaustive {
             scene.min_ray_weight = 0.0;
@@ -190,10 +212,16 @@ impl<E: Example> Cli<E> {
 
     /// Builds and renders the example's scene as the options say (the path both `main` and the tests use).
     pub fn render(&self) -> Result<(Frame, RenderStats)> {
-        let settings = self.settings();
+        self.render_and_settings().map(|(frame, stats, _)| (frame, stats))
+    }
+
+    /// [`Cli::render`], returning the settings it rendered with too.
+    fn render_and_settings(&self) -> Result<(Frame, RenderStats, RenderSettings)> {
+        let mut settings = self.settings();
         settings.check()?;
-        let scene = self.prepare_scene()?;
-        render(&scene, &settings)
+        let scene = self.prepare_scene_and_settings(&mut settings)?;
+        let (frame, stats) = render(&scene, &settings)?;
+        Ok((frame, stats, settings))
     }
 
     /// Where the picture of the example called `name` goes.
@@ -241,9 +269,8 @@ fn one_line(message: &str) -> String {
 
 fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     let output = args.output_path(name);
-    let (frame, stats) = args.render()?;
+    let (frame, stats, settings) = args.render_and_settings()?;
     frame.save(&output)?;
-    let settings = args.settings();
     if !args.common.quiet {
         let rays = stats.counters.total();
         let secs = stats.elapsed.as_secs_f64();
@@ -252,11 +279,12 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             plan => format!(" ({plan})"),
         };
         println!(
-            "{}: {}x{}, {} spp{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
             name,
             settings.width,
             settings.height,
             settings.spp,
+            if settings.adaptive_aa { " + adaptive AA" } else { "" },
             spectral,
             secs,
             stats.threads,

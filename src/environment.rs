@@ -36,6 +36,12 @@
 //! This is the layout of OpenGL and Direct3D cube maps, so skyboxes made for them (with these names) work
 //! as they are. A camera with a 90° square view pointed along an axis sees exactly that face.
 //!
+//! **The course's layout** ([`CubemapLayout::Course`]) differs in one face: its `negz` image is the OpenGL
+//! one turned by 180° (u along +X, v along +Y; it is the -Z face cut from a vertical-cross picture, where
+//! that face stands on its head). The course's scene files and cube maps use it; such a face is turned when
+//! it is loaded, so the look-up is the same for both layouts. Face files are found whatever the case of
+//! their extension (`posx.PNG`); all six must be square and of one size.
+//!
 //! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
 //! matters), and a degenerate direction returns a colour of the image rather than failing.
 
@@ -63,11 +69,16 @@ impl Environment for ConstantEnvironment {
     }
 }
 
-/// Loads the environment at `path`: a folder is a cube map (see [`CubemapEnvironment::load`]), a file an
-/// equirectangular image (see [`SphericalEnvironment::load`]).
+/// Loads the environment at `path`: a folder is a cube map in the OpenGL layout (see
+/// [`CubemapEnvironment::load`]), a file an equirectangular image (see [`SphericalEnvironment::load`]).
 pub fn load(path: &Path) -> Result<Arc<dyn Environment>> {
+    load_with_layout(path, CubemapLayout::OpenGl)
+}
+
+/// Loads the environment at `path` as [`load`] does, reading a cube map's faces in `layout`.
+pub fn load_with_layout(path: &Path, layout: CubemapLayout) -> Result<Arc<dyn Environment>> {
     Ok(if path.is_dir() {
-        Arc::new(CubemapEnvironment::load(path)?)
+        Arc::new(CubemapEnvironment::load_layout(path, layout)?)
     } else {
         Arc::new(SphericalEnvironment::load(path)?)
     })
@@ -100,9 +111,18 @@ impl SphericalEnvironment {
         SphericalEnvironment { bitmap, filter: Filter::Bilinear }
     }
 
-    /// Loads an equirectangular image file.
+    /// Loads an equirectangular image file; one that is not twice as wide as high is refused.
     pub fn load(path: &Path) -> Result<SphericalEnvironment> {
-        Ok(SphericalEnvironment::new(Arc::new(Bitmap::load(path)?)))
+        let bitmap = Bitmap::load(path)?;
+        let (w, h) = (bitmap.width(), bitmap.height());
+        if w != 2 * h {
+            return Err(Error::file(
+                "cannot use environment",
+                path,
+                format!("an equirectangular image must be twice as wide as high (2:1), this one is {w}x{h}"),
+            ));
+        }
+        Ok(SphericalEnvironment::new(Arc::new(bitmap)))
     }
 
     pub fn with_filter(self, filter: Filter) -> SphericalEnvironment {
@@ -180,6 +200,24 @@ pub fn cube_face_direction(face: CubeFace, u: f32, v: f32) -> Vector {
 /// The extensions a cube face file may have, tried in this order.
 pub const FACE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr"];
 
+/// How the six images of a cube map are oriented (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum CubemapLayout {
+    /// OpenGL's and Direct3D's: the skyboxes found on the web, and the workbook's own `sky_cubemap`.
+    #[default]
+    #[value(name = "opengl")]
+    OpenGl,
+    /// The course's: `negz` turned by 180° against OpenGL's. The course's cube maps and scene files.
+    Course,
+}
+
+/// The image turned by 180° (upside down and mirrored).
+fn half_turn(bitmap: &Bitmap) -> Bitmap {
+    let (w, h) = (bitmap.width(), bitmap.height());
+    let pixels = (0..h).flat_map(|y| (0..w).map(move |x| bitmap.get_pixel(w - 1 - x, h - 1 - y))).collect();
+    Bitmap::from_pixels(w, h, pixels)
+}
+
 /// An environment from six images on the faces of a cube (the slides' cube map).
 #[derive(Clone, Debug)]
 pub struct CubemapEnvironment {
@@ -194,25 +232,57 @@ impl CubemapEnvironment {
         CubemapEnvironment { faces, filter: Filter::Bilinear }
     }
 
-    /// Loads the six faces `posx, negx, posy, negy, posz, negz` (each with one of [`FACE_EXTENSIONS`]) from
-    /// the folder `dir`. A missing or unreadable face is an error naming its file.
+    /// Loads the six faces `posx, negx, posy, negy, posz, negz` (each with one of [`FACE_EXTENSIONS`], in
+    /// any case) from the folder `dir`, in the OpenGL layout.
     pub fn load(dir: &Path) -> Result<CubemapEnvironment> {
+        CubemapEnvironment::load_layout(dir, CubemapLayout::OpenGl)
+    }
+
+    /// Loads the six faces from the folder `dir`, in `layout`. A missing or unreadable face is an error
+    /// naming its file; so are faces that are not square or not all of one size.
+    pub fn load_layout(dir: &Path, layout: CubemapLayout) -> Result<CubemapEnvironment> {
+        let entries: Vec<std::path::PathBuf> = std::fs::read_dir(dir)
+            .map_err(|e| Error::file("cannot read cube map folder", dir, e))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file())
+            .collect();
+        let find = |face: CubeFace| {
+            let named = |ext: &str| {
+                entries.iter().find(|p| {
+                    let lower = |s: Option<&std::ffi::OsStr>| s.map(|s| s.to_string_lossy().to_ascii_lowercase());
+                    p.file_stem().is_some_and(|s| s == face.name()) && lower(p.extension()).as_deref() == Some(ext)
+                })
+            };
+            FACE_EXTENSIONS.iter().find_map(|ext| named(ext)).ok_or_else(|| {
+                Error::file(
+                    "cannot find cube face",
+                    &dir.join(face.name()),
+                    format!("no {}.png, .jpg, .jpeg, .bmp, .hdr or .exr in the folder", face.name()),
+                )
+            })
+        };
         let load_face = |face: CubeFace| {
-            let path = FACE_EXTENSIONS
-                .iter()
-                .map(|ext| dir.join(format!("{}.{ext}", face.name())))
-                .find(|p| p.is_file())
-                .ok_or_else(|| {
-                    Error::file(
-                        "cannot find cube face",
-                        &dir.join(face.name()),
-                        format!("no {}.png, .jpg, .jpeg, .bmp, .hdr or .exr in the folder", face.name()),
-                    )
-                })?;
-            Bitmap::load(&path).map(Arc::new)
+            let path = find(face)?;
+            let bitmap = Bitmap::load(path)?;
+            let turned = layout == CubemapLayout::Course && face == CubeFace::NegZ;
+            Ok::<_, Error>((path.clone(), if turned { half_turn(&bitmap) } else { bitmap }))
         };
         let [a, b, c, d, e, f] = CubeFace::ALL.map(load_face);
-        Ok(CubemapEnvironment::new([a?, b?, c?, d?, e?, f?]))
+        let faces = [a?, b?, c?, d?, e?, f?];
+        let size = faces[0].1.width();
+        for (path, bitmap) in &faces {
+            let (w, h) = (bitmap.width(), bitmap.height());
+            if w != h || w != size {
+                return Err(Error::file(
+                    "cannot use cube face",
+                    path,
+                    format!(
+                        "it is {w}x{h}; the six faces of a cube map must be square and of one size ({size}x{size})"
+                    ),
+                ));
+            }
+        }
+        Ok(CubemapEnvironment::new(faces.map(|(_, bitmap)| Arc::new(bitmap))))
     }
 
     pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {

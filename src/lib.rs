@@ -12,18 +12,20 @@
 //! | [`environment`] | what rays that hit nothing see: constant, spherical (equirectangular) and cube-map environments |
 //! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
-//! | [`render`] | the parallel, deterministic renderer |
+//! | [`render`], [`adaptive_aa`] | the parallel, deterministic renderer; the course's adaptive anti-aliasing |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | [`cli`] | the command line every example shares, and the `run` that is every example's `main` |
 //! | [`workbook`] | what the examples share that is not a slide's lesson: bundled textures, the sky, studios |
+//! | [`scene_file`] | the course's `.qdmg` scene files |
 //! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
 //!
 //! An example, or a homework, starts with `use lecture6::prelude::*;`, which brings in everything it needs to
 //! build a scene and run it (see [`cli::Example`] for a whole example in 25 lines).
 
+pub mod adaptive_aa;
 pub mod assets;
 pub mod bitmap;
 pub mod camera;
@@ -42,6 +44,7 @@ pub mod render;
 pub mod rng;
 pub mod sampling;
 pub mod scene;
+pub mod scene_file;
 pub mod shader;
 pub mod spectral;
 pub mod study;

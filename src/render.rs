@@ -54,6 +54,9 @@ pub struct RenderSettings {
     pub wavelengths: u32,
     /// How a dispersive scene is traced: K wavelength passes or one wavelength per sample.
     pub spectral: SpectralMode,
+    /// The course's adaptive anti-aliasing after the single sample of each pixel (see
+    /// [`crate::adaptive_aa`]); needs `spp` 1.
+    pub adaptive_aa: bool,
 }
 
 impl Default for RenderSettings {
@@ -67,6 +70,7 @@ impl Default for RenderSettings {
             progress: false,
             wavelengths: 8,
             spectral: SpectralMode::Passes,
+            adaptive_aa: false,
         }
     }
 }
@@ -92,6 +96,13 @@ impl RenderSettings {
                 "wavelength passes",
                 self.wavelengths,
                 format!("must be 1 to {MAX_WAVELENGTHS}"),
+            ));
+        }
+        if self.adaptive_aa && self.spp != 1 {
+            return Err(Error::parameter(
+                "samples per pixel",
+                self.spp,
+                "adaptive anti-aliasing starts from one sample per pixel",
             ));
         }
         if self.threads == Some(0) {
@@ -257,7 +268,10 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
         ProgressBar::hidden()
     };
     let mut frame = Frame::new(w, h);
-    let counters = pool.install(|| {
+    if settings.adaptive_aa && plan != SpectralPlan::White {
+        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
+    }
+    let mut counters = pool.install(|| {
         frame
             .pixels
             .par_chunks_mut(w as usize)
@@ -276,6 +290,9 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
             })
     });
     bar.finish_and_clear();
+    if settings.adaptive_aa {
+        counters.add(&pool.install(|| crate::adaptive_aa::refine(scene, &camera, settings.seed, &mut frame)));
+    }
     let stats = RenderStats {
         elapsed: start.elapsed(),
         threads: pool.current_num_threads(),

@@ -2,11 +2,14 @@
 //! mesh read from a Wavefront OBJ file, in its canonical form; a node's transform places it anywhere, and
 //! several nodes can share one mesh (instancing).
 //!
-//! - Loading: tobj, polygons triangulated. Triangles with a zero area or a non-finite vertex are dropped
+//! - Loading: tobj; polygons are cut into triangles in their own plane by ear clipping (see
+//!   [`polygon`]), so non-convex faces keep their shape. Triangles with a zero area or a non-finite vertex are dropped
 //!   (they cannot be hit and have no normal), so an empty or degenerate file gives an empty mesh, never a
 //!   NaN.
-//! - Shading: smooth by default, with the file's vertex normals or, when it has none, normals computed by
-//!   summing the area-weighted face normals around each vertex; `faceted` uses the face normals.
+//! - Shading: smooth with the file's vertex normals; a file without normals is faceted, as the course renders
+//!   it, unless it is loaded with `auto_smooth` (the course's `autoSmooth`, the examples' `--smooth`), which
+//!   sums the area-weighted face normals around each vertex (the course sums unit face normals, unweighted:
+//!   a small difference on meshes of uneven triangles). `faceted` uses the face normals.
 //!   `geometric_normal` is the face normal, turned to the side of the shading normal.
 //! - u/v: from the file when it has texture coordinates (as written there), else the barycentric
 //!   coordinates of the hit.
@@ -22,6 +25,7 @@
 //!   it starts on.
 
 use super::bvh::Bvh;
+use super::polygon;
 use super::{Aabb, Geometry, IntersectionInfo};
 use crate::error::{Error, Result};
 use crate::math::{Vector, gamma};
@@ -41,6 +45,34 @@ pub struct Mesh {
     uvs: Vec<[[f32; 2]; 3]>,
     /// Shade with the face normals instead of the interpolated vertex normals.
     pub faceted: bool,
+    /// Ignore the triangles whose front (the side their corners wind counter-clockwise around, as the file
+    /// lists them) faces away from the ray, for every ray: the course's `backfaceCulling`.
+    pub backface_culling: bool,
+}
+
+/// Extensions of image files, which are refused as meshes with a message saying so.
+const IMAGE_EXTENSIONS: [&str; 8] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr", "tga", "gif"];
+
+/// tobj's error for an OBJ file, with the line it stopped at when the error is about one line (tobj reads
+/// the file line by line and stops at the first bad one; `consumed` bytes had been read by then).
+fn obj_error(bytes: &[u8], consumed: usize, e: tobj::LoadError) -> String {
+    use tobj::LoadError::*;
+    match e {
+        PositionParseError
+        | NormalParseError
+        | TexcoordParseError
+        | FaceParseError
+        | UnrecognizedCharacter
+        | InvalidPolygon
+        | ScalingByZeroError
+        | ColorParseError => {
+            // The bad line's own newline was read too.
+            let line = bytes[..consumed.saturating_sub(1)].iter().filter(|&&b| b == b'\n').count() + 1;
+            format!("line {line}: {e}")
+        }
+        ReadError => format!("{e} (not a text file?)"),
+        e => e.to_string(),
+    }
 }
 
 /// Index triples into a list of attributes, one per triangle.
@@ -217,46 +249,95 @@ impl Mesh {
                 order.iter().map(|&k| idx[original(k)].map(|i| values[i as usize])).collect()
             }),
             faceted: false,
+            backface_culling: false,
         })
     }
 
-    /// Loads a Wavefront OBJ file (every object in it, polygons triangulated). A missing or malformed file
-    /// is an error naming it.
+    /// Loads a Wavefront OBJ file (every object in it, polygons triangulated in their plane, see
+    /// [`polygon`]). A mesh whose file has no normals is faceted, as the course renders it;
+    /// [`Mesh::load_auto_smooth`] computes smooth normals for it instead. A missing, unreadable or malformed
+    /// file is an error naming it (and the OS error, or the line at fault).
     pub fn load(path: &Path) -> Result<Mesh> {
+        Mesh::load_auto_smooth(path, false)
+    }
+
+    /// Loads an OBJ file as [`Mesh::load`] does; when the file has no normals and `auto_smooth` is set (the
+    /// course's `autoSmooth`, the examples' `--smooth`), smooth vertex normals are computed for it.
+    pub fn load_auto_smooth(path: &Path, auto_smooth: bool) -> Result<Mesh> {
+        let fail = |reason: String| Error::file("cannot read mesh", path, reason);
+        if path.is_dir() {
+            return Err(fail("it is a folder, not an OBJ file".into()));
+        }
+        let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
+        if IMAGE_EXTENSIONS.contains(&ext.as_str()) {
+            return Err(fail(format!("it is an image (.{ext}), not an OBJ file")));
+        }
+        let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
         let options =
-            tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
+            tobj::LoadOptions { triangulate: false, single_index: false, ignore_points: true, ignore_lines: true };
+        let mut rest: &[u8] = &bytes;
         // Materials are not needed: a missing .mtl file is not an error.
-        let (models, _) = tobj::load_obj(path, &options).map_err(|e| Error::file("cannot read mesh", path, e))?;
+        let (models, _) = tobj::load_obj_buf(&mut rest, &options, |_| Err(tobj::LoadError::OpenFileFailed))
+            .map_err(|e| fail(obj_error(&bytes, bytes.len() - rest.len(), e)))?;
         let mut positions = Vec::new();
         let mut triangles = Vec::new();
         let (mut normals, mut normal_indices) = (Vec::new(), Vec::new());
         let (mut uvs, mut uv_indices) = (Vec::new(), Vec::new());
         let (mut all_normals, mut all_uvs) = (true, true);
-        let triples = |idx: &[u32], base: usize| -> Vec<[u32; 3]> {
-            idx.chunks_exact(3).map(|c| [c[0], c[1], c[2]].map(|i| i + base as u32)).collect()
-        };
         for model in &models {
             let m = &model.mesh;
-            let faces = m.indices.len() / 3;
-            let (p0, n0, t0) = (positions.len(), normals.len(), uvs.len());
+            let (p0, n0, t0) = (positions.len() as u32, normals.len() as u32, uvs.len() as u32);
             positions.extend(m.positions.chunks_exact(3).map(|p| Vector::new(p[0], p[1], p[2])));
             normals.extend(m.normals.chunks_exact(3).map(|n| Vector::new(n[0], n[1], n[2])));
             uvs.extend(m.texcoords.chunks_exact(2).map(|t| [t[0], t[1]]));
-            triangles.extend(triples(&m.indices, p0));
-            all_normals &= m.normal_indices.len() == 3 * faces;
-            all_uvs &= m.texcoord_indices.len() == 3 * faces;
-            normal_indices.extend(triples(&m.normal_indices, n0));
-            uv_indices.extend(triples(&m.texcoord_indices, t0));
+            all_normals &= m.normal_indices.len() == m.indices.len();
+            all_uvs &= m.texcoord_indices.len() == m.indices.len();
+            let mut first = 0;
+            // tobj leaves the arities empty when every face is a triangle.
+            let arities: Vec<usize> = if m.face_arities.is_empty() {
+                vec![3; m.indices.len() / 3]
+            } else {
+                m.face_arities.iter().map(|&a| a as usize).collect()
+            };
+            for arity in arities {
+                let face = first..first + arity;
+                first += arity;
+                let corners: Vec<Vector> =
+                    m.indices[face.clone()].iter().map(|&i| positions[(p0 + i) as usize]).collect();
+                for t in polygon::triangulate(&corners) {
+                    let pick = |idx: &[u32], base: u32| t.map(|k| idx[face.start + k] + base);
+                    triangles.push(pick(&m.indices, p0));
+                    if all_normals {
+                        normal_indices.push(pick(&m.normal_indices, n0));
+                    }
+                    if all_uvs {
+                        uv_indices.push(pick(&m.texcoord_indices, t0));
+                    }
+                }
+            }
         }
-        let normals = (all_normals && !triangles.is_empty()).then_some((&normals[..], &normal_indices[..]));
-        let uvs = (all_uvs && !triangles.is_empty()).then_some((&uvs[..], &uv_indices[..]));
-        Mesh::from_parts(&positions, &triangles, normals, uvs).map_err(|e| Error::file("cannot read mesh", path, e))
+        let has_normals = all_normals && !normals.is_empty();
+        let normals = has_normals.then_some((&normals[..], &normal_indices[..]));
+        let uvs = (all_uvs && !uvs.is_empty()).then_some((&uvs[..], &uv_indices[..]));
+        let mesh = Mesh::from_parts(&positions, &triangles, normals, uvs).map_err(|e| fail(e.to_string()))?;
+        Ok(mesh.with_faceted(!has_normals && !auto_smooth))
     }
 
     /// The same mesh shaded with its face normals (`true`) or smoothly (`false`).
     pub fn with_faceted(mut self, faceted: bool) -> Mesh {
         self.faceted = faceted;
         self
+    }
+
+    /// The same mesh, ignoring (`true`) or seeing (`false`) the triangles a ray meets from their back.
+    pub fn with_backface_culling(mut self, culling: bool) -> Mesh {
+        self.backface_culling = culling;
+        self
+    }
+
+    /// Whether triangle `i` is ignored by a ray along `dir` (back-face culling).
+    fn culled(&self, i: usize, dir: Vector) -> bool {
+        self.backface_culling && face_normal(&self.triangles[i]).dot(dir) > 0.0
     }
 
     /// The number of triangles (after dropping degenerate ones).
@@ -301,7 +382,7 @@ impl Geometry for Mesh {
         let sheared = ShearedRay::new(ray);
         let mut best = None;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            for i in range {
+            for i in range.filter(|&i| !self.culled(i, ray.dir)) {
                 if let Some((t, b)) = sheared.hit(&self.triangles[i], *t_max) {
                     *t_max = t;
                     best = Some((i, t, b));
@@ -316,7 +397,9 @@ impl Geometry for Mesh {
         let sheared = ShearedRay::new(ray);
         let mut hit = false;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            hit = range.into_iter().any(|i| sheared.hit(&self.triangles[i], *t_max).is_some());
+            hit = range
+                .into_iter()
+                .any(|i| !self.culled(i, ray.dir) && sheared.hit(&self.triangles[i], *t_max).is_some());
             hit
         });
         hit

@@ -11,6 +11,7 @@ pub mod bvh;
 mod cube;
 pub mod mesh;
 mod plane;
+pub mod polygon;
 mod prism;
 mod sphere;
 
