@@ -23,7 +23,7 @@ macro_rules! example_names {
 
 /// The workbook's examples, by name: the registry must hold exactly these (a student's own files in
 /// `examples/` are not the workbook's and are not checked).
-const WORKBOOK: [&str; 11] = [
+const WORKBOOK: [&str; 12] = [
     "bitmap_textures",
     "model_transform",
     "environment",
@@ -35,6 +35,7 @@ const WORKBOOK: [&str; 11] = [
     "glossy",
     "dispersion",
     "photon_map",
+    "scene_file",
 ];
 
 #[test]

@@ -33,4 +33,5 @@ registry! {
     glossy => "../../examples/glossy.rs",
     dispersion => "../../examples/dispersion.rs",
     photon_map => "../../examples/photon_map.rs",
+    scene_file => "../../examples/scene_file.rs",
 }
