@@ -1,4 +1,4 @@
-//! Photon-mapping speed: photons traced per second, k-d tree build time and caustic-estimate (k-nearest-
+//! Photon-mapping speed: photons traced per second, search grid build time and caustic-estimate (k-nearest-
 //! neighbour lookup) time, on the `photon_map` example's scene. A plain program (no benchmark framework, so
 //! nothing heavy is compiled): each figure is the median of several runs.
 //!
@@ -84,7 +84,7 @@ fn main() {
     let photons = trace_photons(&scene, &emitter, seed);
     let radius = settings.max_radius.expect("the example sets its radius");
     let (t, map) = time(|| PhotonMap::new(photons.clone(), settings.k, radius, false).expect("map"));
-    println!("k-d tree of {} photons: built in {:.2} ms", map.photons().len(), t.as_secs_f64() * 1e3);
+    println!("photon grid of {} photons: built in {:.2} ms", map.photons().len(), t.as_secs_f64() * 1e3);
 
     for (what, in_caustics) in [("anywhere on the floor", false), ("in the caustics", true)] {
         let points = query_points(LOOKUPS, map.photons(), in_caustics);

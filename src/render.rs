@@ -252,6 +252,7 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
 pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: SpectralPlan) -> Result<(Frame, RenderStats)> {
     settings.check()?;
     scene.check()?;
+    let scene = &scene.with_node_tree();
     let pool = thread_pool(settings.threads)?;
     let start = Instant::now();
     let (w, h) = (settings.width, settings.height);
@@ -275,6 +276,9 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
         frame
             .pixels
             .par_chunks_mut(w as usize)
+            // One row per task: rows cost very different amounts (sky against glass), and rayon's default
+            // splitting into a few large chunks leaves a thread idle at the end.
+            .with_max_len(1)
             .enumerate()
             .map(|(y, row)| {
                 let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);

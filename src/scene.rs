@@ -19,7 +19,7 @@ use crate::error::Result;
 use crate::geometry::IntersectionInfo;
 use crate::light::PointLight;
 use crate::math::{Vector, max_abs};
-use crate::node::Node;
+use crate::node::{Node, NodeTree, closest_hit_linear};
 use crate::photon_map::{PhotonMap, PhotonSettings};
 use crate::ray::{Ray, spawn_point};
 use crate::rng::Rng;
@@ -66,6 +66,9 @@ pub struct Scene {
     /// The caustic photon map, built before rendering (see [`crate::cli::Cli::prepare_scene`]); `None` renders
     /// without caustics.
     pub photon_map: Option<Arc<PhotonMap>>,
+    /// The BVH over the nodes, in the copy of the scene that the renderer and the photon tracer trace
+    /// (see [`Scene::with_node_tree`]); `None` tests the nodes one by one.
+    node_tree: Option<Arc<NodeTree>>,
 }
 
 impl Scene {
@@ -80,6 +83,7 @@ impl Scene {
             min_ray_weight: srgb8_finest_step(),
             photons: PhotonSettings::default(),
             photon_map: None,
+            node_tree: None,
         }
     }
 
@@ -131,17 +135,28 @@ impl Scene {
         self.nodes.iter().any(|n| n.shader.is_dispersive())
     }
 
-    /// The closest node hit by the ray, and where.
+    /// A copy of the scene with a [`NodeTree`] over its nodes (if it has enough of them), which the renderer and the photon tracer
+    /// trace instead of the scene itself: the tree is built once the scene is complete, and nothing changes
+    /// the copy's nodes after that, so the tree always describes them.
+    pub(crate) fn with_node_tree(&self) -> Scene {
+        Scene { node_tree: NodeTree::build(&self.nodes).map(Arc::new), ..self.clone() }
+    }
+
+    /// The closest node hit by the ray, and where: the nearest hit is found first ([`Node::hit`]), and only
+    /// the winner's surface is described ([`Node::surface`]).
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
-        let mut best: Option<(IntersectionInfo, &Node)> = None;
-        let mut t_max = f32::INFINITY;
-        for node in &self.nodes {
-            if let Some(info) = node.intersect(ray, t_max) {
-                t_max = info.distance;
-                best = Some((info, node));
-            }
+        match &self.node_tree {
+            Some(tree) => tree.closest_hit(&self.nodes, ray),
+            None => closest_hit_linear(&self.nodes, ray),
         }
-        best
+    }
+
+    /// Whether anything is hit by the ray before `t_max`.
+    pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        match &self.node_tree {
+            Some(tree) => tree.intersects(&self.nodes, ray, t_max),
+            None => self.nodes.iter().any(|node| node.intersects(ray, t_max)),
+        }
     }
 }
 
@@ -215,6 +230,6 @@ impl<'a> TraceContext<'a> {
         let to_light = to - start;
         let t_max = to_light.length();
         let ray = Ray::new(start, to_light / t_max);
-        !self.scene.nodes.iter().any(|node| node.intersects(&ray, t_max))
+        !self.scene.intersects(&ray, t_max)
     }
 }

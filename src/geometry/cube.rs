@@ -3,7 +3,7 @@
 //! Scale and rotate it with a node transform to get any box.
 
 use super::{Aabb, Geometry, IntersectionInfo};
-use crate::math::{Vector, gamma, max_abs};
+use crate::math::Vector;
 use crate::ray::Ray;
 
 #[derive(Clone, Copy, Debug)]
@@ -59,15 +59,7 @@ impl Geometry for Cube {
         };
         let side = 2.0 * self.half_side;
         let uv = |k: usize| ((local[k] + self.half_side) / side).clamp(0.0, 1.0);
-        Some(IntersectionInfo {
-            ip,
-            normal,
-            geometric_normal: normal,
-            distance: t,
-            u: uv(a),
-            v: uv(b),
-            error: gamma(3) * max_abs(ip),
-        })
+        Some(IntersectionInfo::new(ip, normal, t, (uv(a), uv(b))))
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

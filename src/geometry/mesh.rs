@@ -26,7 +26,7 @@
 
 use super::bvh::Bvh;
 use super::polygon;
-use super::{Aabb, Geometry, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::error::{Error, Result};
 use crate::math::{Vector, gamma};
 use crate::ray::Ray;
@@ -373,24 +373,36 @@ impl Mesh {
             ),
             None => (b[1], b[2]),
         };
-        IntersectionInfo { ip, normal, geometric_normal, distance: t, u, v, error }
+        IntersectionInfo::new(ip, normal, t, (u, v)).with_geometric_normal(geometric_normal).with_error(error)
     }
 }
 
 impl Geometry for Mesh {
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
+    }
+
+    /// The triangle and the barycentric coordinates of the hit; normals and u/v wait for the winner.
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let sheared = ShearedRay::new(ray);
         let mut best = None;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
             for i in range.filter(|&i| !self.culled(i, ray.dir)) {
                 if let Some((t, b)) = sheared.hit(&self.triangles[i], *t_max) {
                     *t_max = t;
-                    best = Some((i, t, b));
+                    best = Some(Hit::Pending { distance: t, part: i as u32, coords: b });
                 }
             }
             false
         });
-        best.map(|(i, t, b)| self.info(i, t, b))
+        best
+    }
+
+    fn surface(&self, _ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match *hit {
+            Hit::Pending { distance, part, coords } => Some(self.info(part as usize, distance, coords)),
+            Hit::Complete(info) => Some(info),
+        }
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

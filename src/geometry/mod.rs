@@ -21,10 +21,13 @@ pub use plane::Plane;
 pub use prism::Prism;
 pub use sphere::Sphere;
 
-use crate::math::Vector;
+use crate::math::{Vector, gamma, max_abs};
 use crate::ray::Ray;
 
 /// What a ray hit (the course's `IntersectionInfo`).
+///
+/// A shape makes one with [`IntersectionInfo::new`] (and [`IntersectionInfo::with_geometric_normal`] when
+/// its shading normal differs from the surface's own).
 #[derive(Clone, Copy, Debug)]
 pub struct IntersectionInfo {
     /// The hit point.
@@ -43,11 +46,89 @@ pub struct IntersectionInfo {
     pub error: f32,
 }
 
+impl IntersectionInfo {
+    /// A hit at ray parameter `distance` on the point `ip`, with the unit outward `normal` (used for both
+    /// shading and offsetting) and texture coordinates `uv`. The error bound is that of a point lying on the
+    /// surface up to the rounding of a few operations on coordinates no larger than its own,
+    /// `gamma(3) * max|ip|`: right for a hit re-projected onto the surface (snapped onto a plane or a face,
+    /// or moved onto a sphere along its normal) and for one computed from exact parameters. A shape whose hit
+    /// point carries more error says so with [`IntersectionInfo::with_error`].
+    pub fn new(ip: Vector, normal: Vector, distance: f32, uv: (f32, f32)) -> IntersectionInfo {
+        IntersectionInfo {
+            ip,
+            normal,
+            geometric_normal: normal,
+            distance,
+            u: uv.0,
+            v: uv.1,
+            error: gamma(3) * max_abs(ip),
+        }
+    }
+
+    /// The same hit with a larger (or smaller, when the shape knows better) absolute error bound on `ip`.
+    pub fn with_error(self, error: f32) -> IntersectionInfo {
+        IntersectionInfo { error, ..self }
+    }
+
+    /// The same hit with its own surface normal, when the shading normal differs (an interpolated normal).
+    pub fn with_geometric_normal(self, geometric_normal: Vector) -> IntersectionInfo {
+        IntersectionInfo { geometric_normal, ..self }
+    }
+}
+
+/// What the first, cheap phase of a closest-hit search found on a shape (see [`Geometry::hit`]).
+///
+/// The scene looks for the nearest hit over all its nodes with [`Geometry::hit`] and describes only the
+/// winner's surface ([`Geometry::surface`]): the normal, u/v (spherical coordinates cost two inverse
+/// trigonometric functions) and the error bound are computed once per ray instead of once per candidate
+/// (pbrt's two-phase intersection).
+#[derive(Clone, Copy, Debug)]
+pub enum Hit {
+    /// The hit with its surface already described (what the default [`Geometry::hit`] returns).
+    Complete(IntersectionInfo),
+    /// Only the ray parameter, and what the shape needs to describe the surface later: which part of it was
+    /// hit (a triangle, a face) and up to three coordinates on that part (barycentric coordinates).
+    Pending { distance: f32, part: u32, coords: [f32; 3] },
+}
+
+impl Hit {
+    /// The ray parameter of the hit.
+    pub fn distance(&self) -> f32 {
+        match self {
+            Hit::Complete(info) => info.distance,
+            Hit::Pending { distance, .. } => *distance,
+        }
+    }
+}
+
 /// A shape in its canonical form.
+///
+/// A new shape needs [`intersect`](Geometry::intersect) (its closest hit, described with
+/// [`IntersectionInfo::new`]) and [`bounds`](Geometry::bounds) (or `None`); the other methods have correct
+/// defaults. A shape whose surface description is expensive may also override [`hit`](Geometry::hit), to
+/// return [`Hit::Pending`] with just the ray parameter, together with [`surface`](Geometry::surface), which
+/// finishes it; if it overrides `hit` alone, the default `surface` intersects the ray again, which is
+/// correct but slower.
 pub trait Geometry: Send + Sync {
     /// The closest hit with ray parameter in (0, `t_max`), if any. The ray direction need not be unit
     /// (rays reach here through a node's inverse transform); `distance` is the ray parameter either way.
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo>;
+
+    /// The first phase of a closest-hit search: the same hit as `intersect`, possibly without its surface
+    /// description (see [`Hit`]).
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.intersect(ray, t_max).map(Hit::Complete)
+    }
+
+    /// The second phase: the surface description of a hit that [`hit`](Geometry::hit) found for the same
+    /// ray. `None` only if the shape cannot find the hit again.
+    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match hit {
+            Hit::Complete(info) => Some(*info),
+            // The closest hit in (0, inf) is the closest one in (0, t_max) that `hit` found.
+            Hit::Pending { .. } => self.intersect(ray, f32::INFINITY),
+        }
+    }
 
     /// Whether anything is hit with ray parameter in (0, `t_max`) (shadow rays). Shapes with a cheaper
     /// any-hit test override it.

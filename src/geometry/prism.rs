@@ -95,15 +95,7 @@ impl Geometry for Prism {
         } else {
             ((ip.y + self.half_height) / (2.0 * self.half_height)).clamp(0.0, 1.0)
         };
-        Some(IntersectionInfo {
-            ip,
-            normal,
-            geometric_normal: normal,
-            distance: t,
-            u,
-            v,
-            error: gamma(7) * (max_abs(ip) + offset.abs()),
-        })
+        Some(IntersectionInfo::new(ip, normal, t, (u, v)).with_error(gamma(7) * (max_abs(ip) + offset.abs())))
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

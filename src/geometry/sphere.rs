@@ -2,7 +2,7 @@
 //! (u = longitude / 2 pi, measured from -X through +Z; v = 0 at the top, 1 at the bottom), as in the course.
 //! Scale it with a node transform to get an ellipsoid.
 
-use super::{Aabb, Geometry, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::math::{Vector, gamma, max_abs};
 use crate::ray::Ray;
 use std::f32::consts::{FRAC_1_PI, PI};
@@ -44,13 +44,9 @@ impl Sphere {
     }
 }
 
-impl Geometry for Sphere {
-    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        let (t0, t1) = self.roots(ray)?;
-        let t = if t0 > 0.0 { t0 } else { t1 };
-        if !(t > 0.0 && t < t_max) {
-            return None;
-        }
+impl Sphere {
+    /// The surface at the hit at ray parameter `t`.
+    fn info(&self, ray: &Ray, t: f32) -> IntersectionInfo {
         // Re-project the hit onto the sphere: the error is then that of the projection, not of t.
         let d = ray.at(t) - self.center;
         // A sphere smaller than the spacing of floats where it stands can round the hit onto its centre:
@@ -59,15 +55,24 @@ impl Geometry for Sphere {
         let ip = self.center + normal * self.radius;
         let u = (PI + normal.z.atan2(normal.x)) * (0.5 * FRAC_1_PI);
         let v = 1.0 - (0.5 * PI + normal.y.clamp(-1.0, 1.0).asin()) * FRAC_1_PI;
-        Some(IntersectionInfo {
-            ip,
-            normal,
-            geometric_normal: normal,
-            distance: t,
-            u,
-            v,
-            error: gamma(5) * (max_abs(self.center) + self.radius),
-        })
+        IntersectionInfo::new(ip, normal, t, (u, v)).with_error(gamma(5) * (max_abs(self.center) + self.radius))
+    }
+}
+
+impl Geometry for Sphere {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.hit(ray, t_max).map(|hit| self.info(ray, hit.distance()))
+    }
+
+    /// Only the ray parameter: the normal and the spherical u/v wait for the winner.
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        let (t0, t1) = self.roots(ray)?;
+        let t = if t0 > 0.0 { t0 } else { t1 };
+        (t > 0.0 && t < t_max).then_some(Hit::Pending { distance: t, part: 0, coords: [0.0; 3] })
+    }
+
+    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        Some(self.info(ray, hit.distance()))
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

@@ -1,0 +1,327 @@
+//! Speed of this build against an earlier build of the workbook, side by side in one run, and the cost of
+//! a ray against the number of objects in the scene.
+//!
+//! ```sh
+//! cargo build --release --examples               # this build's example binaries
+//! cargo bench --bench speed                      # against commit 49c9843, 3 rounds, 1 and 2 threads
+//! cargo bench --bench speed -- --base REV --rounds 5 --examples fresnel,glossy
+//! ```
+//!
+//! - The earlier build: the commit `--base` is checked out in a worktree at `target/bench-base` and its
+//!   examples built there (into `target/bench-base-target`, so this build's binaries stay as they are); both
+//!   are kept for the next run. Nothing of it is committed.
+//! - Every example of both builds (the ones both have) is run at its default settings with each thread count,
+//!   its picture written under `target/bench-out/`. The runs are interleaved: in each round every example runs
+//!   once in each build, the build that goes first alternating from round to round, so that a machine shared
+//!   with other work slows both builds alike. Each figure is the median over the rounds.
+//! - CPU time is that of the child process (`getrusage(RUSAGE_CHILDREN)`, user plus system), wall time is
+//!   the clock around it, and rays are read from the example's summary line
+//!   (`NAME: WxH, S spp, T s, N threads, R M rays, X Mrays/s -> PATH`), the only output this relies on.
+//!   Rays per CPU second compare the builds even where one traces more rays than the other.
+//! - The object-count curve renders, in this process, N small spheres on a plane (the final scene of "Ray
+//!   Tracing in One Weekend" has about 500) on one thread, with the scene's BVH over its nodes (`render`) and
+//!   with the slides' loop over every node, and reports the CPU time per ray.
+
+use clap::Parser;
+use lecture6::camera::Camera;
+use lecture6::color::Color;
+use lecture6::geometry::{Plane, Sphere};
+use lecture6::light::PointLight;
+use lecture6::math::Vector;
+use lecture6::node::Node;
+use lecture6::render::{RenderSettings, render};
+use lecture6::rng::Rng;
+use lecture6::scene::{Scene, TraceContext};
+use lecture6::shader::Lambert;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+#[derive(Parser)]
+struct Args {
+    /// The earlier build's commit (any revision git knows).
+    #[arg(long, default_value = "49c9843")]
+    base: String,
+    /// Rounds of runs (the median is reported).
+    #[arg(long, default_value_t = 3)]
+    rounds: usize,
+    /// Thread counts each example runs with.
+    #[arg(long, value_delimiter = ',', default_value = "1,2")]
+    threads: Vec<usize>,
+    /// Only these examples [default: all that both builds have].
+    #[arg(long, value_delimiter = ',')]
+    examples: Vec<String>,
+    /// Sphere counts of the object-count curve (none: no curve).
+    #[arg(long, value_delimiter = ',', default_value = "1,10,100,1000,10000")]
+    spheres: Vec<usize>,
+    /// Skip the examples (only the curve).
+    #[arg(long)]
+    no_examples: bool,
+    /// Accepted for `cargo bench` compatibility.
+    #[arg(long, hide = true)]
+    bench: bool,
+}
+
+/// The CPU time (user + system) of this process's waited-for children, or of the process itself.
+fn cpu_time(who: libc::c_int) -> Duration {
+    let mut usage = std::mem::MaybeUninit::<libc::rusage>::uninit();
+    // SAFETY: getrusage writes the whole struct when it returns 0.
+    let usage = unsafe {
+        assert_eq!(libc::getrusage(who, usage.as_mut_ptr()), 0, "getrusage failed");
+        usage.assume_init()
+    };
+    let tv = |t: libc::timeval| Duration::new(t.tv_sec as u64, t.tv_usec as u32 * 1000);
+    tv(usage.ru_utime) + tv(usage.ru_stime)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn run(what: &str, cmd: &mut Command) -> std::process::Output {
+    let out = cmd.output().unwrap_or_else(|e| panic!("cannot run {what}: {e}"));
+    if !out.status.success() {
+        panic!("{what} failed: {}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    }
+    out
+}
+
+/// The earlier build's example binaries: the commit checked out and built under `target/`.
+fn base_build(root: &Path, rev: &str) -> PathBuf {
+    let short = run("git", Command::new("git").current_dir(root).args(["rev-parse", "--short", rev]));
+    let short = String::from_utf8_lossy(&short.stdout).trim().to_string();
+    let tree = root.join("target/bench-base");
+    if !tree.exists() {
+        run(
+            "git worktree add",
+            Command::new("git").current_dir(root).arg("worktree").arg("add").arg("--detach").arg(&tree).arg(&short),
+        );
+    }
+    run("git checkout", Command::new("git").current_dir(&tree).args(["checkout", "--quiet", "--detach", &short]));
+    let target = root.join("target/bench-base-target");
+    eprintln!("building {short}'s examples in {}", tree.display());
+    run(
+        "cargo build of the earlier build",
+        Command::new(env!("CARGO")).current_dir(&tree).env("CARGO_TARGET_DIR", &target).args([
+            "build",
+            "--release",
+            "--examples",
+            "--quiet",
+        ]),
+    );
+    target.join("release/examples")
+}
+
+fn example_names(dir: &Path) -> BTreeSet<String> {
+    std::fs::read_dir(dir)
+        .map(|entries| {
+            entries.filter_map(|e| e.ok()?.path().file_stem()?.to_str().map(String::from)).collect::<BTreeSet<_>>()
+        })
+        .unwrap_or_default()
+}
+
+/// One run of an example: CPU seconds, wall seconds, rays.
+struct Sample {
+    cpu: f64,
+    wall: f64,
+    rays: f64,
+}
+
+fn run_example(bin: &Path, threads: usize, out: &Path) -> Sample {
+    let before = cpu_time(libc::RUSAGE_CHILDREN);
+    let start = Instant::now();
+    let output = run(
+        &bin.display().to_string(),
+        Command::new(bin).arg("--threads").arg(threads.to_string()).arg("--output").arg(out),
+    );
+    let wall = start.elapsed().as_secs_f64();
+    let cpu = (cpu_time(libc::RUSAGE_CHILDREN) - before).as_secs_f64();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let rays = stdout
+        .lines()
+        .find_map(|line| {
+            let before_rays = line.split(" M rays").next().filter(|b| b.len() < line.len())?;
+            before_rays.rsplit(' ').next()?.parse::<f64>().ok()
+        })
+        .unwrap_or_else(|| panic!("no ray count in the summary of {}: {stdout}", bin.display()))
+        * 1e6;
+    Sample { cpu, wall, rays }
+}
+
+/// Medians of one example in one build at one thread count.
+#[derive(Clone, Copy)]
+struct Figures {
+    cpu: f64,
+    wall: f64,
+    rays: f64,
+}
+
+fn figures(samples: &[Sample]) -> Figures {
+    Figures {
+        cpu: median(samples.iter().map(|s| s.cpu).collect()),
+        wall: median(samples.iter().map(|s| s.wall).collect()),
+        rays: median(samples.iter().map(|s| s.rays).collect()),
+    }
+}
+
+fn compare_examples(args: &Args, root: &Path) {
+    let base_dir = base_build(root, &args.base);
+    let new_dir = root.join("target/release/examples");
+    let sources = example_names(&root.join("examples"));
+    let mut names: Vec<String> =
+        example_names(&base_dir).intersection(&sources).filter(|n| new_dir.join(n).exists()).cloned().collect();
+    if !args.examples.is_empty() {
+        names.retain(|n| args.examples.contains(n));
+    }
+    assert!(!names.is_empty(), "no examples to compare: run `cargo build --release --examples` first");
+    let out_dir = root.join("target/bench-out");
+    std::fs::create_dir_all(&out_dir).expect("cannot create target/bench-out");
+    let builds = [("base", &base_dir), ("new", &new_dir)];
+    // samples[example][thread count][build]
+    let mut samples: Vec<Vec<[Vec<Sample>; 2]>> =
+        names.iter().map(|_| args.threads.iter().map(|_| [Vec::new(), Vec::new()]).collect()).collect();
+    for round in 0..args.rounds {
+        eprintln!("round {} of {}", round + 1, args.rounds);
+        for (e, name) in names.iter().enumerate() {
+            for (t, &threads) in args.threads.iter().enumerate() {
+                for k in 0..2 {
+                    let b = (k + round) % 2;
+                    let (label, dir) = builds[b];
+                    let out = out_dir.join(format!("{name}-{label}-{threads}t.png"));
+                    samples[e][t][b].push(run_example(&dir.join(name), threads, &out));
+                }
+            }
+        }
+    }
+    println!("\n## Examples: {} (base) against this build, median of {} interleaved rounds\n", args.base, args.rounds);
+    println!(
+        "| example | threads | base CPU s | new CPU s | CPU ratio | base wall s | new wall s | base Mrays/CPU s | new Mrays/CPU s | rays/CPU s ratio |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let mut all = Vec::new();
+    for (e, name) in names.iter().enumerate() {
+        let per_thread: Vec<[Figures; 2]> = samples[e].iter().map(|s| [figures(&s[0]), figures(&s[1])]).collect();
+        for (t, &threads) in args.threads.iter().enumerate() {
+            let [b, n] = per_thread[t];
+            let (b_rate, n_rate) = (b.rays / b.cpu / 1e6, n.rays / n.cpu / 1e6);
+            println!(
+                "| {name} | {threads} | {:.3} | {:.3} | {:.2}x | {:.3} | {:.3} | {:.2} | {:.2} | {:.2}x |",
+                b.cpu,
+                n.cpu,
+                b.cpu / n.cpu,
+                b.wall,
+                n.wall,
+                b_rate,
+                n_rate,
+                n_rate / b_rate
+            );
+        }
+        all.push(per_thread);
+    }
+    if let (Some(one), Some(two)) =
+        (args.threads.iter().position(|&t| t == 1), args.threads.iter().position(|&t| t == 2))
+    {
+        println!("\n## Thread scaling: wall time at 1 thread over wall time at 2 threads\n");
+        println!("| example | base | new |");
+        println!("|---|---:|---:|");
+        for (name, per_thread) in names.iter().zip(&all) {
+            let scaling = |b: usize| per_thread[one][b].wall / per_thread[two][b].wall;
+            println!("| {name} | {:.2}x | {:.2}x |", scaling(0), scaling(1));
+        }
+    }
+}
+
+/// N small spheres on a plane, as in the final scene of "Ray Tracing in One Weekend": on a jittered grid
+/// over the same 22 x 22 square whatever N, so that the picture stays alike and only the count changes.
+fn spheres_scene(n: usize) -> Scene {
+    let mut scene =
+        Scene::new(Camera { position: Vector::new(0.0, 3.0, -16.0), pitch: -12.0, fov: 70.0, ..Camera::default() });
+    scene.lights.push(PointLight::new(Vector::new(5.0, 20.0, -10.0), Color::WHITE, 600.0));
+    scene.ambient = Color::gray(0.1);
+    scene.add(Node::new(Arc::new(Plane::new(0.0, f32::INFINITY)), Arc::new(Lambert::new(Color::gray(0.5)))));
+    let side = (n as f64).sqrt().ceil() as usize;
+    let spacing = 22.0 / side as f32;
+    let radius = 0.3 * spacing;
+    let mut rng = Rng::for_keys(&[n as u64]);
+    for i in 0..n {
+        let (a, b) = ((i % side) as f32, (i / side) as f32);
+        let x = -11.0 + spacing * (a + 0.2 + 0.6 * rng.next_f32());
+        let z = -11.0 + spacing * (b + 0.2 + 0.6 * rng.next_f32());
+        let color = Color::new(rng.next_f32(), rng.next_f32(), rng.next_f32());
+        scene.add(Node::new(Arc::new(Sphere::new(Vector::new(x, radius, z), radius)), Arc::new(Lambert::new(color))));
+    }
+    scene
+}
+
+const CURVE_WIDTH: u32 = 320;
+const CURVE_HEIGHT: u32 = 240;
+
+/// CPU seconds and rays of one render of the scene on one thread, with the node BVH.
+fn render_with_tree(scene: &Scene) -> (f64, u64) {
+    let settings = RenderSettings { width: CURVE_WIDTH, height: CURVE_HEIGHT, threads: Some(1), ..Default::default() };
+    let before = cpu_time(libc::RUSAGE_SELF);
+    let (_, stats) = render(scene, &settings).expect("render");
+    ((cpu_time(libc::RUSAGE_SELF) - before).as_secs_f64(), stats.counters.total())
+}
+
+/// The same, testing every node for every ray (the slides' loop: a scene traced directly, without the
+/// renderer's BVH), on this thread, one sample through each pixel's centre.
+fn render_linear(scene: &Scene) -> (f64, u64) {
+    let camera = scene.camera.frame(CURVE_WIDTH, CURVE_HEIGHT);
+    let before = cpu_time(libc::RUSAGE_SELF);
+    let mut ctx = TraceContext::new(scene, Rng::for_keys(&[1]));
+    let mut sum = Color::BLACK;
+    for y in 0..CURVE_HEIGHT {
+        for x in 0..CURVE_WIDTH {
+            sum += ctx.raytrace(&camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5));
+        }
+    }
+    std::hint::black_box(sum);
+    ((cpu_time(libc::RUSAGE_SELF) - before).as_secs_f64(), ctx.counters.total())
+}
+
+fn object_count_curve(args: &Args) {
+    println!(
+        "\n## Object count: N spheres on a plane, {CURVE_WIDTH}x{CURVE_HEIGHT}, 1 spp, one thread, median of {} runs\n",
+        args.rounds
+    );
+    println!(
+        "| N | BVH ns/ray | BVH Mrays/CPU s | BVH cost / cost at N=10 | loop ns/ray | loop Mrays/CPU s | loop / BVH |"
+    );
+    println!("|---:|---:|---:|---:|---:|---:|---:|");
+    let mut at_ten = None;
+    for &n in &args.spheres {
+        let scene = spheres_scene(n);
+        let per_ray = |f: &dyn Fn(&Scene) -> (f64, u64)| {
+            median((0..args.rounds).map(|_| f(&scene)).map(|(cpu, rays)| cpu / rays as f64).collect())
+        };
+        let tree = per_ray(&render_with_tree);
+        let linear = per_ray(&render_linear);
+        if n == 10 {
+            at_ten = Some(tree);
+        }
+        let relative = at_ten.map_or("-".to_string(), |t| format!("{:.2}x", tree / t));
+        println!(
+            "| {n} | {:.0} | {:.2} | {relative} | {:.0} | {:.2} | {:.1}x |",
+            tree * 1e9,
+            1e-6 / tree,
+            linear * 1e9,
+            1e-6 / linear,
+            linear / tree
+        );
+    }
+}
+
+fn main() {
+    let args = Args::parse();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    if !args.no_examples {
+        compare_examples(&args, root);
+    }
+    if !args.spheres.is_empty() {
+        object_count_curve(&args);
+    }
+}
