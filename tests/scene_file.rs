@@ -216,6 +216,7 @@ fn shaders_and_textures_render_with_their_properties() {
 
 #[test]
 fn assumed_gamma_decodes_the_stored_values() {
+    std::fs::create_dir_all(common::root().join("target").join(FOLDER)).unwrap();
     image::RgbImage::from_pixel(2, 2, image::Rgb([128, 128, 128]))
         .save(common::root().join("target").join(FOLDER).join("grey.png"))
         .unwrap();
