@@ -6,11 +6,14 @@
 //! unknown options, whose message is put on one line too), never a panic.
 
 use crate::compare;
+use crate::debug_view::{DebugView, write_view};
 use crate::environment::{self, CubemapLayout};
 use crate::error::{Error, Result};
 use crate::photon_map::{PhotonArgs, PhotonMap};
+use crate::ray_tree::{PixelPos, TraceFormat, trace_pixel};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
+use crate::side_by_side::side_by_side;
 use crate::spectral::{SpectralMode, SpectralPlan};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -84,6 +87,26 @@ pub struct CommonArgs {
     pub spectral: SpectralMode,
     #[command(flatten)]
     pub photons: PhotonArgs,
+    /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
+    /// start, direction, what it hits, the shader and layer that sent it, its weight, its colour and why it
+    /// stopped, and how the colours add up to the pixel's.
+    #[arg(long, value_name = "X,Y", help_heading = COMMON)]
+    pub trace_pixel: Option<PixelPos>,
+    /// Which camera ray of the pixel --trace-pixel shows (numbered from 0).
+    #[arg(long, default_value_t = 0, value_name = "N", help_heading = COMMON)]
+    pub trace_sample: u32,
+    /// How --trace-pixel prints the tree: `text` (indented) or `json`.
+    #[arg(long, value_enum, default_value_t = TraceFormat::Text, help_heading = COMMON)]
+    pub trace_format: TraceFormat,
+    /// Write a false-colour debug view instead of the shaded picture (to --output, or out/EXAMPLE-VIEW.png)
+    /// and print its scale: the normals, u/v or distance of what each pixel sees, or a heat map of the rays,
+    /// the shadow rays or the deepest ray traced per pixel.
+    #[arg(long, value_enum, help_heading = COMMON)]
+    pub view: Option<DebugView>,
+    /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
+    /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
+    #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
+    pub side_by_side: Option<String>,
 }
 
 /// An example: its own options (a `clap::Args` struct) and how they turn into a scene. The options every
@@ -268,6 +291,19 @@ fn one_line(message: &str) -> String {
 }
 
 fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
+    if let Some(pixel) = args.common.trace_pixel {
+        print!("{}", trace_pixel(name, args, pixel)?);
+        return Ok(());
+    }
+    if let Some(alternative) = &args.common.side_by_side {
+        let given: Vec<_> = std::env::args_os().skip(1).collect();
+        print!("{}", side_by_side::<E>(name, &given, alternative)?);
+        return Ok(());
+    }
+    if let Some(view) = args.common.view {
+        print!("{}", write_view(name, args, view)?);
+        return Ok(());
+    }
     let output = args.output_path(name);
     let (frame, stats, settings) = args.render_and_settings()?;
     frame.save(&output)?;

@@ -13,6 +13,9 @@
 //! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`], [`adaptive_aa`] | the parallel, deterministic renderer; the course's adaptive anti-aliasing |
+//! | [`debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
+//! | [`side_by_side`] | two renders and their difference in one captioned picture (`--side-by-side`) |
+//! | [`ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
@@ -32,6 +35,7 @@ pub mod camera;
 pub mod cli;
 pub mod color;
 pub mod compare;
+pub mod debug_view;
 pub mod environment;
 pub mod error;
 pub mod geometry;
@@ -40,12 +44,14 @@ pub mod math;
 pub mod node;
 pub mod photon_map;
 pub mod ray;
+pub mod ray_tree;
 pub mod render;
 pub mod rng;
 pub mod sampling;
 pub mod scene;
 pub mod scene_file;
 pub mod shader;
+pub mod side_by_side;
 pub mod spectral;
 pub mod study;
 pub mod teapot;
