@@ -13,10 +13,12 @@
 //! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`] | the parallel, deterministic renderer |
+//! | [`progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
+//! | `viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
 //! | [`cli`] | the command line every example shares, and the `run` that is every example's `main` |
 //! | [`workbook`] | what the examples share that is not a slide's lesson: bundled textures, the sky, studios |
 //! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
@@ -37,6 +39,7 @@ pub mod light;
 pub mod math;
 pub mod node;
 pub mod photon_map;
+pub mod progressive;
 pub mod ray;
 pub mod render;
 pub mod rng;
@@ -48,6 +51,8 @@ pub mod study;
 pub mod teapot;
 pub mod texture;
 pub mod transform;
+#[cfg(feature = "viewer")]
+pub mod viewer;
 pub mod workbook;
 
 pub use color::Color;

@@ -25,6 +25,7 @@ use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
+use std::ops::Range;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -284,6 +285,26 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
         photons: scene.photon_map.as_ref().map(|map| map.stats),
     };
     Ok((frame, stats))
+}
+
+/// Renders the pixels `xs` of the rows `ys` of the frame that `settings` describes into `out`, row by row, on
+/// the calling thread, and returns the rays it traced: the same colours [`render`] gives those pixels, since
+/// every pixel's random stream depends only on (seed, x, y). The progressive renderer draws its tiles with it.
+pub fn render_rect(
+    scene: &Scene,
+    settings: &RenderSettings,
+    plan: &SpectralPlan,
+    xs: Range<u32>,
+    ys: Range<u32>,
+    out: &mut [Color],
+) -> Counters {
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut tracer = PixelTracer::new(scene, &camera, settings, plan);
+    let coordinates = ys.flat_map(|y| xs.clone().map(move |x| (x, y)));
+    for (pixel, (x, y)) in out.iter_mut().zip(coordinates) {
+        *pixel = tracer.pixel(x, y);
+    }
+    tracer.counters
 }
 
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
