@@ -104,7 +104,12 @@ impl Controls {
                 let heading = arg.get_help_heading().map(str::to_string);
                 Some(Control { long, help, heading, kind: kind_of(arg), value })
             })
-            .collect();
+            .collect::<Vec<_>>();
+        // Each heading's options together, in the order the headings first appear (`--spp`, whose
+        // default the example sets, comes last in the command).
+        let headings: Vec<Option<String>> = controls.iter().map(|c| c.heading.clone()).collect();
+        let mut controls = controls;
+        controls.sort_by_key(|c| headings.iter().position(|h| *h == c.heading));
         Ok(Controls { name: name.to_string(), controls })
     }
 

@@ -133,9 +133,6 @@ impl<E: Example> Viewer<E> {
     /// the full picture once it settles.
     fn fly(&mut self, ctx: &egui::Context, drag: egui::Vec2, image_width: f32) {
         let Some(camera) = self.current_camera() else { return };
-        if self.speed == 0.0 {
-            self.speed = (camera.position.length() * 0.5).max(1.0);
-        }
         let mut motion = Motion::default();
         if !ctx.wants_keyboard_input() {
             ctx.input(|i| {
@@ -194,6 +191,10 @@ impl<E: Example> Viewer<E> {
 
     fn camera_panel(&mut self, ui: &mut egui::Ui) {
         let Some(camera) = self.current_camera() else { return };
+        if self.speed == 0.0 {
+            // Half the camera's distance from the origin per second: the examples are built around it.
+            self.speed = (camera.position.length() * 0.5).max(1.0);
+        }
         ui.horizontal(|ui| {
             let p = camera.position;
             ui.monospace(format!(
