@@ -53,7 +53,7 @@ pub enum Update<'a> {
 #[derive(Debug)]
 pub enum Outcome {
     /// Every tile was drawn: the picture, the same as [`crate::render::render`]'s, and its statistics.
-    Finished(Frame, RenderStats),
+    Finished(Frame, Box<RenderStats>),
     /// The cancel flag was set before the last tile.
     Cancelled,
 }
@@ -188,5 +188,5 @@ pub fn render_progressive(
         spectral: plan,
         photons: scene.photon_map.as_ref().map(|map| map.stats),
     };
-    Ok(Outcome::Finished(frame.into_inner().expect("no worker panicked"), stats))
+    Ok(Outcome::Finished(frame.into_inner().expect("no worker panicked"), Box::new(stats)))
 }

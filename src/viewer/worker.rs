@@ -201,7 +201,7 @@ fn run_job(job: Job, scene: &mut Option<Arc<Scene>>, shown: &Mutex<Shown>, repai
     if let Outcome::Finished(frame, stats) = render_progressive(&scene, &job.settings, &job.cancel, &on_update)? {
         let mut shown = lock();
         (shown.rays, shown.elapsed) = (stats.counters.total(), stats.elapsed);
-        shown.finished = Some((frame, stats));
+        shown.finished = Some((frame, *stats));
     }
     Ok(())
 }
