@@ -211,7 +211,8 @@ impl<E: Example> Viewer<E> {
             }
             ui.label("speed");
             let step = self.speed * 0.02;
-            ui.add(egui::DragValue::new(&mut self.speed).speed(step).range(0.001..=f32::MAX));
+            ui.add(egui::DragValue::new(&mut self.speed).speed(step));
+            self.speed = self.speed.max(f32::MIN_POSITIVE);
             ui.label("W/S A/D R/F move, arrows turn, Q/E roll, drag to look");
         });
     }
