@@ -107,6 +107,10 @@ pub struct CommonArgs {
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
     pub side_by_side: Option<String>,
+    /// Open a window that shows the picture building up, with the options as controls and a camera that
+    /// moves (needs `--features viewer`).
+    #[arg(long, help_heading = COMMON)]
+    pub window: bool,
 }
 
 /// An example: its own options (a `clap::Args` struct) and how they turn into a scene. The options every
@@ -266,7 +270,8 @@ fn program_name() -> String {
 /// name, which names its default output `out/<name>.png`, is its binary's.
 pub fn run<E: Example>() -> ExitCode {
     let name = program_name();
-    let args = match Cli::<E>::parse_args(&name, std::env::args_os().skip(1)) {
+    let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
         Ok(args) => args,
         // --help and --version print to stdout and succeed.
         Err(e) if !e.use_stderr() => e.exit(),
@@ -275,6 +280,9 @@ pub fn run<E: Example>() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if args.common.window {
+        return open_window(&name, args, argv);
+    }
     match run_parsed(&name, &args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -284,8 +292,21 @@ pub fn run<E: Example>() -> ExitCode {
     }
 }
 
+/// `--window`: the live viewer, with the options as given on the command line.
+#[cfg(feature = "viewer")]
+fn open_window<E: Example>(name: &str, args: Cli<E>, argv: Vec<std::ffi::OsString>) -> ExitCode {
+    crate::viewer::run(name, args, argv)
+}
+
+/// `--window` in a build without the viewer: say how to get it.
+#[cfg(not(feature = "viewer"))]
+fn open_window<E: Example>(name: &str, _args: Cli<E>, _argv: Vec<std::ffi::OsString>) -> ExitCode {
+    eprintln!("{name}: --window needs the viewer: cargo run --release --features viewer --example {name} -- --window");
+    ExitCode::from(2)
+}
+
 /// A clap error message on one line: its lines joined, without the usage and the pointer to --help.
-fn one_line(message: &str) -> String {
+pub(crate) fn one_line(message: &str) -> String {
     let keep = |l: &&str| !(l.is_empty() || l.starts_with("Usage:") || l.starts_with("For more information"));
     message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
 }

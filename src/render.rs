@@ -26,6 +26,7 @@ use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
+use std::ops::Range;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -356,6 +357,31 @@ pub fn render_row(
     Ok(pixels)
 }
 
+/// Renders the pixels `xs` of the rows `ys` of the frame that `settings` describes into `out`, row by row, on
+/// the calling thread, and returns the rays it traced: the same colours [`render`] gives those pixels, since
+/// every pixel's random stream depends only on (seed, x, y). The progressive renderer draws its tiles with it.
+pub fn render_rect(
+    scene: &Scene,
+    settings: &RenderSettings,
+    plan: &SpectralPlan,
+    xs: Range<u32>,
+    ys: Range<u32>,
+    out: &mut [Color],
+) -> Counters {
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut counters = Counters::default();
+    let width = xs.len();
+    for (y, row) in ys.zip(out.chunks_mut(width)) {
+        let mut tracer = PixelTracer::new(scene, &camera, settings, plan);
+        tracer.skip_to(xs.start, y);
+        for (pixel, x) in row.iter_mut().zip(xs.clone()) {
+            *pixel = tracer.pixel(x, y);
+        }
+        counters.add(&tracer.counters);
+    }
+    counters
+}
+
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
 const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
 
@@ -408,6 +434,36 @@ impl<'a> PixelTracer<'a> {
         sum / self.settings.spp as f32
     }
 
+    /// Spectral sampling: a fresh assignment of bands to the samples of a pixel.
+    fn shuffle_bands(&mut self, rng: &mut Rng) {
+        for i in (1..self.settings.spp).rev() {
+            self.band_of_sample.swap(i as usize, rng.below(i + 1) as usize);
+        }
+    }
+
+    /// Leaves the tracer as tracing pixels 0..x of row y would, without tracing them: the N-rooks rows and
+    /// the spectral bands are permuted in place from one pixel to the next, so a pixel's samples depend on
+    /// the pixels before it in its row. Replays the random draws `pixel` makes before it traces.
+    fn skip_to(&mut self, x: u32, y: u32) {
+        let seed = self.settings.seed;
+        for x in 0..x {
+            match self.plan {
+                SpectralPlan::White => self.stratifier.start_pixel(&mut Rng::for_pixel(seed, x, y)),
+                SpectralPlan::Passes(bands) => {
+                    for k in 0..bands.len() {
+                        let mut rng = Rng::for_keys(&[seed, x as u64, y as u64, PASS_KEY, k as u64]);
+                        self.stratifier.start_pixel(&mut rng);
+                    }
+                }
+                SpectralPlan::Sampled => {
+                    let mut rng = Rng::for_pixel(seed, x, y);
+                    self.stratifier.start_pixel(&mut rng);
+                    self.shuffle_bands(&mut rng);
+                }
+            }
+        }
+    }
+
     fn pixel(&mut self, x: u32, y: u32) -> Color {
         let seed = self.settings.seed;
         match self.plan {
@@ -425,9 +481,7 @@ impl<'a> PixelTracer<'a> {
                 let mut ctx = TraceContext::new(self.scene, Rng::for_pixel(seed, x, y));
                 ctx.recorder = self.recorder.take();
                 self.stratifier.start_pixel(&mut ctx.rng);
-                for i in (1..spp).rev() {
-                    self.band_of_sample.swap(i as usize, ctx.rng.below(i + 1) as usize);
-                }
+                self.shuffle_bands(&mut ctx.rng);
                 let mut sum = [0.0f64; 3];
                 for s in 0..spp {
                     let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
