@@ -50,11 +50,11 @@ impl Example for Options {
         let mut floor = Layered::new();
         floor.add_layer(Lambert::new(texture("floor_tiles.png")?.with_scaling(100.0)), Color::WHITE, None);
         floor.add_layer(Reflection::new(0.9), Color::gray(0.02), None);
-        scene.add(Node::new(Plane::new(1.0, 100.0), floor));
+        scene.add(Node::new(Plane::new(1.0, 100.0), floor).named("floor"));
 
         // The glass sphere: refraction under a Fresnel-blended reflection, both passing 90% of the light.
         let glass = fresnel_glass(self.ior, self.fresnel, 0.9);
-        scene.add(Node::new(Sphere::new(Vector::new(0.0, 30.0, -30.0), 27.0), glass));
+        scene.add(Node::new(Sphere::new(Vector::new(0.0, 30.0, -30.0), 27.0), glass).named("glass sphere"));
         Ok(scene)
     }
 }

@@ -6,11 +6,14 @@
 //! unknown options, whose message is put on one line too), never a panic.
 
 use crate::compare;
+use crate::debug_view::{DebugView, write_view};
 use crate::environment::{self, CubemapLayout};
 use crate::error::{Error, Result};
 use crate::photon_map::{PhotonArgs, PhotonMap};
+use crate::ray_tree::{PixelPos, TraceFormat, trace_pixel};
 use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
+use crate::side_by_side::side_by_side;
 use crate::spectral::{SpectralMode, SpectralPlan};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -84,6 +87,30 @@ pub struct CommonArgs {
     pub spectral: SpectralMode,
     #[command(flatten)]
     pub photons: PhotonArgs,
+    /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
+    /// start, direction, what it hits, the shader and layer that sent it, its weight, its colour and why it
+    /// stopped, and how the colours add up to the pixel's.
+    #[arg(long, value_name = "X,Y", help_heading = COMMON)]
+    pub trace_pixel: Option<PixelPos>,
+    /// Which camera ray of the pixel --trace-pixel shows (numbered from 0).
+    #[arg(long, default_value_t = 0, value_name = "N", help_heading = COMMON)]
+    pub trace_sample: u32,
+    /// How --trace-pixel prints the tree: `text` (indented) or `json`.
+    #[arg(long, value_enum, default_value_t = TraceFormat::Text, help_heading = COMMON)]
+    pub trace_format: TraceFormat,
+    /// Write a false-colour debug view instead of the shaded picture (to --output, or out/EXAMPLE-VIEW.png)
+    /// and print its scale: the normals, u/v or distance of what each pixel sees, or a heat map of the rays,
+    /// the shadow rays or the deepest ray traced per pixel.
+    #[arg(long, value_enum, help_heading = COMMON)]
+    pub view: Option<DebugView>,
+    /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
+    /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
+    #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
+    pub side_by_side: Option<String>,
+    /// Open a window that shows the picture building up, with the options as controls and a camera that
+    /// moves (needs `--features viewer`).
+    #[arg(long, help_heading = COMMON)]
+    pub window: bool,
 }
 
 /// An example: its own options (a `clap::Args` struct) and how they turn into a scene. The options every
@@ -243,7 +270,8 @@ fn program_name() -> String {
 /// name, which names its default output `out/<name>.png`, is its binary's.
 pub fn run<E: Example>() -> ExitCode {
     let name = program_name();
-    let args = match Cli::<E>::parse_args(&name, std::env::args_os().skip(1)) {
+    let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
         Ok(args) => args,
         // --help and --version print to stdout and succeed.
         Err(e) if !e.use_stderr() => e.exit(),
@@ -252,6 +280,9 @@ pub fn run<E: Example>() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if args.common.window {
+        return open_window(&name, args, argv);
+    }
     match run_parsed(&name, &args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -261,13 +292,39 @@ pub fn run<E: Example>() -> ExitCode {
     }
 }
 
+/// `--window`: the live viewer, with the options as given on the command line.
+#[cfg(feature = "viewer")]
+fn open_window<E: Example>(name: &str, args: Cli<E>, argv: Vec<std::ffi::OsString>) -> ExitCode {
+    crate::viewer::run(name, args, argv)
+}
+
+/// `--window` in a build without the viewer: say how to get it.
+#[cfg(not(feature = "viewer"))]
+fn open_window<E: Example>(name: &str, _args: Cli<E>, _argv: Vec<std::ffi::OsString>) -> ExitCode {
+    eprintln!("{name}: --window needs the viewer: cargo run --release --features viewer --example {name} -- --window");
+    ExitCode::from(2)
+}
+
 /// A clap error message on one line: its lines joined, without the usage and the pointer to --help.
-fn one_line(message: &str) -> String {
+pub(crate) fn one_line(message: &str) -> String {
     let keep = |l: &&str| !(l.is_empty() || l.starts_with("Usage:") || l.starts_with("For more information"));
     message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
 }
 
 fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
+    if let Some(pixel) = args.common.trace_pixel {
+        print!("{}", trace_pixel(name, args, pixel)?);
+        return Ok(());
+    }
+    if let Some(alternative) = &args.common.side_by_side {
+        let given: Vec<_> = std::env::args_os().skip(1).collect();
+        print!("{}", side_by_side::<E>(name, &given, alternative)?);
+        return Ok(());
+    }
+    if let Some(view) = args.common.view {
+        print!("{}", write_view(name, args, view)?);
+        return Ok(());
+    }
     let output = args.output_path(name);
     let (frame, stats, settings) = args.render_and_settings()?;
     frame.save(&output)?;

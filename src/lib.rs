@@ -13,10 +13,16 @@
 //! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`render`], [`adaptive_aa`] | the parallel, deterministic renderer; the course's adaptive anti-aliasing |
+//! | [`debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
+//! | [`side_by_side`] | two renders and their difference in one captioned picture (`--side-by-side`) |
+//! | [`ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
+//! | [`render`] | the parallel, deterministic renderer |
+//! | [`progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
+//! | `viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
 //! | [`cli`] | the command line every example shares, and the `run` that is every example's `main` |
 //! | [`workbook`] | what the examples share that is not a slide's lesson: bundled textures, the sky, studios |
 //! | [`scene_file`] | the course's `.qdmg` scene files |
@@ -32,6 +38,7 @@ pub mod camera;
 pub mod cli;
 pub mod color;
 pub mod compare;
+pub mod debug_view;
 pub mod environment;
 pub mod error;
 pub mod geometry;
@@ -39,18 +46,23 @@ pub mod light;
 pub mod math;
 pub mod node;
 pub mod photon_map;
+pub mod progressive;
 pub mod ray;
+pub mod ray_tree;
 pub mod render;
 pub mod rng;
 pub mod sampling;
 pub mod scene;
 pub mod scene_file;
 pub mod shader;
+pub mod side_by_side;
 pub mod spectral;
 pub mod study;
 pub mod teapot;
 pub mod texture;
 pub mod transform;
+#[cfg(feature = "viewer")]
+pub mod viewer;
 pub mod workbook;
 
 pub use color::Color;

@@ -4,6 +4,7 @@
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
 use crate::math::Vector;
+use crate::ray_tree::LightKind;
 use crate::scene::TraceContext;
 
 #[derive(Clone, Copy, Debug)]
@@ -40,21 +41,32 @@ pub fn light_loop(
 ) -> Color {
     let scene = ctx.scene;
     let mut irradiance = scene.ambient;
-    for light in &scene.lights {
+    if !scene.ambient.is_black() {
+        ctx.record(|tree| tree.light(LightKind::Ambient, scene.ambient));
+    }
+    for (index, light) in scene.lights.iter().enumerate() {
         let to_light = light.position - info.ip;
         let dist2 = to_light.length_squared();
         let l = to_light / dist2.sqrt();
         if n.dot(l) <= 0.0 || info.geometric_normal.dot(l) * info.geometric_normal.dot(n) <= 0.0 {
             continue;
         }
-        if ctx.visible(info, light.position) {
+        let visible = ctx.visible(info, light.position);
+        let shadow_ray = LightKind::Lamp { index, from: info.ip, dir: l, visible };
+        if visible {
             let lamp = light.color * (light.intensity / dist2);
-            irradiance += lamp * n.dot(l);
+            let direct = lamp * n.dot(l);
+            irradiance += direct;
             each_lamp(l, lamp);
+            ctx.record(|tree| tree.light(shadow_ray, direct));
+        } else {
+            ctx.record(|tree| tree.light(shadow_ray, Color::BLACK));
         }
     }
     if let Some(map) = &scene.photon_map {
-        irradiance += map.irradiance(info.ip, n);
+        let caustic = map.irradiance(info.ip, n);
+        irradiance += caustic;
+        ctx.record(|tree| tree.light(LightKind::Photons, caustic));
     }
     irradiance
 }

@@ -41,13 +41,22 @@ pub struct Node {
     pub shader: Arc<dyn Shader>,
     /// `None` is the identity, and skips the two matrix products per ray.
     pub transform: Option<Transform>,
+    /// What the ray tree (`--trace-pixel`) calls the node; `None` names it by its geometry and its position
+    /// in the scene (see [`crate::scene::Scene::node_name`]).
+    pub name: Option<String>,
 }
 
 impl Node {
     /// A node showing `geometry` with `shader`, not yet transformed. Either may be shared with other nodes
     /// by passing an `Arc` of it (`Arc::new(mesh)`, then `mesh.clone()` for each node).
     pub fn new(geometry: impl IntoGeometry, shader: impl IntoShader) -> Node {
-        Node { geometry: geometry.into_geometry(), shader: shader.into_shader(), transform: None }
+        Node { geometry: geometry.into_geometry(), shader: shader.into_shader(), transform: None, name: None }
+    }
+
+    /// Gives the node a name, for the ray tree (`--trace-pixel`).
+    pub fn named(mut self, name: impl Into<String>) -> Node {
+        self.name = Some(name.into());
+        self
     }
 
     fn with_transform(mut self, f: impl FnOnce(Transform) -> Transform) -> Node {

@@ -19,12 +19,14 @@ use crate::color::{Color, to_srgb8};
 use crate::error::{Error, Result};
 use crate::photon_map::PhotonStats;
 use crate::ray::Ray;
+use crate::ray_tree::RayTree;
 use crate::rng::Rng;
 use crate::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
+use std::ops::Range;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -307,6 +309,79 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     Ok((frame, stats))
 }
 
+/// One pixel rendered alone, exactly as [`render`] renders it (same samples, same random streams).
+#[derive(Clone, Debug)]
+pub struct PixelTrace {
+    pub color: Color,
+    /// The rays traced for the pixel.
+    pub counters: Counters,
+    /// The rays behind the pixel, when asked for.
+    pub tree: Option<Box<RayTree>>,
+}
+
+/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and, with
+/// `record`, recording its ray tree (see [`crate::ray_tree`]). `--trace-pixel` uses it. The pixels of a row
+/// share their sample positions' stratifier, so the row is rendered from its start up to the pixel.
+pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, record: bool) -> Result<PixelTrace> {
+    if x >= settings.width || y >= settings.height {
+        return Err(Error::parameter(
+            "pixel",
+            format!("{x},{y}"),
+            format!("is outside the {}x{} picture", settings.width, settings.height),
+        ));
+    }
+    let mut row = render_row(scene, settings, y, x + 1, record.then_some(x))?;
+    Ok(row.pop().expect("the row holds pixel x"))
+}
+
+/// Renders the first `count` pixels of row `y` as [`render`] would, each with its own ray counters, and
+/// the ray tree of pixel `record`, if given. The debug views use it.
+pub fn render_row(
+    scene: &Scene,
+    settings: &RenderSettings,
+    y: u32,
+    count: u32,
+    record: Option<u32>,
+) -> Result<Vec<PixelTrace>> {
+    settings.check()?;
+    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
+    let mut pixels = Vec::with_capacity(count as usize);
+    for x in 0..count.min(settings.width) {
+        tracer.counters = Counters::default();
+        tracer.recorder = (record == Some(x)).then(|| Box::new(RayTree::new()));
+        let color = tracer.pixel(x, y);
+        pixels.push(PixelTrace { color, counters: tracer.counters.clone(), tree: tracer.recorder.take() });
+    }
+    Ok(pixels)
+}
+
+/// Renders the pixels `xs` of the rows `ys` of the frame that `settings` describes into `out`, row by row, on
+/// the calling thread, and returns the rays it traced: the same colours [`render`] gives those pixels, since
+/// every pixel's random stream depends only on (seed, x, y). The progressive renderer draws its tiles with it.
+pub fn render_rect(
+    scene: &Scene,
+    settings: &RenderSettings,
+    plan: &SpectralPlan,
+    xs: Range<u32>,
+    ys: Range<u32>,
+    out: &mut [Color],
+) -> Counters {
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut counters = Counters::default();
+    let width = xs.len();
+    for (y, row) in ys.zip(out.chunks_mut(width)) {
+        let mut tracer = PixelTracer::new(scene, &camera, settings, plan);
+        tracer.skip_to(xs.start, y);
+        for (pixel, x) in row.iter_mut().zip(xs.clone()) {
+            *pixel = tracer.pixel(x, y);
+        }
+        counters.add(&tracer.counters);
+    }
+    counters
+}
+
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
 const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
 
@@ -320,6 +395,8 @@ struct PixelTracer<'a> {
     /// Spectral sampling: which band sample s of the current pixel traces (a fresh permutation per pixel).
     band_of_sample: Vec<u32>,
     counters: Counters,
+    /// The ray tree being recorded for the pixels this tracer renders (`--trace-pixel`), if any.
+    recorder: Option<Box<RayTree>>,
 }
 
 impl<'a> PixelTracer<'a> {
@@ -329,12 +406,22 @@ impl<'a> PixelTracer<'a> {
             _ => Vec::new(),
         };
         let stratifier = Stratifier::new(settings.spp);
-        PixelTracer { scene, camera, settings, plan, stratifier, band_of_sample, counters: Counters::default() }
+        PixelTracer {
+            scene,
+            camera,
+            settings,
+            plan,
+            stratifier,
+            band_of_sample,
+            counters: Counters::default(),
+            recorder: None,
+        }
     }
 
     /// The average of the pixel's samples, all traced at `wavelength`, with the random stream `rng`.
     fn samples(&mut self, x: u32, y: u32, rng: Rng, wavelength: Option<f32>) -> Color {
         let mut ctx = TraceContext::new(self.scene, rng);
+        ctx.recorder = self.recorder.take();
         self.stratifier.start_pixel(&mut ctx.rng);
         let mut sum = Color::BLACK;
         for s in 0..self.settings.spp {
@@ -343,7 +430,38 @@ impl<'a> PixelTracer<'a> {
             sum += ctx.raytrace(&ray).sanitized();
         }
         self.counters.add(&ctx.counters);
+        self.recorder = ctx.recorder.take();
         sum / self.settings.spp as f32
+    }
+
+    /// Spectral sampling: a fresh assignment of bands to the samples of a pixel.
+    fn shuffle_bands(&mut self, rng: &mut Rng) {
+        for i in (1..self.settings.spp).rev() {
+            self.band_of_sample.swap(i as usize, rng.below(i + 1) as usize);
+        }
+    }
+
+    /// Leaves the tracer as tracing pixels 0..x of row y would, without tracing them: the N-rooks rows and
+    /// the spectral bands are permuted in place from one pixel to the next, so a pixel's samples depend on
+    /// the pixels before it in its row. Replays the random draws `pixel` makes before it traces.
+    fn skip_to(&mut self, x: u32, y: u32) {
+        let seed = self.settings.seed;
+        for x in 0..x {
+            match self.plan {
+                SpectralPlan::White => self.stratifier.start_pixel(&mut Rng::for_pixel(seed, x, y)),
+                SpectralPlan::Passes(bands) => {
+                    for k in 0..bands.len() {
+                        let mut rng = Rng::for_keys(&[seed, x as u64, y as u64, PASS_KEY, k as u64]);
+                        self.stratifier.start_pixel(&mut rng);
+                    }
+                }
+                SpectralPlan::Sampled => {
+                    let mut rng = Rng::for_pixel(seed, x, y);
+                    self.stratifier.start_pixel(&mut rng);
+                    self.shuffle_bands(&mut rng);
+                }
+            }
+        }
     }
 
     fn pixel(&mut self, x: u32, y: u32) -> Color {
@@ -361,10 +479,9 @@ impl<'a> PixelTracer<'a> {
             SpectralPlan::Sampled => {
                 let spp = self.settings.spp;
                 let mut ctx = TraceContext::new(self.scene, Rng::for_pixel(seed, x, y));
+                ctx.recorder = self.recorder.take();
                 self.stratifier.start_pixel(&mut ctx.rng);
-                for i in (1..spp).rev() {
-                    self.band_of_sample.swap(i as usize, ctx.rng.below(i + 1) as usize);
-                }
+                self.shuffle_bands(&mut ctx.rng);
                 let mut sum = [0.0f64; 3];
                 for s in 0..spp {
                     let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
@@ -374,6 +491,7 @@ impl<'a> PixelTracer<'a> {
                     add_weighted(&mut sum, &band, ctx.raytrace(&ray).sanitized());
                 }
                 self.counters.add(&ctx.counters);
+                self.recorder = ctx.recorder.take();
                 fit_to_gamut(to_color(sum))
             }
         }

@@ -22,6 +22,7 @@ use crate::math::{Vector, max_abs};
 use crate::node::{Node, NodeTree, closest_hit_linear};
 use crate::photon_map::{PhotonMap, PhotonSettings};
 use crate::ray::{Ray, spawn_point};
+use crate::ray_tree::{RayTree, Stop};
 use crate::rng::Rng;
 use std::sync::Arc;
 
@@ -142,6 +143,16 @@ impl Scene {
         Scene { node_tree: NodeTree::build(&self.nodes).map(Arc::new), ..self.clone() }
     }
 
+    /// The name of a node of this scene: its own ([`Node::named`]), or its geometry and its position in
+    /// `nodes` ("Sphere #2").
+    pub fn node_name(&self, node: &Node) -> String {
+        if let Some(name) = &node.name {
+            return name.clone();
+        }
+        let index = self.nodes.iter().position(|n| std::ptr::eq(n, node));
+        format!("{} #{}", node.geometry.name(), index.map_or("?".to_string(), |i| i.to_string()))
+    }
+
     /// The closest node hit by the ray, and where: the nearest hit is found first ([`Node::hit`]), and only
     /// the winner's surface is described ([`Node::surface`]).
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
@@ -194,33 +205,48 @@ pub struct TraceContext<'a> {
     /// The random generator of the current pixel.
     pub rng: Rng,
     pub counters: Counters,
+    /// The ray tree being recorded (`--trace-pixel`), if any: see [`crate::ray_tree`].
+    pub recorder: Option<Box<RayTree>>,
 }
 
 impl<'a> TraceContext<'a> {
     pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
-        TraceContext { scene, rng, counters: Counters::default() }
+        TraceContext { scene, rng, counters: Counters::default(), recorder: None }
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
     /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
     /// environment when nothing is hit; otherwise whatever the hit node's shader says.
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
+        self.record(|tree| tree.begin(ray));
         if ray.depth > self.scene.max_depth {
-            return Color::BLACK;
+            return self.stop(Stop::DepthLimit);
         }
         if ray.depth > RECURSION_SAFETY_CAP {
             self.counters.capped_rays += 1;
-            return Color::BLACK;
+            return self.stop(Stop::SafetyCap);
         }
         if ray.weight < self.scene.min_ray_weight {
             self.counters.pruned_rays += 1;
-            return Color::BLACK;
+            return self.stop(Stop::WeightCutoff);
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
-        match self.scene.closest_hit(ray) {
-            Some((info, node)) => node.shader.shade(ray, &info, self),
-            None => self.scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)),
-        }
+        let scene = self.scene;
+        let (color, stop) = match scene.closest_hit(ray) {
+            Some((info, node)) => {
+                self.record(|tree| tree.hit(scene, node, &info));
+                (node.shader.shade(ray, &info, self), None)
+            }
+            None => (scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)), Some(Stop::Missed)),
+        };
+        self.record(|tree| tree.end(color, stop));
+        color
+    }
+
+    /// A ray not traced, for the reason `stop`: black.
+    fn stop(&mut self, stop: Stop) -> Color {
+        self.record(|tree| tree.end(Color::BLACK, Some(stop)));
+        Color::BLACK
     }
 
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).

@@ -138,6 +138,11 @@ pub trait Geometry: Send + Sync {
 
     /// The shape's bounding box, or `None` for a shape too large to bound usefully.
     fn bounds(&self) -> Option<Aabb>;
+
+    /// What the ray tree (`--trace-pixel`) calls this shape: its type's name.
+    fn name(&self) -> &'static str {
+        crate::ray_tree::type_label::<Self>()
+    }
 }
 
 /// An axis-aligned bounding box.

@@ -27,7 +27,10 @@ impl Shader for Lambert {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let diffuse = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
-        diffuse * diffuse_light(ctx, info, n)
+        let mark = ctx.record_mark();
+        let color = diffuse * diffuse_light(ctx, info, n);
+        ctx.record(|tree| tree.scale(mark, diffuse));
+        color
     }
 
     fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {

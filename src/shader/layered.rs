@@ -87,6 +87,19 @@ impl Layered {
         &self.layers
     }
 
+    /// How the ray tree names layer `i`, whose blend at the hit is `blend`: "layer 2 of 2 (Reflection, blend
+    /// Fresnel 0.0421)".
+    fn layer_label(&self, i: usize, blend: Color) -> String {
+        let layer = &self.layers[i];
+        let value = if blend.r() == blend.g() && blend.g() == blend.b() {
+            format!("{:.4}", blend.r())
+        } else {
+            format!("({:.4}, {:.4}, {:.4})", blend.r(), blend.g(), blend.b())
+        };
+        let source = layer.blend_tex.as_ref().map_or(String::new(), |tex| format!("{} ", tex.name()));
+        format!("layer {} of {} ({}, blend {source}{value})", i + 1, self.layers.len(), layer.shader.name())
+    }
+
     /// The weight of each layer at this hit, computed from the top down as `shade` does, and the lowest
     /// layer that can be seen (the first one, from the top, that covers everything below it); the layers
     /// under it have no weight.
@@ -113,13 +126,19 @@ impl Shader for Layered {
         // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
         let mut res = Color::BLACK;
         let mut uncovered = Color::WHITE;
-        for layer in self.layers.iter().rev() {
+        for (i, layer) in self.layers.iter().enumerate().rev() {
             let blend = layer.blend_at(ray, info);
             let weight = uncovered * blend;
             let strength = weight.max_channel();
             if strength > 0.0 || self.every_layer {
                 let layer_ray = Ray { weight: ray.weight * strength, ..*ray };
+                let mark = ctx.record_mark();
+                ctx.record(|tree| tree.enter_layer(self.layer_label(i, blend)));
                 res += layer.shader.shade(&layer_ray, info, ctx) * weight;
+                ctx.record(|tree| {
+                    tree.scale(mark, weight);
+                    tree.leave_layer();
+                });
             }
             uncovered *= Color::WHITE - blend;
             if uncovered.max_channel() <= 0.0 && !self.every_layer {

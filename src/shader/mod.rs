@@ -55,6 +55,11 @@ pub trait Shader: Send + Sync {
     fn is_dispersive(&self) -> bool {
         false
     }
+
+    /// What the ray tree (`--trace-pixel`) calls this shader: its type's name.
+    fn name(&self) -> &'static str {
+        crate::ray_tree::type_label::<Self>()
+    }
 }
 
 /// Anything that can be a node's or a layer's shader: a shader, or a shader shared with other nodes

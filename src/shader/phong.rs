@@ -9,6 +9,7 @@ use crate::light::light_loop;
 use crate::math::{faceforward, reflect};
 use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::ray_tree::LightKind;
 use crate::rng::Rng;
 use crate::scene::TraceContext;
 
@@ -32,11 +33,16 @@ impl Shader for Phong {
         let diffuse_color = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
         let mut specular = Color::BLACK;
+        let mark = ctx.record_mark();
         let diffuse = light_loop(ctx, info, n, |l, irradiance| {
             let cos_gamma = (-ray.dir).dot(reflect(-l, n));
             if cos_gamma > 0.0 {
                 specular += irradiance * (self.specular * cos_gamma.powf(self.exponent));
             }
+        });
+        ctx.record(|tree| {
+            tree.scale(mark, diffuse_color);
+            tree.light(LightKind::Highlight, specular);
         });
         diffuse_color * diffuse + specular
     }

@@ -33,6 +33,7 @@ use crate::geometry::IntersectionInfo;
 use crate::math::{OrthonormalBasis, Vector, faceforward, reflect};
 use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::ray_tree::RayKind;
 use crate::rng::Rng;
 use crate::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use crate::scene::TraceContext;
@@ -87,7 +88,11 @@ impl Reflection {
     fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
         let dir = reflect(ray.dir, n);
         let new_ray = ray.spawn(info, dir, m.max_channel());
-        ctx.raytrace(&new_ray) * m
+        let mark = ctx.record_mark();
+        ctx.record(|tree| tree.next_ray(RayKind::Reflection));
+        let color = ctx.raytrace(&new_ray) * m;
+        ctx.record(|tree| tree.scale(mark, m));
+        color
     }
 }
 
@@ -105,8 +110,10 @@ impl Shader for Reflection {
         let attenuation = multiplier.max_channel();
         let mut sum = Color::BLACK;
         let mut kept = 0u32;
+        let mark = ctx.record_mark();
         for i in 0..num_samples {
             if let Some(dir) = cone.direction(disc.point(i, &mut ctx.rng)) {
+                ctx.record(|tree| tree.next_ray(RayKind::GlossySample { index: i, count: num_samples }));
                 sum += ctx.raytrace(&ray.spawn(info, dir, attenuation));
                 kept += 1;
             }
@@ -114,6 +121,7 @@ impl Shader for Reflection {
         if kept == 0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
+        ctx.record(|tree| tree.scale(mark, multiplier / kept as f32));
         sum * multiplier / kept as f32
     }
 

@@ -17,6 +17,7 @@ use crate::geometry::IntersectionInfo;
 use crate::math::{Vector, faceforward, refract};
 use crate::photon_map::PhotonScatter;
 use crate::ray::Ray;
+use crate::ray_tree::{LightKind, RayKind};
 use crate::rng::Rng;
 use crate::scene::TraceContext;
 use crate::spectral::Ior;
@@ -53,10 +54,15 @@ impl Refraction {
 impl Shader for Refraction {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let Some(dir) = self.refracted(ray, info) else {
-            return Color::BLACK; // total internal reflection
+            ctx.record(|tree| tree.light(LightKind::TotalInternalReflection, Color::BLACK));
+            return Color::BLACK;
         };
         let new_ray = ray.spawn(info, dir, self.multiplier);
-        ctx.raytrace(&new_ray) * self.multiplier
+        let mark = ctx.record_mark();
+        ctx.record(|tree| tree.next_ray(RayKind::Refraction));
+        let color = ctx.raytrace(&new_ray) * self.multiplier;
+        ctx.record(|tree| tree.scale(mark, Color::gray(self.multiplier)));
+        color
     }
 
     fn is_dispersive(&self) -> bool {

@@ -24,4 +24,9 @@ pub trait Texture: Send + Sync {
     fn is_dispersive(&self) -> bool {
         false
     }
+
+    /// What the ray tree (`--trace-pixel`) calls this texture: its type's name.
+    fn name(&self) -> &'static str {
+        crate::ray_tree::type_label::<Self>()
+    }
 }

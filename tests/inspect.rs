@@ -1,0 +1,191 @@
+//! The teaching instruments: the ray tree of a pixel (`--trace-pixel`), the debug views (`--view`) and the
+//! side-by-side picture (`--side-by-side`), on the workbook's own examples.
+
+mod common;
+
+use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract};
+use lecture6::cli::Example;
+use lecture6::color::Color;
+use lecture6::debug_view::{DebugView, render_view};
+use lecture6::ray_tree::{LightKind, RayKind, RayTree, Stop, TermKind};
+use lecture6::render::{render, render_pixel};
+use lecture6::side_by_side::{Panel, compose};
+
+/// Whether two colours agree to float rounding of sums of a few hundred terms.
+fn close(a: Color, b: Color) -> bool {
+    (a - b).0.abs().max_element() <= 1e-5 + 1e-4 * a.max_channel().max(b.max_channel())
+}
+
+/// Renders the small frame of `args`, then each of `pixels` alone with its ray tree, and checks that the
+/// pixel is the one of the frame, that every camera ray's tree explains the colour the ray brought back
+/// (the light terms and the environment seen, times the factors on their way), and that the samples' mean
+/// is the pixel. Returns the trees.
+fn check_trees<E: Example>(args: &[&str], pixels: &[(u32, u32)]) -> Vec<RayTree> {
+    let cli = common::parse::<E>(args);
+    let settings = cli.settings();
+    let scene = cli.prepare_scene().unwrap();
+    let (frame, _) = render(&scene, &settings).unwrap();
+    let mut trees = Vec::new();
+    for &(x, y) in pixels {
+        let trace = render_pixel(&scene, &settings, x, y, true).unwrap();
+        assert_eq!(trace.color, frame.get(x, y), "{args:?} pixel ({x}, {y}) alone differs from the frame's");
+        let tree = *trace.tree.unwrap();
+        assert_eq!(tree.roots.len(), settings.spp as usize, "one camera ray per sample");
+        let mut mean = Color::BLACK;
+        for &root in &tree.roots {
+            let explained = tree.explained(root, Color::WHITE);
+            let returned = tree.rays[root].color;
+            assert!(
+                close(explained, returned),
+                "{args:?} ({x}, {y}): the tree explains {explained:?}, the ray returned {returned:?}"
+            );
+            mean += returned.sanitized();
+        }
+        mean = mean / tree.roots.len() as f32;
+        assert!(close(mean, trace.color), "{args:?} ({x}, {y}): samples average {mean:?}, pixel is {:?}", trace.color);
+        for (id, ray) in tree.rays.iter().enumerate() {
+            if ray.hit.is_some() {
+                assert!(close(tree.terms_sum(id), ray.color), "{args:?} ({x}, {y}) ray {id}: terms do not add up");
+            }
+        }
+        trees.push(tree);
+    }
+    trees
+}
+
+fn kinds(tree: &RayTree) -> Vec<RayKind> {
+    tree.rays.iter().map(|r| r.kind).collect()
+}
+
+fn lights(tree: &RayTree) -> Vec<LightKind> {
+    tree.rays
+        .iter()
+        .flat_map(|r| &r.terms)
+        .filter_map(|t| match t.what {
+            TermKind::Light { kind, .. } => Some(kind),
+            TermKind::Ray(_) => None,
+        })
+        .collect()
+}
+
+#[test]
+fn the_glass_sphere_tree_goes_from_the_camera_through_the_glass_to_the_environment() {
+    let trees = check_trees::<fresnel::Options>(&["--width", "640", "--height", "480", "--spp", "2"], &[(320, 200)]);
+    let tree = &trees[0];
+    let first = tree.roots[0];
+    assert_eq!(tree.rays[first].kind, RayKind::Camera);
+    assert!(tree.rays[first].hit.as_ref().is_some_and(|h| h.shader == "Layered"));
+    assert!(kinds(tree).contains(&RayKind::Refraction) && kinds(tree).contains(&RayKind::Reflection));
+    assert!(tree.rays.iter().any(|r| r.stop == Some(Stop::Missed) && r.depth >= 2), "a ray leaves the glass");
+    let text = tree.to_text(0);
+    assert!(text.contains("layer 2 of 2 (Reflection, blend Fresnel"), "{text}");
+    assert!(text.contains("missed: environment colour"), "{text}");
+}
+
+#[test]
+fn trees_add_up_with_total_internal_reflection() {
+    let pixels: Vec<(u32, u32)> = (0..40).map(|i| (40 + i * 2, 60)).collect();
+    let trees = check_trees::<refract::Options>(&["--width", "160", "--height", "120", "--ior", "2.42"], &pixels);
+    assert!(trees.iter().any(|t| lights(t).contains(&LightKind::TotalInternalReflection)), "no TIR on the row");
+}
+
+#[test]
+fn trees_add_up_with_glossy_samples_lamps_and_depth_limits() {
+    let trees =
+        check_trees::<glossy::Options>(&["--width", "80", "--height", "60"], &[(20, 40), (40, 40), (60, 40), (40, 20)]);
+    let glossy = |k: &RayKind| matches!(k, RayKind::GlossySample { .. });
+    assert!(trees.iter().any(|t| kinds(t).iter().any(glossy)), "no glossy sample traced");
+    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, LightKind::Lamp { .. }))));
+    let trees = check_trees::<reflect_v02::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 30)]);
+    assert!(trees.iter().any(|t| t.rays.iter().any(|r| r.stop == Some(Stop::DepthLimit))), "no ray at the depth limit");
+}
+
+#[test]
+fn trees_add_up_through_layers_and_the_photon_map() {
+    check_trees::<layered::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 45), (60, 20)]);
+    let args = ["--width", "80", "--height", "60", "--photons", "20000"];
+    let pixels: Vec<(u32, u32)> = (0..8).map(|i| (10 * i, 50)).collect();
+    let trees = check_trees::<photon_map::Options>(&args, &pixels);
+    assert!(trees.iter().any(|t| lights(t).contains(&LightKind::Photons)), "no photon estimate in the trees");
+}
+
+#[test]
+fn the_json_tree_is_one_object_naming_every_ray() {
+    let trees = check_trees::<fresnel::Options>(&["--width", "64", "--height", "48", "--spp", "1"], &[(32, 20)]);
+    let json = trees[0].to_json(0);
+    assert!(json.starts_with('{') && json.ends_with('}'));
+    assert_eq!(json.matches("\"kind\":").count(), trees[0].rays.len());
+    assert_eq!(json.matches('{').count(), json.matches('}').count());
+}
+
+/// Draws a view of the glossy scene at 64 x 48 and returns it, after checking its size.
+fn view(v: DebugView, extra: &[&str]) -> lecture6::debug_view::DebugImage {
+    let mut args = vec!["--width", "64", "--height", "48"];
+    args.extend(extra);
+    let cli = common::parse::<glossy::Options>(&args);
+    let picture = render_view(&cli.prepare_scene().unwrap(), &cli.settings(), v).unwrap();
+    assert_eq!(picture.image.dimensions(), (64, 48));
+    assert!(picture.range.0.is_finite() && picture.range.1.is_finite() && picture.range.0 <= picture.range.1);
+    picture
+}
+
+#[test]
+fn debug_views_have_their_documented_ranges() {
+    let normals = view(DebugView::Normals, &[]);
+    assert!(normals.range.0 >= -1.0 - 1e-6 && normals.range.1 <= 1.0 + 1e-6, "{:?}", normals.range);
+    let uv = view(DebugView::Uv, &[]);
+    assert!(uv.range.0 >= 0.0 && uv.range.1 < 1.0, "{:?}", uv.range);
+    let depth = view(DebugView::Depth, &[]);
+    assert!(depth.range.0 > 0.0 && depth.range.1 > depth.range.0, "{:?}", depth.range);
+    assert!(depth.scale.contains(&format!("{:.3}", depth.range.0)), "{}", depth.scale);
+    let rays = view(DebugView::Rays, &[]);
+    let spp = glossy::Options::DEFAULT_SPP as f32;
+    assert!(rays.range.0 >= spp && rays.range.1 > rays.range.0, "{:?}", rays.range);
+    assert_eq!(rays.range.0.fract(), 0.0, "ray counts are whole numbers");
+    let shadow = view(DebugView::ShadowRays, &[]);
+    assert!(shadow.range.0 >= 0.0 && shadow.range.1 < rays.range.1, "{:?}", shadow.range);
+    let reached = view(DebugView::DepthReached, &[]);
+    assert!(reached.range.0 >= 0.0 && reached.range.1 >= 1.0, "{:?}", reached.range);
+}
+
+#[test]
+fn the_rays_view_shows_what_adaptive_depth_control_saves() {
+    let cli = common::parse::<fresnel::Options>(&["--width", "48", "--height", "36"]);
+    let adaptive = render_view(&cli.prepare_scene().unwrap(), &cli.settings(), DebugView::Rays).unwrap();
+    let cli = common::parse::<fresnel::Options>(&["--width", "48", "--height", "36", "--exhaustive"]);
+    let exhaustive = render_view(&cli.prepare_scene().unwrap(), &cli.settings(), DebugView::Rays).unwrap();
+    assert!(exhaustive.range.1 > adaptive.range.1, "{:?} vs {:?}", exhaustive.range, adaptive.range);
+}
+
+#[test]
+fn a_side_by_side_picture_is_a_b_and_the_difference_with_captions() {
+    let a = image::RgbImage::from_pixel(100, 60, image::Rgb([200, 10, 10]));
+    let b = image::RgbImage::from_pixel(100, 60, image::Rgb([10, 10, 200]));
+    let d = image::RgbImage::from_pixel(100, 60, image::Rgb([0, 0, 0]));
+    let panels = [("A: one", a), ("B: two", b), ("difference", d)].map(|(c, image)| Panel { image, caption: c.into() });
+    let out = compose(&panels).unwrap();
+    assert_eq!(out.width(), 300);
+    assert!(out.height() > 60, "room for the captions");
+    for (i, panel) in panels.iter().enumerate() {
+        let left = i as u32 * 100;
+        assert_eq!(out.get_pixel(left + 50, 30), panel.image.get_pixel(50, 30));
+        let ink = (left..left + 100)
+            .flat_map(|x| (60..out.height()).map(move |y| (x, y)))
+            .filter(|&(x, y)| out.get_pixel(x, y)[0] > 128);
+        assert!(ink.count() > 20, "panel {i} has no caption drawn under it");
+    }
+}
+
+#[test]
+fn side_by_side_of_an_example_writes_three_panels_of_its_size() {
+    let path = common::root().join("target/inspect/fresnel-sbs.png");
+    let _ = std::fs::remove_file(&path);
+    let args: Vec<std::ffi::OsString> =
+        ["--width", "64", "--height", "48", "--quiet", "-o", path.to_str().unwrap()].map(Into::into).to_vec();
+    lecture6::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--fresnel exact").unwrap();
+    let out = image::open(&path).unwrap().to_rgb8();
+    assert_eq!(out.width(), 3 * 64);
+    assert!(out.height() > 48);
+    let bad = lecture6::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
+    assert!(bad.is_err(), "A and B of different sizes cannot be compared");
+}

@@ -1,0 +1,110 @@
+//! The progressive renderer the live viewer draws with: its tiles add up to the plain render byte for byte,
+//! and a cancelled render stops within one tile per worker.
+
+mod common;
+
+use common::examples::{dispersion, fresnel, glossy};
+use lecture6::cli::{Cli, Example};
+use lecture6::progressive::{Outcome, TILE_SIZE, Update, coarse_settings, render_progressive, tiles};
+use lecture6::render::{render, thread_pool};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+/// Renders the example progressively on `threads` threads and plainly, and checks that the pictures are the
+/// same bit for bit and that the coarse pass came first, then every tile once.
+fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
+    let cli: Cli<E> = common::parse(args);
+    let settings = cli.settings();
+    let scene = cli.prepare_scene().unwrap();
+    let (plain, _) = render(&scene, &settings).unwrap();
+    let seen = Mutex::new(Vec::new());
+    let cancel = AtomicBool::new(false);
+    let on_update = |update: Update| {
+        seen.lock().unwrap().push(match update {
+            Update::Coarse(frame) => (u32::MAX, frame.width, frame.height),
+            Update::Tile(tile) => (tile.x, tile.y, tile.width * tile.height),
+        })
+    };
+    let outcome =
+        thread_pool(Some(threads)).unwrap().install(|| render_progressive(&scene, &settings, &cancel, &on_update));
+    let Outcome::Finished(frame, stats) = outcome.unwrap() else { panic!("an uncancelled render finished") };
+    assert!(frame == plain, "{args:?}: the progressive picture differs from the plain render");
+    assert!(stats.counters.total() > 0);
+    let seen = seen.into_inner().unwrap();
+    let coarse = coarse_settings(&settings);
+    assert_eq!(seen[0], (u32::MAX, coarse.width, coarse.height), "the coarse pass comes first");
+    let mut drawn: Vec<_> = seen[1..].to_vec();
+    drawn.sort();
+    let mut expected: Vec<_> =
+        tiles(settings.width, settings.height).iter().map(|t| (t.x, t.y, t.width * t.height)).collect();
+    expected.sort();
+    assert_eq!(drawn, expected, "every tile once");
+}
+
+#[test]
+fn tiles_add_up_to_the_plain_render() {
+    // A size that is not a multiple of the tile size, so the edge tiles are partial.
+    same_as_plain_render::<fresnel::Options>(&["--width", "90", "--height", "70", "--spp", "3"], 2);
+    same_as_plain_render::<glossy::Options>(&["--width", "80", "--height", "45", "--spp", "4"], 1);
+}
+
+#[test]
+fn dispersive_tiles_add_up_to_the_plain_render() {
+    same_as_plain_render::<dispersion::Options>(&["--width", "70", "--height", "40", "--spp", "2"], 2);
+    same_as_plain_render::<dispersion::Options>(&["--width", "70", "--height", "40", "--spectral", "sampled"], 2);
+}
+
+#[test]
+fn tiles_cover_the_picture_centre_first() {
+    let all = tiles(100, 70);
+    assert_eq!(all.iter().map(|t| t.width * t.height).sum::<u32>(), 100 * 70);
+    let first = &all[0];
+    assert!(first.x <= 50 && 50 < first.x + first.width && first.y <= 35 && 35 < first.y + first.height);
+    assert!(all.iter().all(|t| t.width <= TILE_SIZE && t.height <= TILE_SIZE && t.x + t.width <= 100));
+}
+
+/// Cancels the render when the `after`-th tile is done; on `threads` workers at most `threads - 1` more tiles
+/// (those already being drawn) may follow.
+fn cancel_after(after: usize, threads: usize) {
+    let cli: Cli<fresnel::Options> = common::parse(&["--width", "256", "--height", "192", "--spp", "1"]);
+    let settings = cli.settings();
+    let scene = cli.prepare_scene().unwrap();
+    let cancel = AtomicBool::new(false);
+    let done = AtomicUsize::new(0);
+    let on_update = |update: Update| {
+        if let Update::Tile(_) = update
+            && done.fetch_add(1, Ordering::SeqCst) + 1 == after
+        {
+            cancel.store(true, Ordering::SeqCst);
+        }
+    };
+    let outcome =
+        thread_pool(Some(threads)).unwrap().install(|| render_progressive(&scene, &settings, &cancel, &on_update));
+    assert!(matches!(outcome.unwrap(), Outcome::Cancelled));
+    let done = done.into_inner();
+    let total = tiles(settings.width, settings.height).len();
+    assert!(total > after + threads, "the test picture has enough tiles");
+    assert!(
+        (after..after + threads).contains(&done),
+        "{done} tiles drawn after cancelling at {after} on {threads} threads"
+    );
+}
+
+#[test]
+fn a_cancelled_render_stops_within_one_tile() {
+    cancel_after(3, 1);
+    cancel_after(5, 2);
+}
+
+#[test]
+fn a_render_cancelled_before_it_starts_draws_nothing() {
+    let cli: Cli<fresnel::Options> = common::parse(&["--width", "64", "--height", "48"]);
+    let scene = cli.prepare_scene().unwrap();
+    let cancel = AtomicBool::new(true);
+    let updates = AtomicUsize::new(0);
+    let outcome = render_progressive(&scene, &cli.settings(), &cancel, &|_| {
+        updates.fetch_add(1, Ordering::SeqCst);
+    });
+    assert!(matches!(outcome.unwrap(), Outcome::Cancelled));
+    assert_eq!(updates.into_inner(), 0);
+}

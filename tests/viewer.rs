@@ -1,0 +1,143 @@
+//! The live viewer's parts that need no window (`cargo test --release --features viewer --test viewer`):
+//! the controls generated from an example's command line, the moving camera, and the render thread, which
+//! rebuilds the scene when an option changes and finishes on the picture the command line gives.
+
+#![cfg(feature = "viewer")]
+
+mod common;
+
+use common::examples::{fresnel, glossy};
+use lecture6::camera::Camera;
+use lecture6::cli::Cli;
+use lecture6::progressive::{PREVIEW_PIXELS, preview_settings};
+use lecture6::render::{Frame, RenderSettings};
+use lecture6::viewer::controls::{Controls, Kind};
+use lecture6::viewer::fly::{Motion, as_code, moved};
+use lecture6::viewer::worker::{Job, Worker};
+use lecture6::{Vector, scene::Scene};
+use std::ffi::OsString;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
+use std::time::{Duration, Instant};
+
+fn os(args: &[&str]) -> Vec<OsString> {
+    args.iter().map(OsString::from).collect()
+}
+
+#[test]
+fn every_option_becomes_a_control_of_its_kind() {
+    let controls = Controls::new::<fresnel::Options>("fresnel", &os(&["--ior", "2.4"])).unwrap();
+    let kind =
+        |long: &str| controls.controls.iter().find(|c| c.long == long).map(|c| (c.kind.clone(), c.value.clone()));
+    assert_eq!(kind("ior"), Some((Kind::Real, "2.4".into())));
+    assert_eq!(kind("fresnel"), Some((Kind::Choice(vec!["schlick".into(), "exact".into()]), "schlick".into())));
+    assert_eq!(kind("spp"), Some((Kind::Integer { min: 0.0 }, "5".into())), "the example's own --spp default");
+    assert_eq!(kind("exhaustive"), Some((Kind::Flag, "false".into())));
+    assert_eq!(kind("threads"), Some((Kind::Integer { min: 0.0 }, String::new())), "no default: not given");
+    assert_eq!(kind("env").map(|k| k.0), Some(Kind::Text));
+    for absent in ["window", "output", "help", "quiet", "compare"] {
+        assert_eq!(kind(absent), None, "--{absent} is the window's, not a control");
+    }
+    let own = controls.controls.iter().position(|c| c.long == "ior").unwrap();
+    assert!(controls.controls[own].heading.is_none() && controls.controls.iter().any(|c| c.heading.is_some()));
+}
+
+#[test]
+fn controls_spell_the_command_line_they_came_from() {
+    let given = ["--glossiness", "0.5", "--exhaustive", "--width", "200", "--seed", "7"];
+    let controls = Controls::new::<glossy::Options>("glossy", &os(&given)).unwrap();
+    let from_controls: Cli<glossy::Options> = controls.parse().unwrap();
+    let direct: Cli<glossy::Options> = common::parse(&given);
+    assert_eq!(format!("{from_controls:?}"), format!("{direct:?}"));
+}
+
+#[test]
+fn a_changed_control_changes_the_options_and_a_bad_one_is_the_parsers_error() {
+    let mut controls = Controls::new::<fresnel::Options>("fresnel", &[]).unwrap();
+    controls.get_mut("ior").unwrap().value = "2.42".into();
+    controls.get_mut("exhaustive").unwrap().value = "true".into();
+    controls.get_mut("fresnel").unwrap().value = "exact".into();
+    let cli: Cli<fresnel::Options> = controls.parse().unwrap();
+    assert_eq!(cli.example.ior, 2.42);
+    assert!(cli.common.exhaustive);
+    assert_eq!(format!("{:?}", cli.example.fresnel), "Exact");
+    controls.get_mut("width").unwrap().value = "wide".into();
+    let error = controls.parse::<fresnel::Options>().unwrap_err().to_string();
+    assert!(error.contains("wide") && error.contains("--width"), "{error}");
+}
+
+#[test]
+fn the_camera_moves_along_its_own_axes() {
+    let camera = Camera { position: Vector::new(1.0, 2.0, 3.0), yaw: 90.0, ..Camera::default() };
+    // Yaw 90 turns the view from +Z to -X.
+    let forward = moved(&camera, &Motion { forward: 1.0, ..Motion::default() }, 10.0);
+    assert!((forward.position - Vector::new(-9.0, 2.0, 3.0)).length() < 1e-4, "{:?}", forward.position);
+    let right = moved(&camera, &Motion { right: 1.0, ..Motion::default() }, 2.0);
+    assert!((right.position - Vector::new(1.0, 2.0, 5.0)).length() < 1e-4, "{:?}", right.position);
+    let turned = moved(&camera, &Motion { yaw: 100.0, pitch: 120.0, ..Motion::default() }, 1.0);
+    assert_eq!((turned.yaw, turned.pitch, turned.position), (-170.0, 89.0, camera.position));
+    assert!(Motion::default().is_still() && !Motion { roll: 1.0, ..Motion::default() }.is_still());
+    let code = as_code(&camera);
+    assert!(code.contains("Vector::new(1.00, 2.00, 3.00)") && code.contains("yaw: 90.0"), "{code}");
+}
+
+#[test]
+fn the_moving_preview_is_at_most_320_by_240() {
+    let at = |width, height| {
+        let s = preview_settings(&RenderSettings { width, height, spp: 9, ..RenderSettings::default() });
+        (s.width, s.height, s.spp)
+    };
+    assert_eq!(at(640, 480), (320, 240, 1));
+    assert_eq!(at(320, 240), (320, 240, 1));
+    assert_eq!(at(1920, 1080), (320, 180, 1));
+    let (w, h, _) = at(1001, 999);
+    assert!(w * h <= PREVIEW_PIXELS && w * h > PREVIEW_PIXELS / 2);
+}
+
+/// Waits until the render thread has finished a picture, and takes it.
+fn finished(worker: &Worker) -> Frame {
+    let start = Instant::now();
+    loop {
+        if let Some((frame, _)) = worker.shown.lock().unwrap().finished.take() {
+            return frame;
+        }
+        assert!(start.elapsed() < Duration::from_secs(120), "the render thread finished nothing");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+fn job(cli: &Cli<fresnel::Options>, camera: Option<Camera>, rebuild: bool) -> Job {
+    let build = cli.clone();
+    Job {
+        rebuild: rebuild.then(|| Box::new(move || build.prepare_scene()) as _),
+        camera,
+        settings: cli.settings(),
+        preview: None,
+        cancel: Arc::new(AtomicBool::new(false)),
+    }
+}
+
+#[test]
+fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_render() {
+    let mut worker = Worker::start(Some(2), || {}).unwrap();
+    let small = ["--width", "64", "--height", "48", "--spp", "2"];
+    let first: Cli<fresnel::Options> = common::parse(&small);
+    worker.submit(job(&first, None, true));
+    assert!(finished(&worker) == first.render().unwrap().0);
+
+    // A new IOR: the scene is built again.
+    let mut args = small.to_vec();
+    args.extend(["--ior", "2.4"]);
+    let second: Cli<fresnel::Options> = common::parse(&args);
+    worker.submit(job(&second, None, true));
+    let frame = finished(&worker);
+    assert!(frame == second.render().unwrap().0, "the picture of the new options");
+    assert!(frame != first.render().unwrap().0);
+
+    // A moved camera keeps the scene (the job does not rebuild it).
+    let camera = Camera { position: Vector::new(0.0, 60.0, -100.0), pitch: -35.0, fov: 90.0, ..Camera::default() };
+    worker.submit(job(&second, Some(camera), false));
+    let moved = finished(&worker);
+    let scene = Scene { camera, ..second.prepare_scene().unwrap() };
+    assert!(moved == lecture6::render::render(&scene, &second.settings()).unwrap().0);
+}
