@@ -19,7 +19,6 @@ use lecture6::camera::Camera;
 use lecture6::cli::{Cli, Example};
 use lecture6::progressive::{preview_settings, quick_frame};
 use lecture6::render::thread_pool;
-use lecture6::scene::Scene;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
@@ -49,7 +48,8 @@ fn measure<E: Example>(name: &str, frames: u32, threads: usize) {
     let (start, cpu_start) = (Instant::now(), cpu_time());
     let mut rays = 0;
     for i in 0..frames {
-        let scene = Scene { camera: camera_at(&base.camera, i), ..base.clone() };
+        let mut scene = base.clone();
+        scene.camera = camera_at(&base.camera, i);
         let (_, counters) =
             pool.install(|| quick_frame(&scene, &settings, &cancel)).expect("renders").expect("not cancelled");
         rays += counters.total();
