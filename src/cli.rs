@@ -359,7 +359,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         if let Some(p) = &stats.photons {
             let trace = p.trace_time.as_secs_f64();
             println!(
-                "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), k-d tree \
+                "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), grid \
                  built in {:.3} s",
                 name,
                 p.emitted,

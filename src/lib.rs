@@ -19,7 +19,7 @@
 //! | [`render`] | the parallel, deterministic renderer |
 //! | [`progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
-//! | [`photon_map`] | caustics by photon mapping: photon tracing, the k-d tree, the caustic estimate |
+//! | [`photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
 //! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | `viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |

@@ -4,9 +4,7 @@
 
 mod common;
 
-#[allow(dead_code)] // the example's `main` is its binary's
-#[path = "../examples/scene_file.rs"]
-mod scene_file_example;
+use common::examples::scene_file as scene_file_example;
 
 use lecture6::Vector;
 use lecture6::color::Color;

@@ -7,6 +7,7 @@
 mod common;
 
 use common::examples::{fresnel, glossy};
+use lecture6::Vector;
 use lecture6::camera::Camera;
 use lecture6::cli::Cli;
 use lecture6::progressive::{PREVIEW_PIXELS, preview_settings};
@@ -14,7 +15,6 @@ use lecture6::render::{Frame, RenderSettings};
 use lecture6::viewer::controls::{Controls, Kind};
 use lecture6::viewer::fly::{Motion, as_code, moved};
 use lecture6::viewer::worker::{Job, Worker};
-use lecture6::{Vector, scene::Scene};
 use std::ffi::OsString;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
@@ -138,6 +138,7 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     let camera = Camera { position: Vector::new(0.0, 60.0, -100.0), pitch: -35.0, fov: 90.0, ..Camera::default() };
     worker.submit(job(&second, Some(camera), false));
     let moved = finished(&worker);
-    let scene = Scene { camera, ..second.prepare_scene().unwrap() };
+    let mut scene = second.prepare_scene().unwrap();
+    scene.camera = camera;
     assert!(moved == lecture6::render::render(&scene, &second.settings()).unwrap().0);
 }

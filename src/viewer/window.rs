@@ -303,10 +303,8 @@ impl<E: Example> Viewer<E> {
         let rgb = [shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]];
         let linear = shown.finished.as_ref().map(|(frame, _)| frame.get(x, y));
         drop(shown);
-        let ray = scene
-            .camera
-            .frame(self.cli.common.width, self.cli.common.height)
-            .get_screen_ray(x as f32 + 0.5, y as f32 + 0.5);
+        let size = self.cli.settings();
+        let ray = scene.camera.frame(size.width, size.height).get_screen_ray(x as f32 + 0.5, y as f32 + 0.5);
         let mut text = format!("pixel ({x}, {y}): sRGB ({}, {}, {})", rgb[0], rgb[1], rgb[2]);
         if let Some(c) = linear {
             text += &format!(", linear ({:.4}, {:.4}, {:.4})", c.r(), c.g(), c.b());
@@ -352,7 +350,8 @@ impl<E: Example> Viewer<E> {
             && let Some(pos) = response.interact_pointer_pos()
         {
             let p = (pos - response.rect.min) / scale;
-            let (w, h) = (self.cli.common.width, self.cli.common.height);
+            let size = self.cli.settings();
+            let (w, h) = (size.width, size.height);
             let (x, y) = ((p.x.max(0.0) as u32).min(w - 1), (p.y.max(0.0) as u32).min(h - 1));
             self.inspect(x, y);
         }

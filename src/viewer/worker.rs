@@ -169,7 +169,11 @@ fn run_job(job: Job, scene: &mut Option<Arc<Scene>>, shown: &Mutex<Shown>, repai
     }
     let Some(base) = scene.as_ref() else { return Ok(()) };
     let scene = match job.camera {
-        Some(camera) => Arc::new(Scene { camera, ..(**base).clone() }),
+        Some(camera) => {
+            let mut moved = (**base).clone();
+            moved.camera = camera;
+            Arc::new(moved)
+        }
         None => base.clone(),
     };
     lock().scene = Some(scene.clone());
