@@ -17,9 +17,12 @@
 //! cargo bench --bench layered_fresnel -- 15      # 15 runs of each
 //! ```
 
+mod common;
 #[macro_use]
 #[path = "../tests/common/examples.rs"]
 mod examples;
+
+use common::cpu_time;
 
 use examples::{fresnel, layered};
 use lecture6::cli::{Cli, Example};
@@ -27,16 +30,6 @@ use lecture6::compare::difference;
 use lecture6::render::{Frame, RenderStats};
 use lecture6::scene::Counters;
 use std::time::Duration;
-
-/// CPU time used by this process so far (user + system, all threads, including finished ones), if the
-/// system tells: fields 14 and 15 of `/proc/self/stat`, in clock ticks of 1/100 s.
-fn cpu_time() -> Option<Duration> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    // The command name, field 2, is in parentheses and may hold spaces: count fields after it.
-    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
-    let ticks: u64 = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
-    Some(Duration::from_millis(ticks * 10))
-}
 
 /// Renders with the given options, as the example does; returns the frame, the stats and the CPU time of
 /// the whole call (which includes building the scene: see [`load_cpu_time`]).

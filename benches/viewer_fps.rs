@@ -11,25 +11,19 @@
 //! cargo bench --bench viewer_fps -- 120 1    # 120 frames on 1 thread
 //! ```
 
+mod common;
 #[macro_use]
 #[path = "../tests/common/examples.rs"]
 mod examples;
+
+use common::cpu_time;
 
 use lecture6::camera::Camera;
 use lecture6::cli::{Cli, Example};
 use lecture6::progressive::{preview_settings, quick_frame};
 use lecture6::render::thread_pool;
 use std::sync::atomic::AtomicBool;
-use std::time::{Duration, Instant};
-
-/// CPU time used by this process so far (user + system, all threads): fields 14 and 15 of
-/// `/proc/self/stat`, in clock ticks of 1/100 s.
-fn cpu_time() -> Option<Duration> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
-    let ticks: u64 = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
-    Some(Duration::from_millis(ticks * 10))
-}
+use std::time::Instant;
 
 /// The camera of frame `i`: turned by a quarter of a degree and moved by a thousandth of its distance from
 /// the origin per frame, the steps a held key makes at 60 frames a second.
