@@ -20,7 +20,7 @@ use crate::error::{Error, Result};
 use crate::photon_map::PhotonStats;
 use crate::ray::Ray;
 use crate::ray_tree::RayTree;
-use crate::rng::Rng;
+use crate::rng::{Rng, shuffled_index};
 use crate::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -32,6 +32,14 @@ use std::time::{Duration, Instant};
 
 /// The largest frame the renderer accepts, in pixels (64 Mpx, 1 GiB of linear colour).
 pub const MAX_PIXELS: u64 = 1 << 26;
+
+/// The most anti-aliasing samples per pixel the renderer accepts: far beyond what a picture needs (the
+/// examples use 1 to 16; a reference for an error study a few thousand), low enough that a mistyped count
+/// is refused at once instead of rendering for days.
+pub const MAX_SPP: u32 = 1 << 16;
+
+/// The most worker threads the renderer starts.
+pub const MAX_THREADS: usize = 1024;
 
 /// Stack size of the worker threads: room for [`RECURSION_SAFETY_CAP`] nested `raytrace` calls at 8 KiB
 /// each. One level of mirror reflection takes about 0.7 KiB (measured: a ray bouncing 1000 times between two
@@ -90,8 +98,8 @@ impl RenderSettings {
                 format!("more than {MAX_PIXELS} pixels"),
             ));
         }
-        if self.spp == 0 {
-            return Err(Error::parameter("samples per pixel", 0, "must be at least 1"));
+        if !(1..=MAX_SPP).contains(&self.spp) {
+            return Err(Error::parameter("samples per pixel", self.spp, format!("must be 1 to {MAX_SPP}")));
         }
         if !(1..=MAX_WAVELENGTHS).contains(&self.wavelengths) {
             return Err(Error::parameter(
@@ -107,8 +115,10 @@ impl RenderSettings {
                 "adaptive anti-aliasing starts from one sample per pixel",
             ));
         }
-        if self.threads == Some(0) {
-            return Err(Error::parameter("thread count", 0, "must be at least 1"));
+        if let Some(threads) = self.threads
+            && !(1..=MAX_THREADS).contains(&threads)
+        {
+            return Err(Error::parameter("thread count", threads, format!("must be 1 to {MAX_THREADS}")));
         }
         Ok(())
     }
@@ -209,22 +219,20 @@ pub struct Stratifier {
     spp: u32,
     /// k when spp = k * k (a jittered grid), else 0 (N-rooks).
     grid: u32,
-    /// N-rooks: the row of the N x N grid that sample s uses, a fresh permutation per pixel.
-    rows: Vec<u32>,
+    /// N-rooks: the key of the current pixel's random permutation of the rows (see [`shuffled_index`]).
+    rows_key: u32,
 }
 
 impl Stratifier {
     pub fn new(spp: u32) -> Stratifier {
         let k = (spp as f64).sqrt().round() as u32;
-        Stratifier { spp, grid: if k * k == spp { k } else { 0 }, rows: (0..spp).collect() }
+        Stratifier { spp, grid: if k * k == spp { k } else { 0 }, rows_key: 0 }
     }
 
-    /// Prepares the samples of a new pixel.
+    /// Prepares the samples of a new pixel: N-rooks draws the pixel's permutation of the rows.
     pub fn start_pixel(&mut self, rng: &mut Rng) {
-        if self.grid == 0 {
-            for i in (1..self.spp).rev() {
-                self.rows.swap(i as usize, rng.below(i + 1) as usize);
-            }
+        if self.grid == 0 && self.spp > 1 {
+            self.rows_key = rng.next_u32();
         }
     }
 
@@ -234,7 +242,7 @@ impl Stratifier {
             return (0.5, 0.5);
         }
         let (col, row, n) = match self.grid {
-            0 => (s, self.rows[s as usize], self.spp),
+            0 => (s, shuffled_index(s, self.spp, self.rows_key), self.spp),
             k => (s % k, s / k, k),
         };
         ((col as f32 + rng.next_f32()) / n as f32, (row as f32 + rng.next_f32()) / n as f32)
@@ -320,8 +328,7 @@ pub struct PixelTrace {
 }
 
 /// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and, with
-/// `record`, recording its ray tree (see [`crate::ray_tree`]). `--trace-pixel` uses it. The pixels of a row
-/// share their sample positions' stratifier, so the row is rendered from its start up to the pixel.
+/// `record`, recording its ray tree (see [`crate::ray_tree`]). `--trace-pixel` uses it.
 pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, record: bool) -> Result<PixelTrace> {
     if x >= settings.width || y >= settings.height {
         return Err(Error::parameter(
@@ -330,25 +337,25 @@ pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, re
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let mut row = render_row(scene, settings, y, x + 1, record.then_some(x))?;
-    Ok(row.pop().expect("the row holds pixel x"))
+    let mut pixels = render_row(scene, settings, y, x..x + 1, record.then_some(x))?;
+    Ok(pixels.pop().expect("the row holds pixel x"))
 }
 
-/// Renders the first `count` pixels of row `y` as [`render`] would, each with its own ray counters, and
-/// the ray tree of pixel `record`, if given. The debug views use it.
+/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters, and the ray tree
+/// of pixel `record`, if given. The debug views use it.
 pub fn render_row(
     scene: &Scene,
     settings: &RenderSettings,
     y: u32,
-    count: u32,
+    xs: Range<u32>,
     record: Option<u32>,
 ) -> Result<Vec<PixelTrace>> {
     settings.check()?;
     let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
     let camera = scene.camera.frame(settings.width, settings.height);
     let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
-    let mut pixels = Vec::with_capacity(count as usize);
-    for x in 0..count.min(settings.width) {
+    let mut pixels = Vec::with_capacity(xs.len());
+    for x in xs.start..xs.end.min(settings.width) {
         tracer.counters = Counters::default();
         tracer.recorder = (record == Some(x)).then(|| Box::new(RayTree::new()));
         let color = tracer.pixel(x, y);
@@ -373,7 +380,6 @@ pub fn render_rect(
     let width = xs.len();
     for (y, row) in ys.zip(out.chunks_mut(width)) {
         let mut tracer = PixelTracer::new(scene, &camera, settings, plan);
-        tracer.skip_to(xs.start, y);
         for (pixel, x) in row.iter_mut().zip(xs.clone()) {
             *pixel = tracer.pixel(x, y);
         }
@@ -392,8 +398,6 @@ struct PixelTracer<'a> {
     settings: &'a RenderSettings,
     plan: &'a SpectralPlan,
     stratifier: Stratifier,
-    /// Spectral sampling: which band sample s of the current pixel traces (a fresh permutation per pixel).
-    band_of_sample: Vec<u32>,
     counters: Counters,
     /// The ray tree being recorded for the pixels this tracer renders (`--trace-pixel`), if any.
     recorder: Option<Box<RayTree>>,
@@ -401,21 +405,8 @@ struct PixelTracer<'a> {
 
 impl<'a> PixelTracer<'a> {
     fn new(scene: &'a Scene, camera: &'a CameraFrame, settings: &'a RenderSettings, plan: &'a SpectralPlan) -> Self {
-        let band_of_sample = match plan {
-            SpectralPlan::Sampled => (0..settings.spp).collect(),
-            _ => Vec::new(),
-        };
         let stratifier = Stratifier::new(settings.spp);
-        PixelTracer {
-            scene,
-            camera,
-            settings,
-            plan,
-            stratifier,
-            band_of_sample,
-            counters: Counters::default(),
-            recorder: None,
-        }
+        PixelTracer { scene, camera, settings, plan, stratifier, counters: Counters::default(), recorder: None }
     }
 
     /// The average of the pixel's samples, all traced at `wavelength`, with the random stream `rng`.
@@ -432,36 +423,6 @@ impl<'a> PixelTracer<'a> {
         self.counters.add(&ctx.counters);
         self.recorder = ctx.recorder.take();
         sum / self.settings.spp as f32
-    }
-
-    /// Spectral sampling: a fresh assignment of bands to the samples of a pixel.
-    fn shuffle_bands(&mut self, rng: &mut Rng) {
-        for i in (1..self.settings.spp).rev() {
-            self.band_of_sample.swap(i as usize, rng.below(i + 1) as usize);
-        }
-    }
-
-    /// Leaves the tracer as tracing pixels 0..x of row y would, without tracing them: the N-rooks rows and
-    /// the spectral bands are permuted in place from one pixel to the next, so a pixel's samples depend on
-    /// the pixels before it in its row. Replays the random draws `pixel` makes before it traces.
-    fn skip_to(&mut self, x: u32, y: u32) {
-        let seed = self.settings.seed;
-        for x in 0..x {
-            match self.plan {
-                SpectralPlan::White => self.stratifier.start_pixel(&mut Rng::for_pixel(seed, x, y)),
-                SpectralPlan::Passes(bands) => {
-                    for k in 0..bands.len() {
-                        let mut rng = Rng::for_keys(&[seed, x as u64, y as u64, PASS_KEY, k as u64]);
-                        self.stratifier.start_pixel(&mut rng);
-                    }
-                }
-                SpectralPlan::Sampled => {
-                    let mut rng = Rng::for_pixel(seed, x, y);
-                    self.stratifier.start_pixel(&mut rng);
-                    self.shuffle_bands(&mut rng);
-                }
-            }
-        }
     }
 
     fn pixel(&mut self, x: u32, y: u32) -> Color {
@@ -481,11 +442,12 @@ impl<'a> PixelTracer<'a> {
                 let mut ctx = TraceContext::new(self.scene, Rng::for_pixel(seed, x, y));
                 ctx.recorder = self.recorder.take();
                 self.stratifier.start_pixel(&mut ctx.rng);
-                self.shuffle_bands(&mut ctx.rng);
+                // Sample s traces band shuffled_index(s): every band once, in an order of the pixel's own.
+                let bands_key = ctx.rng.next_u32();
                 let mut sum = [0.0f64; 3];
                 for s in 0..spp {
                     let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
-                    let band = Band::nth(self.band_of_sample[s as usize], spp);
+                    let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
                     let wavelength = Some(band.at(ctx.rng.next_f32()));
                     let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
                     add_weighted(&mut sum, &band, ctx.raytrace(&ray).sanitized());

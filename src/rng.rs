@@ -49,3 +49,32 @@ impl Rng {
         (m >> 32) as u32
     }
 }
+
+/// A random permutation of 0..n that needs no table: `shuffled_index(i, n, key)` is where index `i` goes,
+/// and the indices 0..n go to 0..n in an order chosen by `key`, each exactly once. The N-rooks rows of a
+/// pixel's samples and spectral sampling's bands use it, so that their memory does not grow with the
+/// sample count and every pixel's order depends on its own key alone.
+///
+/// How: every step of `scramble` (an XOR, a multiplication by an odd number, an XOR with the word shifted
+/// right) is a one-to-one map of the k-bit words, k the bits of n - 1, so their composition is a
+/// permutation of 0..2^k; applying it again while the result is n or more ("cycle walking") stays on the
+/// cycle of `i` and ends inside 0..n, a permutation of 0..n. Since 2^k < 2n, a step is repeated less than
+/// twice on average.
+pub fn shuffled_index(i: u32, n: u32, key: u32) -> u32 {
+    debug_assert!(i < n, "index {i} outside 0..{n}");
+    let mask = u32::MAX >> (n.max(2) - 1).leading_zeros();
+    let scramble = |mut x: u32| {
+        x ^= key;
+        x = x.wrapping_mul(0x9e37_79b1) & mask;
+        x ^= x >> 7;
+        x = (x ^ key.rotate_left(13)).wrapping_mul(0x85eb_ca6b) & mask;
+        x ^= x >> 11;
+        x = x.wrapping_mul(0xc2b2_ae35) & mask;
+        x ^ (x >> 5)
+    };
+    let mut x = scramble(i);
+    while x >= n {
+        x = scramble(x);
+    }
+    x
+}

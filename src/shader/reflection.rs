@@ -43,6 +43,10 @@ use std::f32::consts::FRAC_PI_2;
 /// uses 2.
 pub const SECONDARY_GLOSSY_SAMPLES: u32 = 2;
 
+/// The most rays a glossy mirror averages per shading point: twenty times the slide's 200, and low enough
+/// that a mistyped count is refused at once instead of rendering for days.
+pub const MAX_GLOSSY_SAMPLES: u32 = 4096;
+
 #[derive(Clone)]
 pub struct Reflection {
     /// The colour of the mirror: what fraction of each channel it reflects. May come from a texture.
@@ -72,8 +76,12 @@ impl Reflection {
         if !(0.0..=1.0).contains(&glossiness) {
             return Err(Error::parameter("glossiness", glossiness, "must be between 0 and 1"));
         }
-        if num_samples == 0 {
-            return Err(Error::parameter("number of glossy samples", 0, "must be at least 1"));
+        if !(1..=MAX_GLOSSY_SAMPLES).contains(&num_samples) {
+            return Err(Error::parameter(
+                "number of glossy samples",
+                num_samples,
+                format!("must be 1 to {MAX_GLOSSY_SAMPLES}"),
+            ));
         }
         Ok(Reflection { multiplier: multiplier.into(), glossiness, num_samples, sampler: DiscSampler::default() })
     }
