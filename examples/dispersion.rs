@@ -40,24 +40,36 @@ pub struct Options {
     /// The glass of the prism and the sphere.
     #[arg(long, value_enum, default_value_t = Glass::Sf11)]
     pub glass: Glass,
-    /// Index of refraction at 587.6 nm, for `--glass abbe`.
-    #[arg(long, default_value_t = 1.7847)]
-    pub nd: f32,
-    /// Abbe number V_d for `--glass abbe`: smaller is more dispersive; `inf` is no dispersion.
-    #[arg(long, default_value_t = 25.68)]
-    pub abbe: f32,
+    /// Index of refraction at 587.6 nm, for `--glass abbe` only. [default: 1.7847, SF11's]
+    #[arg(long)]
+    pub nd: Option<f32>,
+    /// Abbe number V_d, for `--glass abbe` only: smaller is more dispersive; `inf` is no dispersion.
+    /// [default: 25.68, SF11's]
+    #[arg(long)]
+    pub abbe: Option<f32>,
 }
 
 impl Options {
-    /// The glass the options ask for.
+    /// The glass the options ask for. `--nd` and `--abbe` describe the slide's model glass: given with a
+    /// catalogue glass, they are an error rather than silently ignored.
     pub fn ior(&self) -> Result<Ior> {
+        let model = [("--nd", self.nd), ("--abbe", self.abbe)];
+        if self.glass != Glass::Abbe
+            && let Some((option, Some(value))) = model.into_iter().find(|(_, value)| value.is_some())
+        {
+            return Err(Error::parameter(option, value, "applies to --glass abbe only: add --glass abbe"));
+        }
         match self.glass {
             Glass::Sf11 => Ok(Ior::SF11),
             Glass::NBk7 => Ok(Ior::N_BK7),
-            Glass::Abbe => Ior::abbe(self.nd, self.abbe),
+            Glass::Abbe => Ior::abbe(self.nd.unwrap_or(SF11_ND), self.abbe.unwrap_or(SF11_ABBE)),
         }
     }
 }
+
+/// `--glass abbe`'s defaults: SF11's index at 587.6 nm and its Abbe number.
+pub const SF11_ND: f32 = 1.7847;
+pub const SF11_ABBE: f32 = 25.68;
 
 /// The wavelength (nm) whose minimum-deviation ray through the prism's centre meets the slit.
 pub const SLIT_WAVELENGTH: f32 = 560.0;

@@ -10,8 +10,9 @@
 //! - the floor: 2% of it is a mirror, enough to show a faint reflection of the sphere.
 //!
 //! Try: `--fresnel exact` (the exact equations instead of Schlick's approximation: compare with
-//! `--compare expected/fresnel.png`), `--ior 1.33` (water), `--ior 2.42` (diamond), `--max-depth 2` (the
-//! slide's depth: the inside of the sphere goes black), `--exhaustive` (trace every ray to the full depth:
+//! `--compare expected/fresnel.png`), `--ior 1.33` (water), `--ior 2.42` (diamond), `--max-depth 1` (the
+//! ray refracted into the glass is the last one traced, so the inside of the sphere goes black; the slide's
+//! depth, 2, is just enough to see through it), `--exhaustive` (trace every ray to the full depth:
 //! the same picture, slower).
 //!
 //! Homework ideas: a texture that drives the IOR; a coloured glass (a refraction multiplier per channel);

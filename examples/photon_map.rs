@@ -1,15 +1,16 @@
 //! # Caustics by photon mapping (lecture 6, slides "Caustics", "Photon Mapping", "Пример за photon map")
 //!
 //! Light concentrated by refraction and reflection: a glass sphere focuses a point light into a bright spot
-//! inside its own shadow, and a small mirror throws a bright patch onto the floor ("слънчево зайче").
-//! Shadow rays cannot find this light (they would have to know which way to go through the glass), so
+//! inside its own shadow, and a small mirror throws a bright patch onto the wall at the back ("слънчево
+//! зайче"). Shadow rays cannot find this light (they would have to know which way to go through the glass), so
 //! before rendering, photons are shot from the light at the glass and the mirror, followed through them and
-//! stored where they land on the floor; the floor's shader then turns the k nearest photons into light.
+//! stored where they land on a diffuse surface; the floor's and the wall's shader then turn the k nearest
+//! photons into light.
 //!
 //! Look at:
 //! - the caustic in the sphere's shadow: much brighter than the lit floor, with a soft halo (spherical
 //!   aberration: the sphere's rim focuses closer than its centre);
-//! - the mirror's spot: the shape of the mirror, stretched across the floor;
+//! - the mirror's spot on the wall: the shape of the mirror, stretched by the angle at which it lands;
 //! - `--photons 0`: the same picture without a photon map, where both are missing;
 //! - `--show-photons`: the photons themselves, one dot each, like the slide's last picture.
 //!

@@ -8,9 +8,10 @@
 //!
 //! The frame size, the camera, the lights, the environment and the ray depth come from the file
 //! (`GlobalSettings`, `Camera`, `PointLight`, `CubemapEnvironment`); `--width`, `--height`, `--env` and
-//! `--max-depth` override them. With one sample per pixel (the default) the file's `wantAA` decides: the
-//! course's adaptive anti-aliasing (one sample per pixel, five where neighbours differ) or one sample;
-//! `--spp N` takes N stratified samples everywhere instead. Relative paths in the file are relative to the file's folder.
+//! `--max-depth` override them. Without `--spp` the file's `wantAA` decides: the course's adaptive
+//! anti-aliasing (one sample per pixel, five where neighbours differ) or one sample; `--spp N` (even
+//! `--spp 1`) takes N stratified samples everywhere instead. Relative paths in the file are relative to the
+//! file's folder.
 //! Warnings (unknown properties, as in the course) go to stderr with their line numbers.
 //!
 //! Look at: `examples/data/fresnel.qdmg`, the `fresnel` example's scene written in the course's format;
@@ -62,8 +63,8 @@ impl Example for Options {
         }
         settings.width = common.width.unwrap_or(file.width);
         settings.height = common.height.unwrap_or(file.height);
-        // With one sample per pixel (the default) the file's `wantAA` decides; more samples replace it.
-        if settings.spp == 1 {
+        // Without --spp the file's `wantAA` decides; --spp N (even 1) takes N samples in every pixel instead.
+        if common.spp.is_none() {
             settings.adaptive_aa |= file.adaptive_aa;
         }
         Ok(file.scene)

@@ -5,16 +5,17 @@
 //! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
 //! unknown options, whose message is put on one line too), never a panic.
 
-use crate::compare;
+use crate::compare::{self, Reference};
 use crate::debug_view::{DebugView, write_view};
 use crate::environment::{self, CubemapLayout};
 use crate::error::{Error, Result};
 use crate::photon_map::{PhotonArgs, PhotonMap};
 use crate::ray_tree::{PixelPos, TraceFormat, trace_pixel};
-use crate::render::{Frame, RenderSettings, RenderStats, render, save_atomically, thread_pool};
+use crate::render::{Frame, MAX_SPP, MAX_THREADS, RenderSettings, RenderStats, render, save_atomically, thread_pool};
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::side_by_side::side_by_side;
-use crate::spectral::{SpectralMode, SpectralPlan};
+use crate::spectral::{MAX_WAVELENGTHS, SpectralMode, SpectralPlan};
+use clap::builder::RangedI64ValueParser;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -23,29 +24,46 @@ use std::sync::Arc;
 /// options, listed after them, keep the plain "Options" heading).
 const COMMON: &str = "Common options";
 
+/// The help heading of the options that change only scenes with dispersive materials.
+const DISPERSION: &str = "Dispersion (scenes with dispersive glass only)";
+
+/// What the help of an option whose default the scene sets says until the scene is known (see
+/// [`help_command`], which puts the example's own default there).
+const SCENE_DEFAULT: &str = "[default: the scene's own]";
+
+/// A parser for a whole number in `range`, whose error names the range: `--spp -1` says "-1 is not in
+/// 1..=65536" (with every option allowed to take negative numbers, see [`Cli::command_named`]).
+pub fn whole_number<T>(range: std::ops::RangeInclusive<i64>) -> RangedI64ValueParser<T>
+where
+    T: TryFrom<i64> + Clone + Send + Sync + 'static,
+    <T as TryFrom<i64>>::Error: std::error::Error + Send + Sync + 'static,
+{
+    RangedI64ValueParser::<T>::new().range(range)
+}
+
 // Options every example accepts. (A plain comment: a doc comment here would become every example's `--help`
 // description, which is its `Options` doc comment.)
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
     /// Image width in pixels. [default: 640, or a scene file's own]
-    #[arg(long, help_heading = COMMON)]
+    #[arg(long, value_parser = whole_number::<u32>(1..=u32::MAX as i64), help_heading = COMMON)]
     pub width: Option<u32>,
     /// Image height in pixels. [default: 480, or a scene file's own]
-    #[arg(long, help_heading = COMMON)]
+    #[arg(long, value_parser = whole_number::<u32>(1..=u32::MAX as i64), help_heading = COMMON)]
     pub height: Option<u32>,
     /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
     /// grid, any other count N-rooks stratification.
-    #[arg(long, help_heading = COMMON)]
+    #[arg(long, value_parser = whole_number::<u32>(1..=MAX_SPP as i64), help_heading = COMMON)]
     pub spp: Option<u32>,
     /// The course's adaptive anti-aliasing: one sample through each pixel's centre, then four more in every
     /// pixel that differs from a neighbour by more than 0.1 (needs --spp 1).
     #[arg(long, help_heading = COMMON)]
     pub adaptive_aa: bool,
     /// Worker threads [default: all cores]. The picture is the same for any count.
-    #[arg(long, help_heading = COMMON)]
+    #[arg(long, value_parser = whole_number::<usize>(1..=MAX_THREADS as i64), help_heading = COMMON)]
     pub threads: Option<usize>,
     /// Maximum ray depth (the slides' MAX_RAY_DEPTH): deeper rays return black. [default: the scene's own]
-    #[arg(long, help_heading = COMMON)]
+    #[arg(long, value_parser = whole_number::<u32>(0..=u32::MAX as i64), help_heading = COMMON)]
     pub max_depth: Option<u32>,
     /// Trace every ray down to the maximum depth. By default a ray too weak to change its pixel by a whole
     /// 8-bit level (its weight, the product of the multipliers, blends and Fresnel factors along its path, is
@@ -62,9 +80,11 @@ pub struct CommonArgs {
     /// Print nothing but errors: no progress bar, no summary.
     #[arg(long, short, help_heading = COMMON)]
     pub quiet: bool,
-    /// Compare the picture with a reference PNG: print RMSE, PSNR and the largest difference, and write a
-    /// heat map of the difference next to the output (OUTPUT-diff.png).
-    #[arg(long, value_name = "REFERENCE.png", help_heading = COMMON)]
+    /// Compare the picture with a reference (checked before the render): print RMSE, PSNR, the largest
+    /// difference and whether it is within the regression tests' tolerance, and write a heat map of the
+    /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). An 8-bit reference
+    /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too.
+    #[arg(long, value_name = "REFERENCE", help_heading = COMMON)]
     pub compare: Option<PathBuf>,
     /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
     /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
@@ -76,15 +96,14 @@ pub struct CommonArgs {
     /// course's cube maps, whose negz face is turned by 180°.
     #[arg(long, value_enum, default_value_t = CubemapLayout::OpenGl, help_heading = COMMON)]
     pub env_layout: CubemapLayout,
-    /// Wavelength passes K for scenes with dispersive materials (the slide's method): the frame is traced K
-    /// times, once per band of the spectrum, and the passes are added with the bands' colours. Scenes
-    /// without dispersive materials are traced once whatever K is.
-    #[arg(long, default_value_t = 8, help_heading = COMMON)]
-    pub wavelengths: u32,
-    /// How scenes with dispersive materials are traced: `passes` (K wavelength passes, the slide's method)
-    /// or `sampled` (one pass; every anti-aliasing sample carries its own band of the spectrum).
-    #[arg(long, value_enum, default_value_t = SpectralMode::Passes, help_heading = COMMON)]
-    pub spectral: SpectralMode,
+    /// Wavelength passes K (the slide's method): the frame is traced K times, once per band of the
+    /// spectrum, and the passes are added with the bands' colours. [default: 8]
+    #[arg(long, value_parser = whole_number::<u32>(1..=MAX_WAVELENGTHS as i64), help_heading = DISPERSION)]
+    pub wavelengths: Option<u32>,
+    /// How the wavelengths are traced: `passes` (K wavelength passes, the slide's method) or `sampled` (one
+    /// pass; every anti-aliasing sample carries its own band of the spectrum). [default: passes]
+    #[arg(long, value_enum, help_heading = DISPERSION)]
+    pub spectral: Option<SpectralMode>,
     #[command(flatten)]
     pub photons: PhotonArgs,
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
@@ -170,12 +189,21 @@ pub struct Cli<E: Example> {
 
 impl<E: Example> Cli<E> {
     /// The example's command, named `name` (its binary), its `--help` showing the example's own `--spp`
-    /// default.
+    /// default. Every option that takes a value takes a negative number too (`--ior -1` reaches the
+    /// example's own check, which says why it is wrong, instead of being taken for an unknown option).
     pub fn command_named(name: &str) -> clap::Command {
+        let spp_help = |arg: clap::Arg| {
+            let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
+            arg.help(format!("{help} [default: {}]", E::DEFAULT_SPP))
+        };
         <Cli<E> as clap::CommandFactory>::command()
             .name(name.to_string())
             .bin_name(name.to_string())
-            .mut_arg("spp", |arg| arg.default_value(E::DEFAULT_SPP.to_string()))
+            .mut_arg("spp", spp_help)
+            .mut_args(|arg| {
+                let takes_value = arg.get_action().takes_values();
+                arg.allow_negative_numbers(takes_value)
+            })
     }
 
     /// Parses the options `args` (without the program name) as the example's binary would.
@@ -199,8 +227,8 @@ impl<E: Example> Cli<E> {
             threads: c.threads,
             seed: c.seed,
             progress: !c.quiet,
-            wavelengths: c.wavelengths,
-            spectral: c.spectral,
+            wavelengths: c.wavelengths.unwrap_or(RenderSettings::default().wavelengths),
+            spectral: c.spectral.unwrap_or_default(),
             adaptive_aa: c.adaptive_aa,
         }
     }
@@ -215,6 +243,14 @@ impl<E: Example> Cli<E> {
     /// [`Cli::prepare_scene`], letting the scene set what the options leave open in `settings` (see
     /// [`Example::scene_and_settings`]).
     pub fn prepare_scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
+        let mut scene = self.scene_and_settings(settings)?;
+        self.build_photon_map(&mut scene)?;
+        Ok(scene)
+    }
+
+    /// The example's scene with the common options applied and checked, and the settings it decides; the
+    /// photon map is not built yet.
+    fn scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
         let common = &self.common;
         let mut scene = self.example.scene_and_settings(common, settings)?;
         if let Some(depth) = common.max_depth {
@@ -230,25 +266,76 @@ impl<E: Example> Cli<E> {
         scene.relative_to_camera();
         common.photons.apply(&mut scene.photons);
         scene.photons.check()?;
+        Ok(scene)
+    }
+
+    /// Builds the scene's caustic photon map, if it asks for one.
+    fn build_photon_map(&self, scene: &mut Scene) -> Result<()> {
         if scene.photons.count > 0 {
-            let map = thread_pool(common.threads)?.install(|| PhotonMap::build(&scene, common.seed))?;
+            let map = thread_pool(self.common.threads)?.install(|| PhotonMap::build(scene, self.common.seed))?;
             scene.photon_map = map.map(Arc::new);
         }
-        Ok(scene)
+        Ok(())
     }
 
     /// Builds and renders the example's scene as the options say (the path both `main` and the tests use).
     pub fn render(&self) -> Result<(Frame, RenderStats)> {
-        self.render_and_settings().map(|(frame, stats, _)| (frame, stats))
+        self.render_checked(|_, _| Ok(())).map(|(frame, stats, _)| (frame, stats))
     }
 
-    /// [`Cli::render`], returning the settings it rendered with too.
-    fn render_and_settings(&self) -> Result<(Frame, RenderStats, RenderSettings)> {
+    /// [`Cli::render`], calling `check` with the scene and the settings once they are known and before any
+    /// tracing (the photon map included): `run` checks there that the reference fits and says which
+    /// options change nothing. Returns the settings it rendered with too.
+    fn render_checked(
+        &self,
+        check: impl FnOnce(&Scene, &RenderSettings) -> Result<()>,
+    ) -> Result<(Frame, RenderStats, RenderSettings)> {
         let mut settings = self.settings();
         settings.check()?;
-        let scene = self.prepare_scene_and_settings(&mut settings)?;
+        let mut scene = self.scene_and_settings(&mut settings)?;
+        settings.check()?;
+        check(&scene, &settings)?;
+        self.build_photon_map(&mut scene)?;
         let (frame, stats) = render(&scene, &settings)?;
         Ok((frame, stats, settings))
+    }
+
+    /// The options given on the command line that change nothing in `scene`: caustic options in a scene
+    /// without a photon map, dispersion options in a scene without dispersive materials. Each as one note.
+    pub fn options_without_effect(&self, scene: &Scene) -> Vec<String> {
+        let (c, p) = (&self.common, &self.common.photons);
+        let mut notes = Vec::new();
+        let photon_options: Vec<&str> = [
+            ("--photons", p.photons.is_some()),
+            ("--k", p.k.is_some()),
+            ("--radius", p.radius.is_some()),
+            ("--show-photons", p.show_photons),
+        ]
+        .into_iter()
+        .filter_map(|(name, given)| given.then_some(name))
+        .collect();
+        if !photon_options.is_empty() && !scene.casts_caustics() {
+            notes.push(format!(
+                "{} change(s) nothing here: no mirror or glass in this scene casts caustics from a light",
+                photon_options.join(", ")
+            ));
+        } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
+            notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());
+        }
+        let dispersion_options: Vec<&str> =
+            [("--wavelengths", c.wavelengths.is_some()), ("--spectral", c.spectral.is_some())]
+                .into_iter()
+                .filter_map(|(name, given)| given.then_some(name))
+                .collect();
+        if !dispersion_options.is_empty() && !scene.is_dispersive() {
+            notes.push(format!(
+                "{} change(s) nothing here: nothing in this scene is dispersive, so it is traced once in white light",
+                dispersion_options.join(", ")
+            ));
+        } else if c.wavelengths.is_some() && c.spectral == Some(SpectralMode::Sampled) {
+            notes.push("--wavelengths changes nothing with --spectral sampled: every sample has its own band".into());
+        }
+        notes
     }
 
     /// Where the picture of the example called `name` goes.
@@ -273,7 +360,14 @@ pub fn run<E: Example>() -> ExitCode {
     let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
     let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
         Ok(args) => args,
-        // --help and --version print to stdout and succeed.
+        // --help shows the defaults the example's scene sets; --help and --version print to stdout and succeed.
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelp => {
+            let argv = std::iter::once(std::ffi::OsString::from(&name)).chain(argv);
+            match help_command::<E>(&name).try_get_matches_from(argv) {
+                Err(help) => help.exit(),
+                Ok(_) => e.exit(),
+            }
+        }
         Err(e) if !e.use_stderr() => e.exit(),
         Err(e) => {
             eprintln!("{name}: {}", one_line(&e.to_string()));
@@ -311,6 +405,92 @@ pub(crate) fn one_line(message: &str) -> String {
     message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
 }
 
+/// The example's command for `--help`: the defaults its scene sets written into the help of the options
+/// that depend on the scene, and the headings of the caustic and dispersion options saying whether they
+/// change this scene. (A scene that needs options to build, such as a scene file, keeps the plain help.)
+fn help_command<E: Example>(name: &str) -> clap::Command {
+    let command = Cli::<E>::command_named(name);
+    let Ok(defaults) = Cli::<E>::parse_args(name, std::iter::empty::<std::ffi::OsString>()) else {
+        return command;
+    };
+    let Ok(scene) = defaults.scene_and_settings(&mut defaults.settings()) else {
+        return command;
+    };
+    let with_default = |value: String| {
+        move |arg: clap::Arg| {
+            let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
+            arg.help(help.replace(SCENE_DEFAULT, &format!("[default: {value}]")))
+        }
+    };
+    let photons = &scene.photons;
+    let radius = match photons.max_radius {
+        Some(r) => r.to_string(),
+        None => format!("{:.3}, 1/100 of the scene's size", crate::photon_map::default_radius(&scene, &[])),
+    };
+    let caustics = if !scene.casts_caustics() {
+        "Caustics (photon mapping): no effect here, no mirror or glass in this scene casts caustics"
+    } else if photons.count == 0 {
+        "Caustics (photon mapping): off in this scene unless --photons N"
+    } else {
+        "Caustics (photon mapping)"
+    };
+    let dispersion = if scene.is_dispersive() {
+        DISPERSION
+    } else {
+        "Dispersion: no effect here at the defaults, nothing in this scene is dispersive"
+    };
+    let mut command = command
+        .mut_arg("max_depth", with_default(scene.max_depth.to_string()))
+        .mut_arg("photons", with_default(photons.count.to_string()))
+        .mut_arg("k", with_default(photons.k.to_string()))
+        .mut_arg("radius", with_default(radius));
+    for id in ["photons", "k", "radius", "show_photons"] {
+        command = command.mut_arg(id, |arg| arg.help_heading(caustics));
+    }
+    for id in ["wavelengths", "spectral"] {
+        command = command.mut_arg(id, |arg| arg.help_heading(dispersion));
+    }
+    command
+}
+
+/// Fails unless writing the picture to `output` (and its heat map to `heat_map`) leaves the reference
+/// `reference` as it is: `-o REF.png --compare REF.png` would overwrite the reference with the render and
+/// report a perfect match.
+fn check_not_the_reference(reference: &Path, output: &Path, heat_map: &Path) -> Result<()> {
+    let same_file = |a: &Path, b: &Path| matches!((resolved(a), resolved(b)), (Some(a), Some(b)) if a == b);
+    for (what, path) in [("the picture", output), ("the heat map", heat_map)] {
+        if same_file(reference, path) {
+            return Err(Error::file(
+                "refusing to write over the reference",
+                reference,
+                format!("{what} would go to {}; write the render elsewhere with -o", path.display()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The absolute path a file would have once written, links followed: each component of the path that
+/// exists is resolved as the file system has it, the rest (a folder `save` would create) as written.
+fn resolved(path: &Path) -> Option<PathBuf> {
+    let mut resolved = PathBuf::new();
+    for component in std::path::absolute(path).ok()?.components() {
+        match component {
+            std::path::Component::ParentDir => {
+                resolved.pop();
+            }
+            std::path::Component::CurDir => {}
+            part => {
+                resolved.push(part);
+                if let Ok(real) = std::fs::canonicalize(&resolved) {
+                    resolved = real;
+                }
+            }
+        }
+    }
+    Some(resolved)
+}
+
 fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     if let Some(pixel) = args.common.trace_pixel {
         print!("{}", trace_pixel(name, args, pixel)?);
@@ -326,7 +506,28 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         return Ok(());
     }
     let output = args.output_path(name);
-    let (frame, stats, settings) = args.render_and_settings()?;
+    let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
+    let heat_path = output.with_file_name(format!("{stem}-diff.png"));
+    // The reference is read, and checked against the output paths, before anything is rendered.
+    let reference = match &args.common.compare {
+        Some(path) => {
+            check_not_the_reference(path, &output, &heat_path)?;
+            Some((path, Reference::load(path)?))
+        }
+        None => None,
+    };
+    let quiet = args.common.quiet;
+    let (frame, stats, settings) = args.render_checked(|scene, settings| {
+        if let Some((path, reference)) = &reference {
+            reference.check_size(path, settings.width, settings.height)?;
+        }
+        if !quiet {
+            for note in args.options_without_effect(scene) {
+                eprintln!("{name}: note: {note}");
+            }
+        }
+        Ok(())
+    })?;
     frame.save(&output)?;
     if !args.common.quiet {
         let rays = stats.counters.total();
@@ -370,20 +571,10 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             );
         }
     }
-    if let Some(reference) = &args.common.compare {
-        let expected = compare::load_reference(reference)?;
-        let actual = frame.to_rgb8();
-        let diff = compare::difference(&actual, &expected).map_err(|e| match e {
-            Error::Parameter { value, reason, .. } => {
-                Error::file("cannot compare with", reference, format!("the render is {value}, {reason}"))
-            }
-            e => e,
-        })?;
-        let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
-        let heat_path = output.with_file_name(format!("{stem}-diff.png"));
-        let heat = compare::heat_map(&actual, &expected)?;
-        save_atomically(&heat_path, |tmp| heat.save_with_format(tmp, image::ImageFormat::Png))?;
-        println!("compared with {}: {diff}; heat map -> {}", reference.display(), heat_path.display());
+    if let Some((path, reference)) = &reference {
+        let comparison = compare::compare(&frame, reference)?;
+        save_atomically(&heat_path, |tmp| comparison.heat_map.save_with_format(tmp, image::ImageFormat::Png))?;
+        println!("compared with {}: {comparison}; heat map -> {}", path.display(), heat_path.display());
     }
     Ok(())
 }

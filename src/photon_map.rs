@@ -142,7 +142,7 @@ const HEADING: &str = "Caustics (photon mapping)";
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct PhotonArgs {
     /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.
-    /// [default: the scene's own, 0 for scenes without caustics]
+    /// [default: the scene's own]
     #[arg(long, value_name = "N", help_heading = HEADING)]
     pub photons: Option<u32>,
     /// How many nearest photons each caustic estimate gathers. [default: the scene's own]
@@ -593,7 +593,7 @@ impl PhotonGrid {
 
 /// The default maximum radius: 1/100 of the diagonal of the box around the scene's bounded objects (or, if
 /// none is bounded, around the photons).
-fn default_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
+pub fn default_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
     let corners: Vec<Vector> = scene.nodes.iter().filter_map(|n| n.bounds()).flat_map(|b| [b.min, b.max]).collect();
     let bounds = if corners.is_empty() {
         Aabb::from_points(photons.iter().map(|p| p.position))

@@ -131,6 +131,12 @@ impl Scene {
         self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
     }
 
+    /// Whether a photon map can add light to this scene: some node is a mirror or glass that casts caustics
+    /// ([`crate::shader::Shader::casts_caustics`]) and some light shines on it.
+    pub fn casts_caustics(&self) -> bool {
+        crate::photon_map::Emitter::new(self, 1, 0).is_some()
+    }
+
     /// Whether some node's shader depends on the wavelength: only then does the renderer trace wavelengths.
     pub fn is_dispersive(&self) -> bool {
         self.nodes.iter().any(|n| n.shader.is_dispersive())

@@ -114,10 +114,10 @@ fn a_file_that_is_not_an_image_is_one_line_naming_it() {
 #[test]
 fn impossible_values_are_rejected() {
     for (args, needle) in [
-        (&["--spp", "0"][..], "samples per pixel 0"),
-        (&["--width", "0"][..], "image size 0x480"),
+        (&["--spp", "0"][..], "'0' for '--spp <SPP>': 0 is not in 1..=65536"),
+        (&["--width", "0"][..], "'0' for '--width <WIDTH>'"),
         (&["--width", "100000", "--height", "100000"][..], "image size 100000x100000"),
-        (&["--threads", "0"][..], "thread count 0"),
+        (&["--threads", "0"][..], "'0' for '--threads <THREADS>'"),
         (&["--filter", "cubic"][..], "cubic"),
     ] {
         let out = run_example("bitmap_textures", args);
@@ -258,13 +258,13 @@ fn impossible_common_values_are_rejected_for_every_example() {
         "refract",
     ] {
         for (args, needle) in [
-            (&["--spp", "0"][..], "samples per pixel 0"),
-            (&["--width", "0"][..], "image size 0x12"),
-            (&["--height", "0"][..], "image size 16x0"),
+            (&["--spp", "0"][..], "'0' for '--spp <SPP>': 0 is not in 1..=65536"),
+            (&["--width", "0"][..], "'0' for '--width <WIDTH>'"),
+            (&["--height", "0"][..], "'0' for '--height <HEIGHT>'"),
             (&["--width", "4294967295", "--height", "4294967295"][..], "image size 4294967295x4294967295"),
             (&["--width", "70000", "--height", "70000"][..], "image size 70000x70000"),
-            (&["--threads", "0"][..], "thread count 0"),
-            (&["--wavelengths", "0"][..], "wavelength passes 0"),
+            (&["--threads", "0"][..], "'0' for '--threads <THREADS>'"),
+            (&["--wavelengths", "0"][..], "'0' for '--wavelengths <WAVELENGTHS>'"),
             (&["--width", "-5"][..], "-5"),
             (&["--spp", "many"][..], "many"),
             (&["--spectral", "rainbow"][..], "rainbow"),

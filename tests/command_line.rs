@@ -1,0 +1,306 @@
+//! The command line a student meets: `--compare` that never destroys its reference and compares each kind of
+//! reference in its own form, caps on every count that multiplies work or memory, negative numbers that
+//! reach the check which explains them, options that say when they change nothing, `--help` that shows each
+//! example's real defaults, and doc comments that say what the pictures really show.
+
+mod common;
+
+use common::examples::{fresnel, photon_map, reflect_v02};
+use common::{root, run_example};
+use lecture6::compare::{Difference, heat_map, with_colour_bar};
+use lecture6::rng::shuffled_index;
+use std::path::PathBuf;
+use std::process::Output;
+
+/// A scratch folder of this file's, one per test so that the tests can run in parallel.
+fn scratch(test: &str) -> PathBuf {
+    let dir = root().join("target").join("command-line").join(test);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Runs an example at a small size with `args` after the size options.
+fn small(example: &str, args: &[&str]) -> Output {
+    run_example(example, &[&["--width", "64", "--height", "48"][..], args].concat())
+}
+
+/// The run failed with exit code 2 and one line on stderr that contains every one of `needles`, and no panic.
+fn assert_refused(out: &Output, needles: &[&str]) {
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+    for needle in needles {
+        assert!(err.contains(needle), "{err} does not say {needle}");
+    }
+}
+
+#[test]
+fn compare_refuses_to_write_over_its_reference() {
+    let dir = scratch("over-reference");
+    let reference = dir.join("REF.png");
+    assert!(small("fresnel", &["-o", reference.to_str().unwrap()]).status.success());
+    let before = std::fs::read(&reference).unwrap();
+    let r = reference.to_str().unwrap();
+    // The same path, the same path spelt another way, and the heat map's path.
+    let other_spelling = dir.join("new-folder").join("..").join("REF.png");
+    let heat_over_it = dir.join("REF-diff.png");
+    std::fs::copy(&reference, &heat_over_it).unwrap();
+    for (output, reference) in [
+        (r.to_string(), r.to_string()),
+        (other_spelling.to_str().unwrap().to_string(), r.to_string()),
+        (dir.join("REF.png").to_str().unwrap().to_string(), heat_over_it.to_str().unwrap().to_string()),
+    ] {
+        let out = small("fresnel", &["--ior", "1.3", "-o", &output, "--compare", &reference]);
+        assert_refused(&out, &["refusing to write over the reference"]);
+    }
+    assert_eq!(std::fs::read(&reference).unwrap(), before, "the reference is untouched");
+    assert!(!dir.join("new-folder").exists(), "nothing was written");
+}
+
+#[test]
+fn a_linear_reference_is_compared_in_linear_light() {
+    let dir = scratch("linear-reference");
+    for ext in ["exr", "hdr"] {
+        let reference = dir.join(format!("f.{ext}"));
+        assert!(small("fresnel", &["-o", reference.to_str().unwrap()]).status.success());
+        let output = dir.join(format!("again-{ext}.png"));
+        let out = small("fresnel", &["-o", output.to_str().unwrap(), "--compare", reference.to_str().unwrap()]);
+        let stdout = text(&out.stdout);
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        // The same render: no difference, in linear light or as 8-bit pictures.
+        assert!(stdout.contains("in linear light: RMSE 0.000e0"), "{stdout}");
+        assert!(stdout.contains("max diff 0 levels") && stdout.contains("; within the regression"), "{stdout}");
+    }
+}
+
+#[test]
+fn a_reference_of_another_size_is_refused_before_the_render() {
+    let dir = scratch("size");
+    let reference = dir.join("small.png");
+    assert!(small("fresnel", &["-o", reference.to_str().unwrap()]).status.success());
+    let output = dir.join("large.png");
+    // A render that would take minutes is refused at once: nothing is written and no summary printed.
+    let out = run_example(
+        "fresnel",
+        &["--width", "3000", "--height", "2000", "--spp", "64", "-o", output.to_str().unwrap()]
+            .into_iter()
+            .chain(["--compare", reference.to_str().unwrap()])
+            .collect::<Vec<_>>(),
+    );
+    assert_refused(&out, &["small.png", "64x48", "3000x2000"]);
+    assert!(text(&out.stdout).is_empty() && !output.exists());
+}
+
+#[test]
+fn every_count_that_multiplies_work_or_memory_is_capped() {
+    for (example, args, needle) in [
+        ("fresnel", &["--spp", "4294967295"][..], "1..=65536"),
+        ("glossy", &["--glossy-samples", "4000000000"][..], "must be 1 to 4096"),
+        ("dispersion", &["--wavelengths", "100000"][..], "1..=1000"),
+        ("photon_map", &["--photons", "4000000000"][..], "at most 16777216"),
+        ("photon_map", &["--k", "4000000000"][..], "between 1 and 10000"),
+        ("fresnel", &["--threads", "100000"][..], "1..=1024"),
+        ("fresnel", &["--width", "100000", "--height", "100000"][..], "more than 67108864 pixels"),
+    ] {
+        let out = run_example(example, &[args, &["-o", "target/command-line/capped.png"]].concat());
+        assert_refused(&out, &[needle]);
+    }
+    // The largest sample count is accepted, and a pixel's samples need no memory that grows with it.
+    let cli = common::parse::<fresnel::Options>(&["--width", "1", "--height", "1", "--spp", "65536"]);
+    let (frame, _) = cli.render().unwrap();
+    assert!(frame.pixels[0].to_array().iter().all(|v| v.is_finite()));
+}
+
+#[test]
+fn shuffled_indices_are_permutations() {
+    for n in (1..70).chain([255, 256, 257, 1000, 65_536]) {
+        for key in [0, 1, 0xdead_beef, u32::MAX] {
+            let mut seen = vec![false; n as usize];
+            for i in 0..n {
+                let j = shuffled_index(i, n, key);
+                assert!(j < n && !seen[j as usize], "n {n}, key {key}: {i} -> {j} twice or outside");
+                seen[j as usize] = true;
+            }
+        }
+    }
+    // Different keys give different orders.
+    let order = |key| (0..16).map(|i| shuffled_index(i, 16, key)).collect::<Vec<_>>();
+    assert_ne!(order(1), order(2));
+}
+
+#[test]
+fn negative_numbers_reach_the_check_that_explains_them() {
+    for (args, needles) in [
+        (&["--spp", "-1"][..], &["'-1' for '--spp <SPP>'", "-1 is not in 1..=65536"][..]),
+        (&["--width", "-5"][..], &["'-5' for '--width <WIDTH>'", "-5 is not in"][..]),
+        (&["--ior", "-1"][..], &["invalid --ior -1: must be a positive number"][..]),
+        (&["--max-depth", "-2"][..], &["'-2' for '--max-depth <MAX_DEPTH>'"][..]),
+    ] {
+        let out = small("fresnel", &[args, &["-o", "target/command-line/negative.png"]].concat());
+        assert_refused(&out, needles);
+        assert!(!text(&out.stderr).contains("unexpected argument"));
+    }
+}
+
+#[test]
+fn options_that_change_nothing_say_so() {
+    // The model glass's numbers without the model glass are an error, not silently ignored.
+    let out = small("dispersion", &["--nd", "1.5", "--abbe", "10", "-o", "target/command-line/nd.png"]);
+    assert_refused(&out, &["--nd 1.5", "--glass abbe"]);
+    // Caustic and dispersion options on a scene they cannot change: a note each, and the same picture.
+    let out = small("bitmap_textures", &["--photons", "100000", "--wavelengths", "3", "-o", "/dev/null"]);
+    let err = text(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("note: --photons change(s) nothing here: no mirror or glass"), "{err}");
+    assert!(err.contains("note: --wavelengths change(s) nothing here: nothing in this scene is dispersive"), "{err}");
+    // Where they do change the picture, no note.
+    let out = small("photon_map", &["--photons", "1000", "-o", "/dev/null"]);
+    assert!(out.status.success() && !text(&out.stderr).contains("note:"), "{}", text(&out.stderr));
+}
+
+#[test]
+fn help_shows_each_examples_own_defaults() {
+    let help = |example: &str| {
+        let out = run_example(example, &["--help"]);
+        assert!(out.status.success());
+        text(&out.stdout)
+    };
+    let photon_map = help("photon_map");
+    assert!(!photon_map.contains("the scene's own"), "{photon_map}");
+    let scene = common::parse::<photon_map::Options>(&[]).prepare_scene().unwrap();
+    for value in [scene.photons.count, scene.photons.k, scene.max_depth] {
+        assert!(photon_map.contains(&format!("[default: {value}]")), "{value} missing: {photon_map}");
+    }
+    assert!(photon_map.contains("[default: 4]"), "its own --spp default");
+    // Where the caustic and dispersion options change nothing, their headings say so.
+    let bitmap = help("bitmap_textures");
+    assert!(bitmap.contains("Caustics (photon mapping): no effect here"), "{bitmap}");
+    assert!(bitmap.contains("Dispersion: no effect here"), "{bitmap}");
+    assert!(help("dispersion").contains("Dispersion (scenes with dispersive glass only):"));
+}
+
+#[test]
+fn an_example_can_tell_whether_spp_was_given() {
+    let cli = common::parse::<fresnel::Options>(&[]);
+    assert_eq!(cli.common.spp, None);
+    assert_eq!(cli.settings().spp, 5, "the example's default");
+    assert_eq!(common::parse::<fresnel::Options>(&["--spp", "1"]).common.spp, Some(1));
+}
+
+/// The sentence of an example's doc comment (its `//!` lines joined) that holds `phrase`.
+fn doc_sentence(example: &str, phrase: &str) -> String {
+    let source = std::fs::read_to_string(root().join("examples").join(format!("{example}.rs"))).unwrap();
+    let doc: Vec<&str> = source.lines().filter_map(|l| l.strip_prefix("//!")).map(str::trim).collect();
+    let doc = doc.join(" ");
+    let at = doc.find(phrase).unwrap_or_else(|| panic!("examples/{example}.rs does not say {phrase:?}"));
+    doc[at..].split(". ").next().unwrap().to_string()
+}
+
+#[test]
+fn fresnel_says_at_which_depth_the_sphere_goes_black() {
+    // "`--max-depth N` (... the inside of the sphere goes black ...)": check N.
+    let sentence = doc_sentence("fresnel", "`--max-depth ");
+    assert!(sentence.contains("goes black"), "{sentence}");
+    let depth: String = sentence["`--max-depth ".len()..].chars().take_while(char::is_ascii_digit).collect();
+    let brightness = |depth: &str| {
+        let frame = common::render::<fresnel::Options>(&["--width", "64", "--height", "48", "--max-depth", depth]);
+        // The middle of the sphere, which faces the camera.
+        let c = frame.get(32, 15);
+        c.to_array().iter().sum::<f32>()
+    };
+    let next = (depth.parse::<u32>().unwrap() + 1).to_string();
+    let (black, seen_through) = (brightness(&depth), brightness(&next));
+    assert!(black < 0.2 * seen_through, "at --max-depth {depth} {black}, one deeper {seen_through}");
+}
+
+#[test]
+fn photon_map_says_where_the_mirror_throws_its_patch() {
+    let sentence = doc_sentence("photon_map", "throws a bright patch onto the ");
+    let surface = sentence["throws a bright patch onto the ".len()..].split_whitespace().next().unwrap().to_string();
+    // The pixels right of the glass that the photon map brightens, and what they see.
+    let (w, h) = (96, 72);
+    let size = ["--width", "96", "--height", "72", "--spp", "1"];
+    let with = common::render::<photon_map::Options>(&size);
+    let without = common::render::<photon_map::Options>(&[&size[..], &["--photons", "0"]].concat());
+    let cli = common::parse::<photon_map::Options>(&size);
+    let scene = lecture6::cli::Example::scene(&cli.example).unwrap();
+    let camera = scene.camera.frame(w, h);
+    let (mut on_wall, mut on_floor) = (0, 0);
+    for y in 0..h {
+        for x in w / 2..w {
+            let gain = with.get(x, y).to_array().iter().sum::<f32>() - without.get(x, y).to_array().iter().sum::<f32>();
+            if gain > 0.3 {
+                let (hit, _) = scene.closest_hit(&camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5)).unwrap();
+                if (hit.ip.z - photon_map::WALL_Z).abs() < 1.0 {
+                    on_wall += 1;
+                } else if hit.ip.y.abs() < 1.0 {
+                    on_floor += 1;
+                }
+            }
+        }
+    }
+    let found = if on_wall > on_floor { "wall" } else { "floor" };
+    assert_eq!(
+        surface, found,
+        "the doc says {surface:?}; {on_wall} brightened pixels on the wall, {on_floor} on the floor"
+    );
+}
+
+#[test]
+fn reflect_v02_offers_no_homework_the_renderer_already_does() {
+    // The renderer stops rays whose weight cannot change their pixel (adaptive depth control): a homework
+    // idea about the weight must point at `--exhaustive`, which switches that off, not ask for it anew.
+    let sentence = doc_sentence("reflect_v02", "Homework ideas:");
+    let homework = std::fs::read_to_string(root().join("examples/reflect_v02.rs")).unwrap();
+    let ideas = &homework[homework.find("Homework ideas:").unwrap()..];
+    let ideas = &ideas[..ideas.find("\n\n").unwrap_or(ideas.len())];
+    assert!(!ideas.contains("weight") || ideas.contains("--exhaustive"), "{sentence}");
+    let scene = lecture6::cli::Example::scene(&common::parse::<reflect_v02::Options>(&[]).example).unwrap();
+    assert!(scene.min_ray_weight > 0.0, "the renderer cuts weak rays by default");
+}
+
+#[test]
+fn the_heat_map_scales_to_the_largest_difference_and_shows_its_scale() {
+    let a = image::RgbImage::from_pixel(40, 30, image::Rgb([100, 100, 100]));
+    let mut b = a.clone();
+    b.put_pixel(5, 5, image::Rgb([109, 100, 100]));
+    b.put_pixel(6, 5, image::Rgb([103, 100, 100]));
+    // A difference of 9 levels is white, one of 3 a third of the way up the ramp (dark red).
+    let map = heat_map(&a, &b).unwrap();
+    assert_eq!(map.get_pixel(5, 5).0, [255, 255, 255]);
+    assert_eq!(map.get_pixel(6, 5).0, [255, 0, 0]);
+    assert_eq!(map.get_pixel(0, 0).0, [0, 0, 0]);
+    let with_bar = with_colour_bar(&map, 9).unwrap();
+    assert_eq!(with_bar.width(), 40);
+    assert!(with_bar.height() > 30 + 12, "a colour bar and its caption below the map");
+    // The colour bar runs from black to white.
+    let bar_row = 31;
+    assert!(with_bar.get_pixel(0, bar_row).0.iter().all(|&v| v < 40));
+    assert!(with_bar.get_pixel(39, bar_row).0.iter().all(|&v| v > 215));
+}
+
+#[test]
+fn compare_says_whether_the_render_is_within_the_regression_tolerance() {
+    let dir = scratch("verdict");
+    let reference = root().join("expected").join("fresnel.png");
+    let exact = dir.join("exact.png");
+    let out = run_example(
+        "fresnel",
+        &["--fresnel", "exact", "-o", exact.to_str().unwrap(), "--compare", reference.to_str().unwrap()],
+    );
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    // Schlick against the exact equations: a few levels at the rim, within the tolerance.
+    let expected = image::open(&reference).unwrap().to_rgb8();
+    let actual = image::open(&exact).unwrap().to_rgb8();
+    let d: Difference = lecture6::compare::difference(&actual, &expected).unwrap();
+    let verdict = if d.within_regression_tolerance() { "; within the regression" } else { "; NOT within" };
+    assert!(stdout.contains(verdict), "{stdout}");
+    assert!(stdout.contains(&format!("max diff {} levels", d.max_diff)), "{stdout}");
+    assert!(d.max_diff > 0, "Schlick's approximation differs from the exact equations somewhere");
+}
