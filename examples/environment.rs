@@ -7,7 +7,9 @@
 //!   far brighter than white (an HDR image keeps that);
 //! - the shadows: the point light stands where the sky's sun is.
 //!
-//! Try: `--kind cubemap` (the same sky as six cube faces: the picture should not change), `--env
+//! Try: `--kind cubemap` (the same sky as six cube faces, made from the spherical image: the objects do not
+//! change, but the sky seen directly differs by a few levels at the clouds' edges, since each image samples
+//! the sky on its own grid and the background is magnified; see docs/techniques.md), `--env
 //! my_panorama.hdr` (any equirectangular image, its centre towards the camera), `--env my_skybox/` (a
 //! folder with posx, negx, posy, negy, posz, negz).
 //!

@@ -10,7 +10,7 @@
 //! other renders.
 
 use crate::camera::CameraFrame;
-use crate::render::Frame;
+use crate::render::{Frame, RenderSettings};
 use crate::rng::Rng;
 use crate::scene::{Counters, Scene, TraceContext};
 use rayon::prelude::*;
@@ -46,8 +46,9 @@ pub fn marked(frame: &Frame) -> Vec<bool> {
 
 /// The adaptive pass over a frame of single samples: four more samples in every marked pixel, which
 /// becomes the average of its five. Returns the rays traced. Deterministic: each pixel has its own random
-/// stream, keyed by the seed and the pixel.
-pub fn refine(scene: &Scene, camera: &CameraFrame, seed: u64, frame: &mut Frame) -> Counters {
+/// stream, keyed by the seed and the pixel. The samples are clamped as `settings` say
+/// ([`RenderSettings::sample`]).
+pub fn refine(scene: &Scene, camera: &CameraFrame, settings: &RenderSettings, frame: &mut Frame) -> Counters {
     let marks = marked(frame);
     let w = frame.width as usize;
     frame
@@ -58,11 +59,11 @@ pub fn refine(scene: &Scene, camera: &CameraFrame, seed: u64, frame: &mut Frame)
         .map(|(y, (row, marks))| {
             let mut counters = Counters::default();
             for (x, pixel) in row.iter_mut().enumerate().filter(|(x, _)| marks[*x]) {
-                let rng = Rng::for_keys(&[seed, x as u64, y as u64, AA_KEY]);
+                let rng = Rng::for_keys(&[settings.seed, x as u64, y as u64, AA_KEY]);
                 let mut ctx = TraceContext::new(scene, rng);
                 let mut sum = *pixel;
                 for (dx, dy) in EXTRA_SAMPLES {
-                    sum += ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy)).sanitized();
+                    sum += settings.sample(ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy)));
                 }
                 *pixel = sum / 5.0;
                 counters.add(&ctx.counters);

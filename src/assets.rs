@@ -7,7 +7,7 @@
 
 mod sky;
 
-pub use sky::{sky_equirect, sky_face, sun_direction};
+pub use sky::{SkyFunction, sky_equirect, sky_face, sun_direction};
 
 use crate::rng::mix64;
 use image::{Rgb, Rgb32FImage, RgbImage};

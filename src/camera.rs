@@ -6,6 +6,10 @@
 //!   positive turns to the left, towards -X).
 //! - `fov` is the angle, in degrees, across the image's **diagonal** (the course measures it from the centre
 //!   to a corner); `aspect` is width / height and is set from the image size when a frame begins.
+//!
+//! Deviation: [`FovAxis`] lets `fov` be measured across the height or the width instead (`--fov-axis`). With
+//! the course's diagonal a wider picture shows less at the top and bottom (1920 x 1080 crops the top of the
+//! fresnel sphere that 640 x 480 shows); with `vertical` the vertical extent stays whatever the aspect ratio.
 
 use crate::math::Vector;
 use crate::ray::Ray;
@@ -20,15 +24,48 @@ pub struct Camera {
     pub pitch: f32,
     /// Degrees; positive tilts the picture clockwise.
     pub roll: f32,
-    /// Degrees, across the diagonal of the image.
+    /// Degrees, across the diagonal of the image (or the axis `fov_axis` names).
     pub fov: f32,
+    /// Which extent of the image `fov` spans: the course's diagonal unless a scene or `--fov-axis` says otherwise.
+    pub fov_axis: FovAxis,
     /// Width / height.
     pub aspect: f32,
 }
 
 impl Default for Camera {
     fn default() -> Camera {
-        Camera { position: Vector::ZERO, yaw: 0.0, pitch: 0.0, roll: 0.0, fov: 90.0, aspect: 4.0 / 3.0 }
+        Camera {
+            position: Vector::ZERO,
+            yaw: 0.0,
+            pitch: 0.0,
+            roll: 0.0,
+            fov: 90.0,
+            fov_axis: FovAxis::Diagonal,
+            aspect: 4.0 / 3.0,
+        }
+    }
+}
+
+/// The extent of the image across which the camera's field of view is measured.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum FovAxis {
+    /// Corner to corner, as the course measures it: a change of aspect ratio changes both extents.
+    #[default]
+    Diagonal,
+    /// Top to bottom: the vertical extent stays when the aspect ratio changes (most renderers' choice).
+    Vertical,
+    /// Left to right: the horizontal extent stays when the aspect ratio changes.
+    Horizontal,
+}
+
+impl FovAxis {
+    /// The length of this extent on an image plane `aspect` wide and 1 high.
+    fn length(self, aspect: f32) -> f32 {
+        match self {
+            FovAxis::Diagonal => aspect.hypot(1.0),
+            FovAxis::Vertical => 1.0,
+            FovAxis::Horizontal => aspect,
+        }
     }
 }
 
@@ -65,11 +102,21 @@ impl Camera {
         Camera { position: from, yaw, pitch, fov, ..Camera::default() }
     }
 
+    /// The same camera with its field of view measured across `axis`, converted so that a picture of aspect
+    /// ratio `aspect` (width / height) stays exactly as it was; other aspect ratios then keep that extent.
+    /// `--fov-axis vertical` converts at the default 640 x 480, so that a scene framed there keeps its
+    /// height at 1920 x 1080.
+    pub fn with_fov_axis(self, axis: FovAxis, aspect: f32) -> Camera {
+        let half = (self.fov.to_radians() * 0.5).tan() * axis.length(aspect) / self.fov_axis.length(aspect);
+        Camera { fov: (half.atan() * 2.0).to_degrees(), fov_axis: axis, ..self }
+    }
+
     /// Prepares the camera for a `width` x `height` image (sets `aspect`).
     pub fn frame(&self, width: u32, height: u32) -> CameraFrame {
         let aspect = width as f32 / height as f32;
-        // The corner (-aspect, 1, 1) of the unscaled image plane must lie fov/2 from the axis.
-        let scaling = (self.fov.to_radians() * 0.5).tan() / aspect.hypot(1.0);
+        // On the unscaled image plane (from -aspect to aspect across, -1 to 1 up, at distance 1) the end of
+        // the measured extent must lie fov/2 from the axis: the corner (-aspect, 1) for the diagonal.
+        let scaling = (self.fov.to_radians() * 0.5).tan() / self.fov_axis.length(aspect);
         let (x, y) = (-aspect * scaling, scaling);
         let r = rotation(self.yaw, self.pitch, self.roll);
         let up_left = r * Vector::new(x, y, 1.0);

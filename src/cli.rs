@@ -5,16 +5,20 @@
 //! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
 //! unknown options, whose message is put on one line too), never a panic.
 
+use crate::camera::FovAxis;
 use crate::compare::{self, Reference};
 use crate::debug_view::{DebugView, write_view};
 use crate::environment::{self, CubemapLayout};
 use crate::error::{Error, Result};
 use crate::photon_map::{PhotonArgs, PhotonMap};
 use crate::ray_tree::{PixelPos, TraceFormat, trace_pixel};
-use crate::render::{Frame, MAX_SPP, MAX_THREADS, RenderSettings, RenderStats, render, save_atomically, thread_pool};
+use crate::render::{
+    Frame, MAX_SPP, MAX_THREADS, RenderSettings, RenderStats, keeps_linear_light, render, save_atomically, thread_pool,
+};
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::side_by_side::side_by_side;
 use crate::spectral::{MAX_WAVELENGTHS, SpectralMode, SpectralPlan};
+use crate::tone_mapping::{Film, ToneMap};
 use clap::builder::RangedI64ValueParser;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -26,6 +30,8 @@ const COMMON: &str = "Common options";
 
 /// The help heading of the options that change only scenes with dispersive materials.
 const DISPERSION: &str = "Dispersion (scenes with dispersive glass only)";
+/// The heading of the options that change how the picture is exposed and framed.
+const PICTURE: &str = "Exposure and framing";
 
 /// What the help of an option whose default the scene sets says until the scene is known (see
 /// [`help_command`], which puts the example's own default there).
@@ -130,6 +136,23 @@ pub struct CommonArgs {
     /// moves (needs `--features viewer`).
     #[arg(long, help_heading = COMMON)]
     pub window: bool,
+    /// Exposure in stops: the picture is multiplied by 2^EV before it is written (-1 halves the light). For
+    /// HDR skies that come out white.
+    #[arg(long, value_name = "EV", default_value_t = 0.0, help_heading = PICTURE)]
+    pub exposure: f32,
+    /// How light above 1 fits a PNG: clamp (the course's: white above 1) or reinhard (compresses highlights,
+    /// darker overall). EXR and HDR output keep linear light.
+    #[arg(long, value_enum, default_value_t = ToneMap::Clamp, help_heading = PICTURE)]
+    pub tonemap: ToneMap,
+    /// Scale down every sample brighter than MAX in any channel to MAX: tames fireflies (a glossy sphere
+    /// under a bright sun), at the price of bias: the clamped light is lost.
+    #[arg(long, value_name = "MAX", help_heading = PICTURE)]
+    pub clamp_sample: Option<f32>,
+    /// Which extent of the picture stays when the aspect ratio changes: diagonal (the course's: a wider
+    /// picture shows less at the top), vertical or horizontal. The picture at 640 x 480 is the same for all
+    /// three. [default: the scene's own]
+    #[arg(long, value_enum, help_heading = PICTURE)]
+    pub fov_axis: Option<FovAxis>,
 }
 
 /// An example: its own options (a `clap::Args` struct) and how they turn into a scene. The options every
@@ -230,6 +253,7 @@ impl<E: Example> Cli<E> {
             wavelengths: c.wavelengths.unwrap_or(RenderSettings::default().wavelengths),
             spectral: c.spectral.unwrap_or_default(),
             adaptive_aa: c.adaptive_aa,
+            max_sample: c.clamp_sample,
         }
     }
 
@@ -262,6 +286,10 @@ impl<E: Example> Cli<E> {
         if common.exhaustive {
             scene.min_ray_weight = 0.0;
         }
+        if let Some(axis) = common.fov_axis {
+            let default = RenderSettings::default();
+            scene.camera = scene.camera.with_fov_axis(axis, default.width as f32 / default.height as f32);
+        }
         scene.check()?;
         scene.relative_to_camera();
         common.photons.apply(&mut scene.photons);
@@ -292,6 +320,7 @@ impl<E: Example> Cli<E> {
     ) -> Result<(Frame, RenderStats, RenderSettings)> {
         let mut settings = self.settings();
         settings.check()?;
+        self.film().check()?;
         let mut scene = self.scene_and_settings(&mut settings)?;
         settings.check()?;
         check(&scene, &settings)?;
@@ -316,8 +345,9 @@ impl<E: Example> Cli<E> {
         .collect();
         if !photon_options.is_empty() && !scene.casts_caustics() {
             notes.push(format!(
-                "{} change(s) nothing here: no mirror or glass in this scene casts caustics from a light",
-                photon_options.join(", ")
+                "{} {} nothing here: no mirror or glass in this scene casts caustics from a light",
+                photon_options.join(", "),
+                verb(&photon_options)
             ));
         } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
             notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());
@@ -329,8 +359,9 @@ impl<E: Example> Cli<E> {
                 .collect();
         if !dispersion_options.is_empty() && !scene.is_dispersive() {
             notes.push(format!(
-                "{} change(s) nothing here: nothing in this scene is dispersive, so it is traced once in white light",
-                dispersion_options.join(", ")
+                "{} {} nothing here: nothing in this scene is dispersive, so it is traced once in white light",
+                dispersion_options.join(", "),
+                verb(&dispersion_options)
             ));
         } else if c.wavelengths.is_some() && c.spectral == Some(SpectralMode::Sampled) {
             notes.push("--wavelengths changes nothing with --spectral sampled: every sample has its own band".into());
@@ -338,10 +369,20 @@ impl<E: Example> Cli<E> {
         notes
     }
 
+    /// What happens to the rendered light before it is written: `--exposure` and `--tonemap`.
+    pub fn film(&self) -> Film {
+        Film { exposure: self.common.exposure, tone_map: self.common.tonemap }
+    }
+
     /// Where the picture of the example called `name` goes.
     pub fn output_path(&self, name: &str) -> PathBuf {
         self.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}.png")))
     }
+}
+
+/// "changes" after one option's name, "change" after several.
+fn verb(options: &[&str]) -> &'static str {
+    if options.len() == 1 { "changes" } else { "change" }
 }
 
 /// The name of the running example: its binary's file name (`fresnel`, or `hw1` for a student's copy).
@@ -443,7 +484,8 @@ fn help_command<E: Example>(name: &str) -> clap::Command {
         .mut_arg("max_depth", with_default(scene.max_depth.to_string()))
         .mut_arg("photons", with_default(photons.count.to_string()))
         .mut_arg("k", with_default(photons.k.to_string()))
-        .mut_arg("radius", with_default(radius));
+        .mut_arg("radius", with_default(radius))
+        .mut_arg("fov_axis", with_default(format!("{:?}", scene.camera.fov_axis).to_lowercase()));
     for id in ["photons", "k", "radius", "show_photons"] {
         command = command.mut_arg(id, |arg| arg.help_heading(caustics));
     }
@@ -528,6 +570,8 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         }
         Ok(())
     })?;
+    // The picture as written: exposed, and tone mapped for an 8-bit file; the comparison sees the same.
+    let frame = args.film().develop(&frame, keeps_linear_light(&output));
     frame.save(&output)?;
     if !args.common.quiet {
         let rays = stats.counters.total();

@@ -175,15 +175,13 @@ pub enum Reference {
 impl Reference {
     /// Reads a reference picture: `.exr` and `.hdr` as linear floats, anything else as 8-bit sRGB.
     pub fn load(path: &Path) -> Result<Reference> {
-        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
         let image = image::open(path).map_err(|e| Error::file("cannot read reference image", path, e))?;
-        Ok(match ext.as_deref() {
-            Some("exr" | "hdr") => {
-                let img = image.into_rgb32f();
-                let pixels = img.pixels().map(|p| crate::color::Color::new(p[0], p[1], p[2])).collect();
-                Reference::Linear(Frame { width: img.width(), height: img.height(), pixels })
-            }
-            _ => Reference::Srgb8(image.into_rgb8()),
+        Ok(if crate::render::keeps_linear_light(path) {
+            let img = image.into_rgb32f();
+            let pixels = img.pixels().map(|p| crate::color::Color::new(p[0], p[1], p[2])).collect();
+            Reference::Linear(Frame { width: img.width(), height: img.height(), pixels })
+        } else {
+            Reference::Srgb8(image.into_rgb8())
         })
     }
 

@@ -16,7 +16,7 @@
 //! | [`debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
 //! | [`side_by_side`] | two renders and their difference in one captioned picture (`--side-by-side`) |
 //! | [`ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
-//! | [`render`] | the parallel, deterministic renderer |
+//! | [`tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
 //! | [`progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
@@ -60,6 +60,7 @@ pub mod spectral;
 pub mod study;
 pub mod teapot;
 pub mod texture;
+pub mod tone_mapping;
 pub mod transform;
 #[cfg(feature = "viewer")]
 pub mod viewer;
@@ -72,7 +73,7 @@ pub use math::Vector;
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
     pub use crate::bitmap::{Bitmap, Filter, Wrap};
-    pub use crate::camera::Camera;
+    pub use crate::camera::{Camera, FovAxis};
     pub use crate::cli::{Example, run};
     pub use crate::color::Color;
     pub use crate::environment::{

@@ -67,6 +67,10 @@ pub struct RenderSettings {
     /// The course's adaptive anti-aliasing after the single sample of each pixel (see
     /// [`crate::adaptive_aa`]); needs `spp` 1.
     pub adaptive_aa: bool,
+    /// The largest a sample's brightest channel may be (`--clamp-sample`); brighter samples are scaled down
+    /// to it, hue kept. It tames fireflies (a glossy surface that now and then reflects a small, very bright
+    /// sun) at the price of bias: the clamped light is lost. `None`, the default, keeps every sample as is.
+    pub max_sample: Option<f32>,
 }
 
 impl Default for RenderSettings {
@@ -81,11 +85,22 @@ impl Default for RenderSettings {
             wavelengths: 8,
             spectral: SpectralMode::Passes,
             adaptive_aa: false,
+            max_sample: None,
         }
     }
 }
 
 impl RenderSettings {
+    /// A traced sample as it goes into a pixel's average: NaN and negative channels zeroed (see
+    /// [`Color::sanitized`]) and, with [`RenderSettings::max_sample`], scaled down to that brightness.
+    pub fn sample(&self, c: Color) -> Color {
+        let c = c.sanitized();
+        match self.max_sample {
+            Some(max) if c.max_channel() > max => c * (max / c.max_channel()),
+            _ => c,
+        }
+    }
+
     /// Rejects sizes and counts that make no sense or would exhaust memory.
     pub fn check(&self) -> Result<()> {
         if self.width == 0 || self.height == 0 {
@@ -114,6 +129,11 @@ impl RenderSettings {
                 self.spp,
                 "adaptive anti-aliasing starts from one sample per pixel",
             ));
+        }
+        if let Some(max) = self.max_sample
+            && !(max.is_finite() && max > 0.0)
+        {
+            return Err(Error::parameter("--clamp-sample", max, "must be a positive number"));
         }
         if let Some(threads) = self.threads
             && !(1..=MAX_THREADS).contains(&threads)
@@ -172,6 +192,13 @@ impl Frame {
             _ => self.to_rgb32f().save_with_format(tmp, format),
         })
     }
+}
+
+/// True for the files that keep linear light, floats above 1 included (`.exr`, `.hdr`); PNG and the other
+/// 8-bit formats hold sRGB-encoded values from 0 to 1.
+pub fn keeps_linear_light(path: &Path) -> bool {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    matches!(ext.as_deref(), Some("exr" | "hdr"))
 }
 
 /// Writes a file through `write`, which is given a temporary path beside `path`; the temporary file is
@@ -305,7 +332,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     });
     bar.finish_and_clear();
     if settings.adaptive_aa {
-        counters.add(&pool.install(|| crate::adaptive_aa::refine(scene, &camera, settings.seed, &mut frame)));
+        counters.add(&pool.install(|| crate::adaptive_aa::refine(scene, &camera, settings, &mut frame)));
     }
     let stats = RenderStats {
         elapsed: start.elapsed(),
@@ -418,7 +445,7 @@ impl<'a> PixelTracer<'a> {
         for s in 0..self.settings.spp {
             let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
             let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-            sum += ctx.raytrace(&ray).sanitized();
+            sum += self.settings.sample(ctx.raytrace(&ray));
         }
         self.counters.add(&ctx.counters);
         self.recorder = ctx.recorder.take();
@@ -450,7 +477,7 @@ impl<'a> PixelTracer<'a> {
                     let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
                     let wavelength = Some(band.at(ctx.rng.next_f32()));
                     let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-                    add_weighted(&mut sum, &band, ctx.raytrace(&ray).sanitized());
+                    add_weighted(&mut sum, &band, self.settings.sample(ctx.raytrace(&ray)));
                 }
                 self.counters.add(&ctx.counters);
                 self.recorder = ctx.recorder.take();

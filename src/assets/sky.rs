@@ -60,6 +60,18 @@ fn sky_radiance(d: Vector) -> [f32; 3] {
     [0, 1, 2].map(|i| c[i] + glow * tint[i])
 }
 
+/// The sky as the function that both `sky.hdr` and `sky_cubemap/` sample, without texels: the truth that
+/// the two kinds of environment map are measured against (slower to look up than either image).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct SkyFunction;
+
+impl Environment for SkyFunction {
+    fn get(&self, dir: Vector) -> Color {
+        let [r, g, b] = sky_radiance(dir);
+        Color::new(r, g, b)
+    }
+}
+
 /// The equirectangular sky, `sky.hdr`: the radiance at the centre of each texel, averaged over 2 x 2
 /// samples so the sun's edge and the horizon are smooth.
 pub fn sky_equirect() -> Rgb32FImage {

@@ -39,7 +39,7 @@
 pub mod parse;
 pub mod values;
 
-use crate::camera::Camera;
+use crate::camera::{Camera, FovAxis};
 use crate::color::{Color, linear_to_srgb, srgb_to_linear};
 use crate::environment::{CubemapEnvironment, CubemapLayout, Environment};
 use crate::error::{Error, Result};
@@ -430,6 +430,7 @@ impl<'a> Loader<'a> {
             pitch: pitch as f32,
             roll: roll as f32,
             fov: fov as f32,
+            fov_axis: FovAxis::Diagonal,
             aspect: aspect as f32,
         };
         Ok((camera, aspect))

@@ -2,7 +2,7 @@
 //! turn it, and dragging the mouse over the picture looks around. The camera stays the course's
 //! [`Camera`] (position, yaw, pitch, roll, fov), so where the window ends up can be copied into a scene.
 
-use crate::camera::{Camera, rotation};
+use crate::camera::{Camera, FovAxis, rotation};
 use crate::math::Vector;
 
 /// How the camera moves in one step: along its own axes (each in -1..=1, times the distance of the step)
@@ -43,9 +43,13 @@ pub fn moved(camera: &Camera, motion: &Motion, distance: f32) -> Camera {
 /// The camera as the Rust that builds it, to paste into an example's scene.
 pub fn as_code(camera: &Camera) -> String {
     let p = camera.position;
+    let axis = match camera.fov_axis {
+        FovAxis::Diagonal => String::new(),
+        axis => format!("fov_axis: FovAxis::{axis:?}, "),
+    };
     format!(
         "Camera {{ position: Vector::new({:.2}, {:.2}, {:.2}), yaw: {:.1}, pitch: {:.1}, roll: {:.1}, fov: {:.1}, \
-         ..Camera::default() }}",
+         {axis}..Camera::default() }}",
         p.x, p.y, p.z, camera.yaw, camera.pitch, camera.roll, camera.fov
     )
 }
