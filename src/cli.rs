@@ -334,34 +334,23 @@ impl<E: Example> Cli<E> {
     pub fn options_without_effect(&self, scene: &Scene) -> Vec<String> {
         let (c, p) = (&self.common, &self.common.photons);
         let mut notes = Vec::new();
-        let photon_options: Vec<&str> = [
+        let photon_options = given(&[
             ("--photons", p.photons.is_some()),
             ("--k", p.k.is_some()),
             ("--radius", p.radius.is_some()),
             ("--show-photons", p.show_photons),
-        ]
-        .into_iter()
-        .filter_map(|(name, given)| given.then_some(name))
-        .collect();
+        ]);
         if !photon_options.is_empty() && !scene.casts_caustics() {
-            notes.push(format!(
-                "{} {} nothing here: no mirror or glass in this scene casts caustics from a light",
-                photon_options.join(", "),
-                verb(&photon_options)
-            ));
+            notes.push(no_effect(&photon_options, "no mirror or glass in this scene casts caustics from a light"));
         } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
             notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());
         }
-        let dispersion_options: Vec<&str> =
-            [("--wavelengths", c.wavelengths.is_some()), ("--spectral", c.spectral.is_some())]
-                .into_iter()
-                .filter_map(|(name, given)| given.then_some(name))
-                .collect();
+        let dispersion_options =
+            given(&[("--wavelengths", c.wavelengths.is_some()), ("--spectral", c.spectral.is_some())]);
         if !dispersion_options.is_empty() && !scene.is_dispersive() {
-            notes.push(format!(
-                "{} {} nothing here: nothing in this scene is dispersive, so it is traced once in white light",
-                dispersion_options.join(", "),
-                verb(&dispersion_options)
+            notes.push(no_effect(
+                &dispersion_options,
+                "nothing in this scene is dispersive, so it is traced once in white light",
             ));
         } else if c.wavelengths.is_some() && c.spectral == Some(SpectralMode::Sampled) {
             notes.push("--wavelengths changes nothing with --spectral sampled: every sample has its own band".into());
@@ -380,9 +369,15 @@ impl<E: Example> Cli<E> {
     }
 }
 
-/// "changes" after one option's name, "change" after several.
-fn verb(options: &[&str]) -> &'static str {
-    if options.len() == 1 { "changes" } else { "change" }
+/// The names of the options that were given, from (name, given) pairs.
+fn given<'a>(options: &[(&'a str, bool)]) -> Vec<&'a str> {
+    options.iter().filter(|(_, given)| *given).map(|(name, _)| *name).collect()
+}
+
+/// The note that `options` change nothing, and why.
+fn no_effect(options: &[&str], why: &str) -> String {
+    let verb = if options.len() == 1 { "changes" } else { "change" };
+    format!("{} {verb} nothing here: {why}", options.join(", "))
 }
 
 /// The name of the running example: its binary's file name (`fresnel`, or `hw1` for a student's copy).
