@@ -56,7 +56,7 @@ fn the_fresnel_scene_file_renders_the_fresnel_example() {
     let (frame, _) = render(&file.scene, &settings).unwrap();
     let expected = image::open(common::root().join("expected/fresnel.png")).unwrap().to_rgb8();
     let d = difference(&frame.to_rgb8(), &expected).unwrap();
-    assert!(common::within_regression_tolerance(&d), "{d}");
+    assert!(d.within_regression_tolerance(), "{d}");
 }
 
 #[test]
@@ -66,7 +66,7 @@ fn the_scene_file_example_renders_its_expected_picture_and_refuses_bad_files_in_
     let frame = common::render::<scene_file_example::Options>(&["--spp", "5"]);
     let expected = image::open(common::root().join("expected/fresnel.png")).unwrap().to_rgb8();
     let d = difference(&frame.to_rgb8(), &expected).unwrap();
-    assert!(common::within_regression_tolerance(&d), "{d}");
+    assert!(d.within_regression_tolerance(), "{d}");
     // The file's frame size unless an option overrides it.
     let small = common::render::<scene_file_example::Options>(&["--width", "64", "--height", "48"]);
     assert_eq!((small.width, small.height), (64, 48));

@@ -9,7 +9,7 @@ use lecture6::cli::{Cli, Example};
 #[macro_use]
 pub mod examples;
 
-use lecture6::compare::{Difference, difference, heat_map};
+use lecture6::compare::{difference, heat_map};
 use lecture6::render::Frame;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -29,14 +29,6 @@ pub fn render<E: Example>(args: &[&str]) -> Frame {
     parse::<E>(args).render().unwrap_or_else(|e| panic!("{args:?}: {e}")).0
 }
 
-/// The regression rule for the examples' pictures at 640 x 480: at most one pixel in 5000 may differ by
-/// more than `Difference::LARGE` (8) levels in any channel, and the RMSE over all channels may be at most
-/// 1 level. A one-pixel-wide change along an object's silhouette moves hundreds of pixels by far more than
-/// 8 levels and fails; the last-bit differences of `sin`/`pow` between x86-64 C libraries do not.
-pub fn within_regression_tolerance(d: &Difference) -> bool {
-    d.within(d.pixels / 5000, 1.0)
-}
-
 /// Renders an example with its default options and compares it with `expected/<name>.png`. On a mismatch the
 /// actual picture and a heat map go to `target/regression/`. With `UPDATE_EXPECTED=1` the expected picture
 /// is rewritten instead.
@@ -52,7 +44,7 @@ pub fn check_expected<E: Example>(name: &str) {
         .unwrap_or_else(|e| panic!("cannot read {}: {e} (UPDATE_EXPECTED=1 creates it)", expected_path.display()))
         .to_rgb8();
     let d = difference(&actual, &expected).expect("same size");
-    if !within_regression_tolerance(&d) {
+    if !d.within_regression_tolerance() {
         let dir = root().join("target").join("regression");
         std::fs::create_dir_all(&dir).expect("create target/regression");
         actual.save(dir.join(format!("{name}.png"))).expect("write actual");
