@@ -31,7 +31,8 @@ pub const TILE_SIZE: u32 = 32;
 /// The coarse pass has 1/COARSE_SCALE of the picture's resolution in each direction.
 pub const COARSE_SCALE: u32 = 4;
 
-/// A rectangle of pixels of the picture and, once drawn, their colours (row by row).
+/// A rectangle of pixels of the picture and, once drawn, their colours (row by row) and the rays traced
+/// for them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Tile {
     pub x: u32,
@@ -39,6 +40,7 @@ pub struct Tile {
     pub width: u32,
     pub height: u32,
     pub pixels: Vec<Color>,
+    pub rays: u64,
 }
 
 /// What a progressive render shows as it goes.
@@ -68,6 +70,7 @@ pub fn tiles(width: u32, height: u32) -> Vec<Tile> {
             width: TILE_SIZE.min(width - x),
             height: TILE_SIZE.min(height - y),
             pixels: Vec::new(),
+            rays: 0,
         })
         .collect();
     // Twice the distance from the tile's centre to the picture's, in whole pixels (so the sort is exact).
@@ -168,7 +171,9 @@ pub fn render_progressive(
             let Some(tile) = tiles.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
             let mut tile = Tile { pixels: vec![Color::BLACK; (tile.width * tile.height) as usize], ..tile.clone() };
             let (xs, ys) = (tile.x..tile.x + tile.width, tile.y..tile.y + tile.height);
-            rays.add(&render_rect(scene, settings, &plan, xs, ys, &mut tile.pixels));
+            let tile_rays = render_rect(scene, settings, &plan, xs, ys, &mut tile.pixels);
+            tile.rays = tile_rays.total();
+            rays.add(&tile_rays);
             on_update(Update::Tile(&tile));
             let mut frame = frame.lock().expect("no worker panics holding the frame");
             for (row, colors) in tile.pixels.chunks(tile.width as usize).enumerate() {

@@ -111,6 +111,7 @@ impl Shown {
             self.rgb[(y * w + x) * 3..][..3].copy_from_slice(&to_srgb8(c));
         }
         self.tiles_done += 1;
+        self.rays += tile.rays;
         self.dirty = true;
     }
 }
@@ -119,7 +120,8 @@ impl Shown {
 pub struct Worker {
     jobs: Sender<Job>,
     pub shown: Arc<Mutex<Shown>>,
-    current: Option<Arc<AtomicBool>>,
+    /// The cancel flag of the last job sent, and whether it is a moving preview.
+    current: Option<(Arc<AtomicBool>, bool)>,
 }
 
 impl Worker {
@@ -133,9 +135,14 @@ impl Worker {
         Ok(Worker { jobs, shown, current: None })
     }
 
-    /// Cancels the job in flight and starts `job`.
+    /// Cancels the job in flight and starts `job`; but a preview of the moving camera lets the preview in
+    /// flight finish: the camera moves at every redraw of the window, faster than a preview is drawn, so
+    /// cancelling each for the next would show none. The render thread then draws the latest.
     pub fn submit(&mut self, job: Job) {
-        if let Some(cancel) = self.current.replace(job.cancel.clone()) {
+        let preview = job.preview.is_some();
+        if let Some((cancel, was_preview)) = self.current.replace((job.cancel.clone(), preview))
+            && !(preview && was_preview)
+        {
             cancel.store(true, Ordering::Relaxed);
         }
         // The thread ends only with the window.
