@@ -232,6 +232,10 @@ impl<E: Example> Viewer<E> {
                 secs,
                 shown.rays as f64 * 1e-6 / secs.max(1e-9)
             );
+            if self.moving_since.is_some() {
+                let recent = shown.previews.iter().filter(|t| t.elapsed() < Duration::from_secs(1)).count();
+                status += &format!(", moving: {recent} frames in the last second");
+            }
             if let Some(e) = &shown.error {
                 status = format!("error: {e}");
             }

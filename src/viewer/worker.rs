@@ -8,6 +8,7 @@ use crate::error::Result;
 use crate::progressive::{Outcome, Update, quick_frame, render_progressive};
 use crate::render::{Frame, RenderSettings, RenderStats, thread_pool};
 use crate::scene::Scene;
+use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::sync::{Arc, Mutex};
@@ -55,6 +56,8 @@ pub struct Shown {
     pub scene_camera: Option<Camera>,
     /// Building or rendering failed: the message.
     pub error: Option<String>,
+    /// When the moving camera's pictures of the last second were shown: their count is the frame rate.
+    pub previews: VecDeque<Instant>,
 }
 
 impl Shown {
@@ -74,6 +77,7 @@ impl Shown {
             scene: None,
             scene_camera: None,
             error: None,
+            previews: VecDeque::new(),
         }
     }
 
@@ -190,6 +194,9 @@ fn run_job(job: Job, scene: &mut Option<Arc<Scene>>, shown: &Mutex<Shown>, repai
         if let Some((frame, counters)) = quick_frame(&scene, &preview, &job.cancel)? {
             let mut shown = lock();
             shown.paint_stretched(&frame);
+            let now = Instant::now();
+            shown.previews.retain(|t| now.duration_since(*t) < Duration::from_secs(1));
+            shown.previews.push_back(now);
             (shown.spp, shown.rays, shown.elapsed) = (1, counters.total(), shown.started.elapsed());
         }
         return Ok(());
