@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::examples::{fresnel, glossy};
+use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;
 use lecture6::camera::Camera;
 use lecture6::cli::Cli;
@@ -138,13 +138,13 @@ fn finished(worker: &Worker) -> Frame {
     }
 }
 
-fn job(cli: &Cli<fresnel::Options>, camera: Option<Camera>, rebuild: bool) -> Job {
+fn job<E: Example>(cli: &Cli<E>, camera: Option<Camera>, rebuild: bool) -> Job {
     let build = cli.clone();
     Job {
-        rebuild: rebuild.then(|| Box::new(move || build.prepare_scene()) as _),
+        rebuild: rebuild.then(|| Box::new(move |settings: &mut _| build.prepare_scene_and_settings(settings)) as _),
         camera,
         settings: cli.settings(),
-        preview: None,
+        preview: false,
         cancel: Arc::new(AtomicBool::new(false)),
     }
 }
@@ -173,4 +173,22 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     let mut scene = second.prepare_scene().unwrap();
     scene.camera = camera;
     assert!(moved == lecture6::render::render(&scene, &second.settings()).unwrap().0);
+}
+
+#[test]
+fn the_render_thread_takes_the_frame_size_a_scene_file_sets() {
+    // The fresnel scene file at its own small size, from a folder as deep as its own (its textures are
+    // named relative to it).
+    let text = std::fs::read_to_string(common::root().join("examples/data/fresnel.qdmg")).unwrap();
+    let small = format!("{text}\nGlobalSettings {{\n frameWidth 40\n frameHeight 30\n}}\n");
+    let path = common::temp_file("viewer-tests", "small.qdmg", &small);
+    // No --spp: the file's own anti-aliasing.
+    let cli: Cli<scene_file::Options> = common::parse(&[path.to_str().unwrap(), "--quiet"]);
+    let mut worker = Worker::start(Some(2), || {}).unwrap();
+    worker.submit(job(&cli, None, true));
+    let frame = finished(&worker);
+    assert_eq!((frame.width, frame.height), (40, 30));
+    assert!(frame == cli.render().unwrap().0, "the picture the command line gives");
+    let settings = worker.shown.lock().unwrap().settings.unwrap();
+    assert!((settings.width, settings.height) == (40, 30) && settings.adaptive_aa, "{settings:?}");
 }

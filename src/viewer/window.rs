@@ -13,7 +13,6 @@ use crate::camera::Camera;
 use crate::cli::{Cli, Example};
 use crate::compare::{self, Reference};
 use crate::error::Result;
-use crate::progressive::preview_settings;
 use crate::ray_tree::{self, PixelPos, TraceFormat};
 use crate::render::{RenderSettings, render_pixel, thread_pool};
 use eframe::egui;
@@ -102,10 +101,10 @@ impl<E: Example> Viewer<E> {
         let settings = self.settings();
         self.heat_map = None;
         self.worker.submit(Job {
-            rebuild: rebuild.then(|| Box::new(move || cli.prepare_scene()) as _),
+            rebuild: rebuild.then(|| Box::new(move |settings: &mut _| cli.prepare_scene_and_settings(settings)) as _),
             camera: self.camera,
             settings,
-            preview: preview.then(|| preview_settings(&settings)),
+            preview,
             cancel: Arc::new(AtomicBool::new(false)),
         });
     }
@@ -302,14 +301,13 @@ impl<E: Example> Viewer<E> {
     /// options' full quality, from the camera of the picture shown).
     fn inspect(&mut self, x: u32, y: u32) {
         let shown = self.worker.shown.lock().expect("the render thread never panics holding the picture");
-        let Some(scene) = shown.scene.clone() else { return };
+        let (Some(scene), Some(settings)) = (shown.scene.clone(), shown.settings) else { return };
         if x >= shown.width || y >= shown.height {
             return;
         }
         let i = (y as usize * shown.width as usize + x as usize) * 3;
         let rgb = [shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]];
         drop(shown);
-        let settings = self.settings();
         // On a pool's thread: a deep ray tree needs its stack.
         let traced = thread_pool(Some(1)).and_then(|pool| pool.install(|| render_pixel(&scene, &settings, x, y, true)));
         let (sees, tree) = match traced {
@@ -376,9 +374,9 @@ impl<E: Example> Viewer<E> {
             && self.heat_map.is_none()
             && let Some(pos) = response.interact_pointer_pos()
         {
+            // The texture is the picture, pixel for pixel.
             let p = (pos - response.rect.min) / scale;
-            let size = self.cli.settings();
-            let (w, h) = (size.width, size.height);
+            let (w, h) = (size.x as u32, size.y as u32);
             let (x, y) = ((p.x.max(0.0) as u32).min(w - 1), (p.y.max(0.0) as u32).min(h - 1));
             self.inspect(x, y);
         }
