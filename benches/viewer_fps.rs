@@ -35,9 +35,10 @@ fn camera_at(start: &Camera, i: u32) -> Camera {
 
 fn measure<E: Example>(name: &str, frames: u32, threads: usize) {
     let cli: Cli<E> = Cli::parse_args(name, ["--quiet", "--threads", &threads.to_string()]).expect("valid arguments");
-    let settings = preview_settings(&cli.settings());
+    let mut full = cli.settings();
+    let base = cli.prepare_scene_and_settings(&mut full).expect("the example builds");
+    let settings = preview_settings(&full);
     let pool = thread_pool(Some(threads)).expect("a thread pool");
-    let base = cli.prepare_scene().expect("the example builds");
     let cancel = AtomicBool::new(false);
     let (start, cpu_start) = (Instant::now(), cpu_time());
     let mut rays = 0;

@@ -5,7 +5,9 @@
 //! A progressive render is a fast coarse pass (one sample through each pixel's centre at a quarter of the
 //! resolution in each direction), then the full picture in square tiles, nearest the centre of the image
 //! first, at the quality the settings ask for. Every pixel's random stream depends only on (seed, x, y), so
-//! the tiles, in whatever order and on whatever thread, add up to exactly the picture [`render`] gives.
+//! the tiles, in whatever order and on whatever thread, add up to exactly the picture [`render`] gives. The
+//! course's adaptive anti-aliasing, which compares each pixel with its neighbours, runs once the last tile
+//! is drawn, as it does after [`render`]'s rows.
 //!
 //! A render can be cancelled: it checks a flag before each row of the coarse pass and before each tile, so
 //! once the flag is set every worker finishes at most the tile it is drawing and stops.
@@ -16,7 +18,7 @@
 //! [`render`]: crate::render::render
 
 use crate::color::Color;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::render::{Frame, RenderSettings, RenderStats, render_rect};
 use crate::scene::{Counters, Scene};
 use crate::spectral::SpectralPlan;
@@ -31,7 +33,8 @@ pub const TILE_SIZE: u32 = 32;
 /// The coarse pass has 1/COARSE_SCALE of the picture's resolution in each direction.
 pub const COARSE_SCALE: u32 = 4;
 
-/// A rectangle of pixels of the picture and, once drawn, their colours (row by row).
+/// A rectangle of pixels of the picture and, once drawn, their colours (row by row) and the rays traced
+/// for them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Tile {
     pub x: u32,
@@ -39,6 +42,7 @@ pub struct Tile {
     pub width: u32,
     pub height: u32,
     pub pixels: Vec<Color>,
+    pub rays: u64,
 }
 
 /// What a progressive render shows as it goes.
@@ -68,6 +72,7 @@ pub fn tiles(width: u32, height: u32) -> Vec<Tile> {
             width: TILE_SIZE.min(width - x),
             height: TILE_SIZE.min(height - y),
             pixels: Vec::new(),
+            rays: 0,
         })
         .collect();
     // Twice the distance from the tile's centre to the picture's, in whole pixels (so the sort is exact).
@@ -150,13 +155,16 @@ pub fn render_progressive(
 ) -> Result<Outcome> {
     settings.check()?;
     scene.check()?;
+    let plan = plan_for(scene, settings);
+    if settings.adaptive_aa && plan != SpectralPlan::White {
+        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
+    }
     let start = Instant::now();
     let Some((coarse, coarse_rays)) = quick_frame(scene, &coarse_settings(settings), cancel)? else {
         return Ok(Outcome::Cancelled);
     };
     on_update(Update::Coarse(&coarse));
 
-    let plan = plan_for(scene, settings);
     let tiles = tiles(settings.width, settings.height);
     let next = AtomicUsize::new(0);
     let frame = Mutex::new(Frame::new(settings.width, settings.height));
@@ -168,7 +176,9 @@ pub fn render_progressive(
             let Some(tile) = tiles.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
             let mut tile = Tile { pixels: vec![Color::BLACK; (tile.width * tile.height) as usize], ..tile.clone() };
             let (xs, ys) = (tile.x..tile.x + tile.width, tile.y..tile.y + tile.height);
-            rays.add(&render_rect(scene, settings, &plan, xs, ys, &mut tile.pixels));
+            let tile_rays = render_rect(scene, settings, &plan, xs, ys, &mut tile.pixels);
+            tile.rays = tile_rays.total();
+            rays.add(&tile_rays);
             on_update(Update::Tile(&tile));
             let mut frame = frame.lock().expect("no worker panics holding the frame");
             for (row, colors) in tile.pixels.chunks(tile.width as usize).enumerate() {
@@ -181,12 +191,19 @@ pub fn render_progressive(
     if next.load(Ordering::Relaxed) < tiles.len() || cancel.load(Ordering::Relaxed) {
         return Ok(Outcome::Cancelled);
     }
+    let mut frame = frame.into_inner().expect("no worker panicked");
+    let mut counters = counters.into_inner().expect("no worker panicked");
+    // The course's adaptive anti-aliasing looks at each pixel's neighbours: once every tile is drawn.
+    if settings.adaptive_aa {
+        let camera = scene.camera.frame(settings.width, settings.height);
+        counters.add(&crate::adaptive_aa::refine(scene, &camera, settings.seed, &mut frame));
+    }
     let stats = RenderStats {
         elapsed: start.elapsed(),
         threads: rayon::current_num_threads(),
-        counters: counters.into_inner().expect("no worker panicked"),
+        counters,
         spectral: plan,
         photons: scene.photon_map.as_ref().map(|map| map.stats),
     };
-    Ok(Outcome::Finished(frame.into_inner().expect("no worker panicked"), Box::new(stats)))
+    Ok(Outcome::Finished(frame, Box::new(stats)))
 }

@@ -21,7 +21,7 @@ use crate::geometry::IntersectionInfo;
 use crate::math::Vector;
 use crate::node::Node;
 use crate::ray::Ray;
-use crate::render::{RenderSettings, render_pixel};
+use crate::render::{PixelTrace, RenderSettings, render_pixel};
 use crate::scene::{Scene, TraceContext};
 use std::fmt::Write;
 
@@ -524,8 +524,14 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
     let settings = RenderSettings { progress: false, ..args.settings() };
     let scene = args.prepare_scene()?;
     let trace = render_pixel(&scene, &settings, pixel.x, pixel.y, true)?;
-    let tree = trace.tree.unwrap_or_default();
-    let sample = args.common.trace_sample as usize;
+    describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)
+}
+
+/// The report of pixel `pixel`, traced with its ray tree recorded (`trace`, from [`render_pixel`]): the
+/// tree of its camera ray `sample`, as `--trace-pixel` prints it and the viewer shows a clicked pixel.
+pub fn describe(name: &str, pixel: PixelPos, trace: &PixelTrace, sample: usize, format: TraceFormat) -> Result<String> {
+    let empty = RayTree::new();
+    let tree = trace.tree.as_deref().unwrap_or(&empty);
     let Some(&root) = tree.roots.get(sample) else {
         return Err(Error::parameter(
             "--trace-sample",
@@ -533,7 +539,7 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
             format!("the pixel has {} camera rays (numbered from 0)", tree.roots.len()),
         ));
     };
-    Ok(match args.common.trace_format {
+    Ok(match format {
         TraceFormat::Json => format!(
             "{{\"example\":{},\"pixel\":[{},{}],\"sample\":{sample},\"samples\":{},\"pixel_color\":{},\"tree\":{}}}\n",
             json_str(name),

@@ -8,21 +8,26 @@ use lecture6::cli::{Cli, Example};
 use lecture6::progressive::{Outcome, TILE_SIZE, Update, coarse_settings, render_progressive, tiles};
 use lecture6::render::{render, thread_pool};
 use std::sync::Mutex;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
 /// Renders the example progressively on `threads` threads and plainly, and checks that the pictures are the
-/// same bit for bit and that the coarse pass came first, then every tile once.
+/// same bit for bit, that the coarse pass came first, then every tile once, and that the tiles' rays (the
+/// viewer's rays per second) are the plain render's.
 fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
     let cli: Cli<E> = common::parse(args);
     let settings = cli.settings();
     let scene = cli.prepare_scene().unwrap();
-    let (plain, _) = render(&scene, &settings).unwrap();
+    let (plain, plain_stats) = render(&scene, &settings).unwrap();
     let seen = Mutex::new(Vec::new());
+    let tile_rays = AtomicU64::new(0);
     let cancel = AtomicBool::new(false);
     let on_update = |update: Update| {
         seen.lock().unwrap().push(match update {
             Update::Coarse(frame) => (u32::MAX, frame.width, frame.height),
-            Update::Tile(tile) => (tile.x, tile.y, tile.width * tile.height),
+            Update::Tile(tile) => {
+                tile_rays.fetch_add(tile.rays, Ordering::Relaxed);
+                (tile.x, tile.y, tile.width * tile.height)
+            }
         })
     };
     let outcome =
@@ -30,6 +35,9 @@ fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
     let Outcome::Finished(frame, stats) = outcome.unwrap() else { panic!("an uncancelled render finished") };
     assert!(frame == plain, "{args:?}: the progressive picture differs from the plain render");
     assert!(stats.counters.total() > 0);
+    if !settings.adaptive_aa {
+        assert_eq!(tile_rays.into_inner(), plain_stats.counters.total(), "{args:?}: the tiles' rays");
+    }
     let seen = seen.into_inner().unwrap();
     let coarse = coarse_settings(&settings);
     assert_eq!(seen[0], (u32::MAX, coarse.width, coarse.height), "the coarse pass comes first");
@@ -46,6 +54,8 @@ fn tiles_add_up_to_the_plain_render() {
     // A size that is not a multiple of the tile size, so the edge tiles are partial.
     same_as_plain_render::<fresnel::Options>(&["--width", "90", "--height", "70", "--spp", "3"], 2);
     same_as_plain_render::<glossy::Options>(&["--width", "80", "--height", "45", "--spp", "4"], 1);
+    // The adaptive pass, after the tiles.
+    same_as_plain_render::<fresnel::Options>(&["--width", "60", "--height", "45", "--spp", "1", "--adaptive-aa"], 2);
 }
 
 #[test]

@@ -6,12 +6,13 @@
 
 mod common;
 
-use common::examples::{fresnel, glossy};
+use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;
 use lecture6::camera::Camera;
 use lecture6::cli::Cli;
+use lecture6::cli::Example;
 use lecture6::progressive::{PREVIEW_PIXELS, preview_settings};
-use lecture6::render::{Frame, RenderSettings};
+use lecture6::render::{Frame, MAX_SPP, RenderSettings};
 use lecture6::viewer::controls::{Controls, Kind};
 use lecture6::viewer::fly::{Motion, as_code, moved};
 use lecture6::viewer::worker::{Job, Worker};
@@ -27,19 +28,50 @@ fn os(args: &[&str]) -> Vec<OsString> {
 #[test]
 fn every_option_becomes_a_control_of_its_kind() {
     let controls = Controls::new::<fresnel::Options>("fresnel", &os(&["--ior", "2.4"])).unwrap();
-    let kind =
-        |long: &str| controls.controls.iter().find(|c| c.long == long).map(|c| (c.kind.clone(), c.value.clone()));
+    let control = |long: &str| controls.controls.iter().find(|c| c.long == long);
+    let kind = |long: &str| control(long).map(|c| (c.kind.clone(), c.value.clone()));
     assert_eq!(kind("ior"), Some((Kind::Real, "2.4".into())));
     assert_eq!(kind("fresnel"), Some((Kind::Choice(vec!["schlick".into(), "exact".into()]), "schlick".into())));
-    assert_eq!(kind("spp"), Some((Kind::Integer { min: 0.0 }, "5".into())), "the example's own --spp default");
     assert_eq!(kind("exhaustive"), Some((Kind::Flag, "false".into())));
-    assert_eq!(kind("threads"), Some((Kind::Integer { min: 0.0 }, String::new())), "no default: not given");
     assert_eq!(kind("env").map(|k| k.0), Some(Kind::Text));
-    for absent in ["window", "output", "help", "quiet", "compare"] {
+    // Whole numbers within the range their parser takes.
+    let spp_range = Kind::Integer { min: 1.0, max: MAX_SPP as f64 };
+    assert_eq!(kind("spp"), Some((spp_range, String::new())), "--spp not given: the example's default");
+    assert_eq!(kind("width").map(|k| k.0), Some(Kind::Integer { min: 1.0, max: u32::MAX as f64 }));
+    assert_eq!(kind("max-depth").map(|k| k.0), Some(Kind::Integer { min: 0.0, max: u32::MAX as f64 }));
+    // An option without a default may stay empty, and says what empty means.
+    let spp = control("spp").unwrap();
+    assert!(spp.optional && spp.placeholder == fresnel::Options::DEFAULT_SPP.to_string(), "{spp:?}");
+    let seed = control("seed").unwrap();
+    assert!(!seed.optional && seed.value == "1", "{seed:?}");
+    let spectral = control("spectral").unwrap();
+    assert!(spectral.optional && spectral.value.is_empty() && matches!(spectral.kind, Kind::Choice(_)));
+    assert_eq!(spectral.placeholder, "passes");
+    for absent in ["window", "output", "help", "quiet", "compare", "trace-pixel", "view", "side-by-side", "threads"] {
         assert_eq!(kind(absent), None, "--{absent} is the window's, not a control");
     }
     let own = controls.controls.iter().position(|c| c.long == "ior").unwrap();
     assert!(controls.controls[own].heading.is_none() && controls.controls.iter().any(|c| c.heading.is_some()));
+}
+
+#[test]
+fn empty_optional_controls_leave_the_defaults_and_negative_numbers_reach_their_checks() {
+    let mut controls = Controls::new::<fresnel::Options>("fresnel", &[]).unwrap();
+    let cli: Cli<fresnel::Options> = controls.parse().unwrap();
+    assert_eq!((cli.common.spp, cli.common.wavelengths, cli.common.spectral), (None, None, None));
+    assert_eq!(cli.settings().spp, fresnel::Options::DEFAULT_SPP);
+    assert!(!controls.args().iter().any(|a| a == "--spp" || a == "--spectral"), "{:?}", controls.args());
+
+    controls.get_mut("spp").unwrap().value = "9".into();
+    assert_eq!(controls.parse::<fresnel::Options>().unwrap().settings().spp, 9);
+    controls.get_mut("spp").unwrap().value = "-1".into();
+    let error = controls.parse::<fresnel::Options>().unwrap_err().to_string();
+    assert!(error.contains("-1") && error.contains("--spp"), "{error}");
+    controls.get_mut("spp").unwrap().value.clear();
+    controls.get_mut("ior").unwrap().value = "-1".into();
+    let cli: Cli<fresnel::Options> = controls.parse().unwrap();
+    let error = cli.prepare_scene().map(|_| ()).unwrap_err().to_string();
+    assert!(error.contains("--ior") && error.contains("-1"), "{error}");
 }
 
 #[test]
@@ -106,13 +138,13 @@ fn finished(worker: &Worker) -> Frame {
     }
 }
 
-fn job(cli: &Cli<fresnel::Options>, camera: Option<Camera>, rebuild: bool) -> Job {
+fn job<E: Example>(cli: &Cli<E>, camera: Option<Camera>, rebuild: bool) -> Job {
     let build = cli.clone();
     Job {
-        rebuild: rebuild.then(|| Box::new(move || build.prepare_scene()) as _),
+        rebuild: rebuild.then(|| Box::new(move |settings: &mut _| build.prepare_scene_and_settings(settings)) as _),
         camera,
         settings: cli.settings(),
-        preview: None,
+        preview: false,
         cancel: Arc::new(AtomicBool::new(false)),
     }
 }
@@ -141,4 +173,22 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     let mut scene = second.prepare_scene().unwrap();
     scene.camera = camera;
     assert!(moved == lecture6::render::render(&scene, &second.settings()).unwrap().0);
+}
+
+#[test]
+fn the_render_thread_takes_the_frame_size_a_scene_file_sets() {
+    // The fresnel scene file at its own small size, from a folder as deep as its own (its textures are
+    // named relative to it).
+    let text = std::fs::read_to_string(common::root().join("examples/data/fresnel.qdmg")).unwrap();
+    let small = format!("{text}\nGlobalSettings {{\n frameWidth 40\n frameHeight 30\n}}\n");
+    let path = common::temp_file("viewer-tests", "small.qdmg", &small);
+    // No --spp: the file's own anti-aliasing.
+    let cli: Cli<scene_file::Options> = common::parse(&[path.to_str().unwrap(), "--quiet"]);
+    let mut worker = Worker::start(Some(2), || {}).unwrap();
+    worker.submit(job(&cli, None, true));
+    let frame = finished(&worker);
+    assert_eq!((frame.width, frame.height), (40, 30));
+    assert!(frame == cli.render().unwrap().0, "the picture the command line gives");
+    let settings = worker.shown.lock().unwrap().settings.unwrap();
+    assert!((settings.width, settings.height) == (40, 30) && settings.adaptive_aa, "{settings:?}");
 }

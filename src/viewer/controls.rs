@@ -7,12 +7,27 @@
 
 use crate::cli::{Cli, Example};
 use clap::ArgAction;
+use clap::error::ErrorKind;
 use std::any::TypeId;
 use std::ffi::OsString;
 
-/// Options that make no sense as a control: the window is already open, and saving, comparing and
-/// printing are the window's buttons.
-const NOT_CONTROLS: [&str; 6] = ["help", "version", "window", "output", "quiet", "compare"];
+/// Options (by their ids) that make no sense as a control: the window is already open; saving, comparing
+/// and printing are the window's buttons; a click on the picture traces a pixel; debug views and side by
+/// side pictures are files the command line writes; the render threads are started once, with the window.
+const NOT_CONTROLS: [&str; 12] = [
+    "help",
+    "version",
+    "window",
+    "output",
+    "quiet",
+    "compare",
+    "trace_pixel",
+    "trace_sample",
+    "trace_format",
+    "view",
+    "side_by_side",
+    "threads",
+];
 
 /// What kind of value an option takes.
 #[derive(Clone, Debug, PartialEq)]
@@ -21,8 +36,8 @@ pub enum Kind {
     Flag,
     /// One of the listed values.
     Choice(Vec<String>),
-    /// A whole number; `min` is the smallest its type holds (0 for unsigned counts).
-    Integer { min: f64 },
+    /// A whole number from `min` to `max`, the range the option's parser takes.
+    Integer { min: f64, max: f64 },
     /// A real number.
     Real,
     /// Anything else (a path).
@@ -42,6 +57,11 @@ pub struct Control {
     /// The value as the command line spells it: "" when the option is not given (it has no default),
     /// "true" or "false" for a flag.
     pub value: String,
+    /// The option has no default value of its own: it may be left empty, which leaves the choice to the
+    /// example or the scene.
+    pub optional: bool,
+    /// What an empty value means, as its help says ("[default: 5]" gives "5"), or "default".
+    pub placeholder: String,
 }
 
 impl Control {
@@ -58,8 +78,8 @@ pub struct Controls {
     pub controls: Vec<Control>,
 }
 
-/// The kind of value the option `arg` takes.
-fn kind_of(arg: &clap::Arg) -> Kind {
+/// The kind of value the option `arg` of `command` takes; `value` is its current one.
+fn kind_of(command: &clap::Command, arg: &clap::Arg, value: &str) -> Kind {
     if matches!(arg.get_action(), ArgAction::SetTrue) {
         return Kind::Flag;
     }
@@ -68,18 +88,61 @@ fn kind_of(arg: &clap::Arg) -> Kind {
         return Kind::Choice(choices);
     }
     let id = arg.get_value_parser().type_id();
-    let unsigned =
-        [TypeId::of::<u8>(), TypeId::of::<u16>(), TypeId::of::<u32>(), TypeId::of::<u64>(), TypeId::of::<usize>()];
-    let signed = [TypeId::of::<i32>(), TypeId::of::<i64>()];
-    if unsigned.iter().any(|t| id == *t) {
-        Kind::Integer { min: 0.0 }
-    } else if signed.iter().any(|t| id == *t) {
-        Kind::Integer { min: f64::NEG_INFINITY }
+    let integers = [
+        TypeId::of::<u8>(),
+        TypeId::of::<u16>(),
+        TypeId::of::<u32>(),
+        TypeId::of::<u64>(),
+        TypeId::of::<usize>(),
+        TypeId::of::<i32>(),
+        TypeId::of::<i64>(),
+    ];
+    if integers.iter().any(|t| id == *t) {
+        let (min, max) = accepted_range(command, arg, value)
+            .map_or((f64::NEG_INFINITY, f64::INFINITY), |(lo, hi)| (lo as f64, hi as f64));
+        Kind::Integer { min, max }
     } else if id == TypeId::of::<f32>() || id == TypeId::of::<f64>() {
         Kind::Real
     } else {
         Kind::Text
     }
+}
+
+/// The whole numbers the whole-number option `arg` takes, as its parser checks them: the interval around a
+/// value it takes (its current `value`, its default, 0 or 1), its ends found by bisection over `i64`.
+/// `None` when it takes none of those.
+fn accepted_range(command: &clap::Command, arg: &clap::Arg, value: &str) -> Option<(i64, i64)> {
+    let long = format!("--{}", arg.get_long()?);
+    // Only the option's own value check counts: another option's error (a required one missing) is not its.
+    let accepts = |v: i64| match command.clone().try_get_matches_from([command.get_name(), &long, &v.to_string()]) {
+        Ok(_) => true,
+        Err(e) => !matches!(e.kind(), ErrorKind::ValueValidation | ErrorKind::InvalidValue),
+    };
+    let defaults = arg.get_default_values().iter().filter_map(|d| d.to_str()?.parse().ok());
+    let inside = value.parse().ok().into_iter().chain(defaults).chain([0, 1]).find(|&v| accepts(v))?;
+    // The last value from `taken` towards `beyond` that the option takes (`taken` is one).
+    let edge = |mut taken: i64, mut beyond: i64| {
+        if accepts(beyond) {
+            return beyond;
+        }
+        while taken.abs_diff(beyond) > 1 {
+            let middle = ((taken as i128 + beyond as i128) / 2) as i64;
+            if accepts(middle) {
+                taken = middle;
+            } else {
+                beyond = middle;
+            }
+        }
+        taken
+    };
+    Some((edge(inside, i64::MIN), edge(inside, i64::MAX)))
+}
+
+/// What the help `help` says an empty value means: the text of its "[default: ...]", or "default".
+fn placeholder(help: &str) -> String {
+    help.split_once("[default: ")
+        .and_then(|(_, rest)| rest.split_once(']'))
+        .map_or_else(|| "default".to_string(), |(default, _)| default.to_string())
 }
 
 impl Controls {
@@ -99,10 +162,12 @@ impl Controls {
                     .and_then(|mut values| values.next())
                     .map(|v| v.to_string_lossy().into_owned())
                     .unwrap_or_default();
-                let help = arg.get_help().map(|h| h.to_string()).unwrap_or_default();
-                let help = help.split(". ").next().unwrap_or_default().trim_end_matches('.').to_string();
+                let full_help = arg.get_help().map(|h| h.to_string()).unwrap_or_default();
+                let help = full_help.split(". ").next().unwrap_or_default().trim_end_matches('.').to_string();
                 let heading = arg.get_help_heading().map(str::to_string);
-                Some(Control { long, help, heading, kind: kind_of(arg), value })
+                let kind = kind_of(&command, arg, &value);
+                let optional = arg.get_default_values().is_empty();
+                Some(Control { long, help, heading, kind, value, optional, placeholder: placeholder(&full_help) })
             })
             .collect::<Vec<_>>();
         // Each heading's options together, in the order the headings first appear (`--spp`, whose

@@ -30,7 +30,10 @@ pub fn run<E: Example>(name: &str, cli: Cli<E>, args: Vec<OsString>) -> ExitCode
     match window::open(name, cli, &args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("{name}: no display: {e}");
+            // The windowing library's message ends with the cause, after where in its source it arose.
+            let cause = e.rsplit(": ").next().unwrap_or(&e);
+            let display = std::env::var("DISPLAY").unwrap_or_default();
+            eprintln!("{name}: no display: cannot open a window on DISPLAY={display}: {cause}");
             ExitCode::from(2)
         }
     }

@@ -4,17 +4,17 @@
 //!
 //! Keys (while no text field has the focus): W/S forward and back, A/D left and right, R/F up and down,
 //! the arrow keys turn and Q/E roll; dragging the mouse over the picture looks around; a click shows what
-//! the pixel sees.
+//! the pixel sees: the node and shader it hits and its whole ray tree (see [`crate::ray_tree`]).
 
 use super::controls::{Control, Controls, Kind};
 use super::fly::{Motion, as_code, moved};
 use super::worker::{Job, Worker};
 use crate::camera::Camera;
 use crate::cli::{Cli, Example};
-use crate::compare;
+use crate::compare::{self, Reference};
 use crate::error::Result;
-use crate::progressive::preview_settings;
-use crate::render::RenderSettings;
+use crate::ray_tree::{self, PixelPos, TraceFormat};
+use crate::render::{RenderSettings, render_pixel, thread_pool};
 use eframe::egui;
 use std::ffi::OsString;
 use std::sync::Arc;
@@ -68,8 +68,8 @@ struct Viewer<E: Example> {
     heat_map: Option<egui::TextureHandle>,
     /// What the last action said (a bad option value, a saved file).
     message: String,
-    /// What the last clicked pixel sees.
-    pixel: String,
+    /// The last clicked pixel, marked on the picture, and what it sees.
+    picked: Option<Picked>,
 }
 
 impl<E: Example> Viewer<E> {
@@ -86,7 +86,7 @@ impl<E: Example> Viewer<E> {
             texture: None,
             heat_map: None,
             message: String::new(),
-            pixel: String::new(),
+            picked: None,
         };
         viewer.rebuild();
         Ok(viewer)
@@ -101,10 +101,10 @@ impl<E: Example> Viewer<E> {
         let settings = self.settings();
         self.heat_map = None;
         self.worker.submit(Job {
-            rebuild: rebuild.then(|| Box::new(move || cli.prepare_scene()) as _),
+            rebuild: rebuild.then(|| Box::new(move |settings: &mut _| cli.prepare_scene_and_settings(settings)) as _),
             camera: self.camera,
             settings,
-            preview: preview.then(|| preview_settings(&settings)),
+            preview,
             cancel: Arc::new(AtomicBool::new(false)),
         });
     }
@@ -195,7 +195,7 @@ impl<E: Example> Viewer<E> {
             // Half the camera's distance from the origin per second: the examples are built around it.
             self.speed = (camera.position.length() * 0.5).max(1.0);
         }
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             let p = camera.position;
             ui.monospace(format!(
                 "camera ({:.2}, {:.2}, {:.2}) yaw {:.1} pitch {:.1} roll {:.1} fov {:.1}",
@@ -231,6 +231,10 @@ impl<E: Example> Viewer<E> {
                 secs,
                 shown.rays as f64 * 1e-6 / secs.max(1e-9)
             );
+            if self.moving_since.is_some() {
+                let recent = shown.previews.iter().filter(|t| t.elapsed() < Duration::from_secs(1)).count();
+                status += &format!(", moving: {recent} frames in the last second");
+            }
             if let Some(e) = &shown.error {
                 status = format!("error: {e}");
             }
@@ -257,15 +261,15 @@ impl<E: Example> Viewer<E> {
                     self.toggle_compare(ui.ctx(), frame);
                 }
             });
-            ui.label(&self.message);
         });
-        if !self.pixel.is_empty() {
-            ui.monospace(&self.pixel);
+        if !self.message.is_empty() {
+            ui.label(&self.message);
         }
     }
 
     /// Shows the heat map of the difference from the reference (`--compare`'s, or `expected/<name>.png`)
-    /// instead of the picture, or the picture again.
+    /// instead of the picture, or the picture again. The comparison is `--compare`'s: the same figures, the
+    /// same heat map with its colour bar.
     fn toggle_compare(&mut self, ctx: &egui::Context, frame: &crate::render::Frame) {
         if self.heat_map.take().is_some() {
             return;
@@ -276,52 +280,72 @@ impl<E: Example> Viewer<E> {
             .compare
             .clone()
             .unwrap_or_else(|| std::path::Path::new("expected").join(format!("{}.png", self.name)));
-        let heat = compare::load_reference(&reference).and_then(|expected| {
-            let actual = frame.to_rgb8();
-            let d = compare::difference(&actual, &expected)?;
-            Ok((compare::heat_map(&actual, &expected)?, d))
+        let comparison = Reference::load(&reference).and_then(|expected| {
+            expected.check_size(&reference, frame.width, frame.height)?;
+            compare::compare(frame, &expected)
         });
-        match heat {
-            Ok((heat, d)) => {
+        match comparison {
+            Ok(comparison) => {
+                let heat = &comparison.heat_map;
                 let size = [heat.width() as usize, heat.height() as usize];
                 let image = egui::ColorImage::from_rgb(size, heat.as_raw());
                 self.heat_map = Some(ctx.load_texture("heat map", image, egui::TextureOptions::NEAREST));
-                self.message = format!("compared with {}: {d}", reference.display());
+                self.message = format!("compared with {}: {comparison}", reference.display());
             }
             Err(e) => self.message = e.to_string(),
         }
     }
 
-    /// Describes what pixel (x, y) of the picture sees.
+    /// Describes what pixel (x, y) of the picture sees: its colour on screen, the node and the shader its
+    /// first camera ray hits, and that ray's whole tree as `--trace-pixel` prints it (traced again at the
+    /// options' full quality, from the camera of the picture shown).
     fn inspect(&mut self, x: u32, y: u32) {
         let shown = self.worker.shown.lock().expect("the render thread never panics holding the picture");
-        let Some(scene) = shown.scene.clone() else { return };
+        let (Some(scene), Some(settings)) = (shown.scene.clone(), shown.settings) else { return };
         if x >= shown.width || y >= shown.height {
             return;
         }
         let i = (y as usize * shown.width as usize + x as usize) * 3;
         let rgb = [shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]];
-        let linear = shown.finished.as_ref().map(|(frame, _)| frame.get(x, y));
         drop(shown);
-        let size = self.cli.settings();
-        let ray = scene.camera.frame(size.width, size.height).get_screen_ray(x as f32 + 0.5, y as f32 + 0.5);
-        let mut text = format!("pixel ({x}, {y}): sRGB ({}, {}, {})", rgb[0], rgb[1], rgb[2]);
-        if let Some(c) = linear {
-            text += &format!(", linear ({:.4}, {:.4}, {:.4})", c.r(), c.g(), c.b());
-        }
-        text += &match scene.closest_hit(&ray) {
-            Some((info, node)) => {
-                let index = scene.nodes.iter().position(|n| std::ptr::eq(n, node)).unwrap_or_default();
-                let (p, n) = (info.ip, info.normal);
-                format!(
-                    "; hits node {index} at ({:.3}, {:.3}, {:.3}), distance {:.3}, normal ({:.3}, {:.3}, {:.3}), u/v ({:.3}, \
-                     {:.3})",
-                    p.x, p.y, p.z, info.distance, n.x, n.y, n.z, info.u, info.v
-                )
+        // On a pool's thread: a deep ray tree needs its stack.
+        let traced = thread_pool(Some(1)).and_then(|pool| pool.install(|| render_pixel(&scene, &settings, x, y, true)));
+        let (sees, tree) = match traced {
+            Ok(trace) => {
+                let first_hit = trace.tree.as_deref().and_then(|tree| tree.rays[*tree.roots.first()?].hit.clone());
+                let sees = match first_hit {
+                    Some(hit) => {
+                        format!("sees node {}, shader {}, at distance {:.3}", hit.node, hit.shader, hit.distance)
+                    }
+                    None => "sees nothing: the environment".to_string(),
+                };
+                let tree = ray_tree::describe(&self.name, PixelPos { x, y }, &trace, 0, TraceFormat::Text);
+                (sees, tree.unwrap_or_else(|e| e.to_string()))
             }
-            None => "; hits nothing (the environment)".to_string(),
+            Err(e) => (e.to_string(), String::new()),
         };
-        self.pixel = text;
+        let sees = format!("pixel ({x}, {y}), shown as sRGB ({}, {}, {}): {sees}", rgb[0], rgb[1], rgb[2]);
+        self.picked = Some(Picked { x, y, sees, tree });
+    }
+
+    /// The clicked pixel's report, beside the picture, until closed.
+    fn pixel_panel(&mut self, ctx: &egui::Context) {
+        let Some(picked) = &self.picked else { return };
+        let mut close = false;
+        egui::SidePanel::right("pixel").resizable(true).default_width(520.0).show(ctx, |ui| {
+            ui.horizontal(|ui| {
+                ui.strong("Pixel");
+                close = ui.button("Close").clicked();
+            });
+            ui.label(&picked.sees);
+            ui.separator();
+            // The tree unwrapped, so that its indentation shows; scrolled sideways where it is wider.
+            let tree = egui::Label::new(egui::RichText::new(&picked.tree).monospace()).extend();
+            egui::ScrollArea::both().show(ui, |ui| ui.add(tree));
+        });
+        if close {
+            self.picked = None;
+        }
     }
 
     fn picture(&mut self, ui: &mut egui::Ui) {
@@ -347,16 +371,30 @@ impl<E: Example> Viewer<E> {
         let response = ui.add(image.sense(egui::Sense::click_and_drag()));
         let drag = if response.dragged() { response.drag_delta() } else { egui::Vec2::ZERO };
         if response.clicked()
+            && self.heat_map.is_none()
             && let Some(pos) = response.interact_pointer_pos()
         {
+            // The texture is the picture, pixel for pixel.
             let p = (pos - response.rect.min) / scale;
-            let size = self.cli.settings();
-            let (w, h) = (size.width, size.height);
+            let (w, h) = (size.x as u32, size.y as u32);
             let (x, y) = ((p.x.max(0.0) as u32).min(w - 1), (p.y.max(0.0) as u32).min(h - 1));
             self.inspect(x, y);
         }
+        if let Some(picked) = self.picked.as_ref().filter(|_| self.heat_map.is_none()) {
+            let centre = response.rect.min + egui::vec2(picked.x as f32 + 0.5, picked.y as f32 + 0.5) * scale;
+            let ring = egui::Stroke::new(1.5, egui::Color32::from_rgb(255, 0, 255));
+            ui.painter().circle_stroke(centre, (2.0 * scale).max(5.0), ring);
+        }
         self.fly(ui.ctx(), drag, size.x * scale);
     }
+}
+
+/// A clicked pixel and what it sees: a line naming the node and shader it hits, and its ray tree.
+struct Picked {
+    x: u32,
+    y: u32,
+    sees: String,
+    tree: String,
 }
 
 /// The keys that move the camera: held, they keep the window redrawing.
@@ -377,20 +415,25 @@ fn control_ui(ui: &mut egui::Ui, control: &mut Control) -> bool {
         }
         Kind::Choice(choices) => {
             ui.label(&label);
+            let shown = |value: &str| if value.is_empty() { control.placeholder.clone() } else { value.to_string() };
             let mut changed = false;
-            egui::ComboBox::from_id_salt(&label).selected_text(control.value.as_str()).show_ui(ui, |ui| {
-                for choice in choices {
-                    changed |= ui.selectable_value(&mut control.value, choice.clone(), choice).changed();
+            let mut value = control.value.clone();
+            egui::ComboBox::from_id_salt(&label).selected_text(shown(&value)).show_ui(ui, |ui| {
+                // An option without a default can be left unset again.
+                let unset = control.optional.then(String::new);
+                for choice in unset.iter().chain(choices) {
+                    changed |= ui.selectable_value(&mut value, choice.clone(), shown(choice)).changed();
                 }
             });
+            control.value = value;
             changed
         }
-        Kind::Integer { min } => number_ui(ui, &label, &mut control.value, *min, true),
-        Kind::Real => number_ui(ui, &label, &mut control.value, f64::NEG_INFINITY, false),
+        Kind::Integer { min, max } => number_ui(ui, &label, control, *min..=*max, true),
+        Kind::Real => number_ui(ui, &label, control, f64::NEG_INFINITY..=f64::INFINITY, false),
         Kind::Text => {
             ui.label(&label);
-            ui.add(egui::TextEdit::singleline(&mut control.value).hint_text("default").desired_width(140.0))
-                .lost_focus()
+            let hint = control.placeholder.clone();
+            ui.add(egui::TextEdit::singleline(&mut control.value).hint_text(hint).desired_width(140.0)).lost_focus()
         }
     });
     if !control.help.is_empty() {
@@ -399,25 +442,45 @@ fn control_ui(ui: &mut egui::Ui, control: &mut Control) -> bool {
     row.inner
 }
 
-/// A number as a drag value (or, while it has no value, a text field); `integer` rounds it.
-fn number_ui(ui: &mut egui::Ui, label: &str, value: &mut String, min: f64, integer: bool) -> bool {
+/// A number as a drag value within `range` (`integer` rounds it), or, while it has no value, a text field
+/// showing what the option's default is. An option without a default can be emptied again.
+fn number_ui(
+    ui: &mut egui::Ui,
+    label: &str,
+    control: &mut Control,
+    range: std::ops::RangeInclusive<f64>,
+    integer: bool,
+) -> bool {
     ui.label(label);
+    let value = &mut control.value;
+    // The text field stays while it has the focus, even once what is typed reads as a number.
+    let field_id = ui.make_persistent_id(label);
+    let typing = ui.memory(|m| m.has_focus(field_id));
     match value.trim().parse::<f64>() {
-        Ok(mut number) => {
+        Ok(mut number) if !typing => {
             let speed = if integer { 0.1 } else { (number.abs() * 0.005).max(0.001) };
-            let drag = egui::DragValue::new(&mut number).speed(speed).range(min..=f64::INFINITY);
+            // A value typed in counts once it is entered, not at every key (typing 1.8 would render 1 first).
+            let drag = egui::DragValue::new(&mut number).speed(speed).range(range).update_while_editing(false);
             let drag = if integer { drag.max_decimals(0) } else { drag.max_decimals(4) };
             let changed = ui.add(drag).changed();
             if changed {
                 *value = if integer { format!("{}", number.round()) } else { format!("{number}") };
             }
-            let cleared = min >= 0.0 && integer && ui.small_button("x").on_hover_text("back to the default").clicked();
+            let cleared = control.optional
+                && ui
+                    .small_button("x")
+                    .on_hover_text(format!("back to the default ({})", control.placeholder))
+                    .clicked();
             if cleared {
                 value.clear();
             }
             changed || cleared
         }
-        Err(_) => ui.add(egui::TextEdit::singleline(value).hint_text("default").desired_width(60.0)).lost_focus(),
+        _ => {
+            let field =
+                egui::TextEdit::singleline(value).id(field_id).hint_text(&control.placeholder).desired_width(60.0);
+            ui.add(field).lost_focus()
+        }
     }
 }
 
@@ -428,6 +491,7 @@ impl<E: Example> eframe::App for Viewer<E> {
             self.camera_panel(ui);
             self.status_line(ui);
         });
+        self.pixel_panel(ctx);
         egui::CentralPanel::default().show(ctx, |ui| self.picture(ui));
     }
 }

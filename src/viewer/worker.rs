@@ -5,17 +5,18 @@
 use crate::camera::Camera;
 use crate::color::to_srgb8;
 use crate::error::Result;
-use crate::progressive::{Outcome, Update, quick_frame, render_progressive};
+use crate::progressive::{Outcome, Update, preview_settings, quick_frame, render_progressive};
 use crate::render::{Frame, RenderSettings, RenderStats, thread_pool};
 use crate::scene::Scene;
+use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// Builds the scene for new options (parsing them was done by the window; building may be slow: a photon
-/// map).
-pub type BuildScene = Box<dyn FnOnce() -> Result<Scene> + Send>;
+/// map), setting in the render settings what the scene decides (a scene file's frame size).
+pub type BuildScene = Box<dyn FnOnce(&mut RenderSettings) -> Result<Scene> + Send>;
 
 /// What to render next.
 pub struct Job {
@@ -24,8 +25,9 @@ pub struct Job {
     /// The camera to render from; `None` is the scene's own.
     pub camera: Option<Camera>,
     pub settings: RenderSettings,
-    /// The camera is moving: draw one quick frame of `preview` settings and no refinement.
-    pub preview: Option<RenderSettings>,
+    /// The camera is moving: draw one quick frame ([`crate::progressive::preview_settings`]) and no
+    /// refinement.
+    pub preview: bool,
     /// Set by the window when it sends the next job.
     pub cancel: Arc<AtomicBool>,
 }
@@ -53,8 +55,12 @@ pub struct Shown {
     pub scene: Option<Arc<Scene>>,
     /// The camera of the scene as built, before the window moved it.
     pub scene_camera: Option<Camera>,
+    /// The settings of the full-quality picture, as the scene decided them.
+    pub settings: Option<RenderSettings>,
     /// Building or rendering failed: the message.
     pub error: Option<String>,
+    /// When the moving camera's pictures of the last second were shown: their count is the frame rate.
+    pub previews: VecDeque<Instant>,
 }
 
 impl Shown {
@@ -73,7 +79,9 @@ impl Shown {
             finished: None,
             scene: None,
             scene_camera: None,
+            settings: None,
             error: None,
+            previews: VecDeque::new(),
         }
     }
 
@@ -111,6 +119,7 @@ impl Shown {
             self.rgb[(y * w + x) * 3..][..3].copy_from_slice(&to_srgb8(c));
         }
         self.tiles_done += 1;
+        self.rays += tile.rays;
         self.dirty = true;
     }
 }
@@ -119,7 +128,8 @@ impl Shown {
 pub struct Worker {
     jobs: Sender<Job>,
     pub shown: Arc<Mutex<Shown>>,
-    current: Option<Arc<AtomicBool>>,
+    /// The cancel flag of the last job sent, and whether it is a moving preview.
+    current: Option<(Arc<AtomicBool>, bool)>,
 }
 
 impl Worker {
@@ -133,9 +143,14 @@ impl Worker {
         Ok(Worker { jobs, shown, current: None })
     }
 
-    /// Cancels the job in flight and starts `job`.
+    /// Cancels the job in flight and starts `job`; but a preview of the moving camera lets the preview in
+    /// flight finish: the camera moves at every redraw of the window, faster than a preview is drawn, so
+    /// cancelling each for the next would show none. The render thread then draws the latest.
     pub fn submit(&mut self, job: Job) {
-        if let Some(cancel) = self.current.replace(job.cancel.clone()) {
+        let preview = job.preview;
+        if let Some((cancel, was_preview)) = self.current.replace((job.cancel.clone(), preview))
+            && !(preview && was_preview)
+        {
             cancel.store(true, Ordering::Relaxed);
         }
         // The thread ends only with the window.
@@ -146,7 +161,7 @@ impl Worker {
 /// The render thread's loop: the latest job first (the ones it replaces are skipped, but a scene they
 /// asked to rebuild is still rebuilt).
 fn serve(pool: &rayon::ThreadPool, inbox: &Receiver<Job>, shown: &Mutex<Shown>, repaint: &(dyn Fn() + Sync)) {
-    let mut scene: Option<Arc<Scene>> = None;
+    let mut scene: Option<(Arc<Scene>, RenderSettings)> = None;
     while let Ok(mut job) = inbox.recv() {
         while let Ok(next) = inbox.try_recv() {
             let rebuild = job.rebuild.take();
@@ -160,14 +175,25 @@ fn serve(pool: &rayon::ThreadPool, inbox: &Receiver<Job>, shown: &Mutex<Shown>, 
     }
 }
 
-fn run_job(job: Job, scene: &mut Option<Arc<Scene>>, shown: &Mutex<Shown>, repaint: &(dyn Fn() + Sync)) -> Result<()> {
+/// Draws `job` with the scene built last (`scene`, with the settings it decided), or first builds a new one.
+fn run_job(
+    job: Job,
+    scene: &mut Option<(Arc<Scene>, RenderSettings)>,
+    shown: &Mutex<Shown>,
+    repaint: &(dyn Fn() + Sync),
+) -> Result<()> {
     let lock = || shown.lock().expect("the window never panics holding the picture");
     if let Some(build) = job.rebuild {
-        let built = build()?;
+        let mut settings = job.settings;
+        let built = build(&mut settings)?;
+        settings.check()?;
         lock().scene_camera = Some(built.camera);
-        *scene = Some(Arc::new(built));
+        // With the tree over its nodes that `render` builds: a camera moved later keeps it.
+        *scene = Some((Arc::new(built.with_node_tree()), settings));
     }
-    let Some(base) = scene.as_ref() else { return Ok(()) };
+    // Options change only with a rebuild: the settings are the ones the scene decided then.
+    let Some((base, settings)) = scene.as_ref() else { return Ok(()) };
+    let settings = *settings;
     let scene = match job.camera {
         Some(camera) => {
             let mut moved = (**base).clone();
@@ -176,13 +202,20 @@ fn run_job(job: Job, scene: &mut Option<Arc<Scene>>, shown: &Mutex<Shown>, repai
         }
         None => base.clone(),
     };
-    lock().scene = Some(scene.clone());
-    let tiles_total = crate::progressive::tiles(job.settings.width, job.settings.height).len();
-    lock().start(&job.settings, tiles_total);
-    if let Some(preview) = job.preview {
-        if let Some((frame, counters)) = quick_frame(&scene, &preview, &job.cancel)? {
+    {
+        let mut shown = lock();
+        shown.scene = Some(scene.clone());
+        shown.settings = Some(settings);
+    }
+    let tiles_total = crate::progressive::tiles(settings.width, settings.height).len();
+    lock().start(&settings, tiles_total);
+    if job.preview {
+        if let Some((frame, counters)) = quick_frame(&scene, &preview_settings(&settings), &job.cancel)? {
             let mut shown = lock();
             shown.paint_stretched(&frame);
+            let now = Instant::now();
+            shown.previews.retain(|t| now.duration_since(*t) < Duration::from_secs(1));
+            shown.previews.push_back(now);
             (shown.spp, shown.rays, shown.elapsed) = (1, counters.total(), shown.started.elapsed());
         }
         return Ok(());
@@ -196,14 +229,16 @@ fn run_job(job: Job, scene: &mut Option<Arc<Scene>>, shown: &Mutex<Shown>, repai
             }
             Update::Tile(tile) => {
                 shown.paint_tile(tile);
-                shown.spp = job.settings.spp;
+                shown.spp = settings.spp;
             }
         }
         shown.elapsed = shown.started.elapsed();
         repaint();
     };
-    if let Outcome::Finished(frame, stats) = render_progressive(&scene, &job.settings, &job.cancel, &on_update)? {
+    if let Outcome::Finished(frame, stats) = render_progressive(&scene, &settings, &job.cancel, &on_update)? {
         let mut shown = lock();
+        // The finished picture, whole: the adaptive anti-aliasing changes it after the last tile.
+        shown.paint_stretched(&frame);
         (shown.rays, shown.elapsed) = (stats.counters.total(), stats.elapsed);
         shown.finished = Some((frame, *stats));
     }
