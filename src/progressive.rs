@@ -196,7 +196,7 @@ pub fn render_progressive(
     // The course's adaptive anti-aliasing looks at each pixel's neighbours: once every tile is drawn.
     if settings.adaptive_aa {
         let camera = scene.camera.frame(settings.width, settings.height);
-        counters.add(&crate::adaptive_aa::refine(scene, &camera, settings.seed, &mut frame));
+        counters.add(&crate::adaptive_aa::refine(scene, &camera, settings, &mut frame));
     }
     let stats = RenderStats {
         elapsed: start.elapsed(),

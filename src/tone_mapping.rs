@@ -61,10 +61,14 @@ impl Film {
     /// The picture to write: exposed, and tone mapped unless `linear_output` (an EXR or HDR file, which
     /// keeps light above 1 for whoever views it).
     pub fn develop(&self, frame: &Frame, linear_output: bool) -> Frame {
-        let scale = self.exposure.exp2();
-        let tone_map = if linear_output { ToneMap::Clamp } else { self.tone_map };
-        let pixels = frame.pixels.iter().map(|&c| tone_mapped(c * scale, tone_map)).collect();
+        let pixels = frame.pixels.iter().map(|&c| self.developed(c, linear_output)).collect();
         Frame { pixels, ..*frame }
+    }
+
+    /// One pixel of [`Film::develop`]'s picture (the live viewer develops its tiles as they come).
+    pub fn developed(&self, c: Color, linear_output: bool) -> Color {
+        let tone_map = if linear_output { ToneMap::Clamp } else { self.tone_map };
+        tone_mapped(c * self.exposure.exp2(), tone_map)
     }
 }
 

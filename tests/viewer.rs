@@ -144,6 +144,7 @@ fn job<E: Example>(cli: &Cli<E>, camera: Option<Camera>, rebuild: bool) -> Job {
         rebuild: rebuild.then(|| Box::new(move |settings: &mut _| build.prepare_scene_and_settings(settings)) as _),
         camera,
         settings: cli.settings(),
+        film: cli.film(),
         preview: false,
         cancel: Arc::new(AtomicBool::new(false)),
     }
@@ -173,6 +174,18 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     let mut scene = second.prepare_scene().unwrap();
     scene.camera = camera;
     assert!(moved == lecture6::render::render(&scene, &second.settings()).unwrap().0);
+}
+
+#[test]
+fn the_window_shows_the_picture_exposed_and_tone_mapped_as_the_options_say() {
+    let mut worker = Worker::start(Some(2), || {}).unwrap();
+    let args = ["--width", "64", "--height", "48", "--spp", "1", "--exposure", "-1", "--tonemap", "reinhard"];
+    let cli: Cli<fresnel::Options> = common::parse(&args);
+    worker.submit(job(&cli, None, true));
+    let frame = finished(&worker);
+    let shown = worker.shown.lock().unwrap().rgb.clone();
+    assert_eq!(shown, cli.film().develop(&frame, false).to_rgb8().into_raw(), "the picture a PNG would hold");
+    assert_ne!(shown, frame.to_rgb8().into_raw());
 }
 
 #[test]

@@ -14,7 +14,7 @@ use crate::cli::{Cli, Example};
 use crate::compare::{self, Reference};
 use crate::error::Result;
 use crate::ray_tree::{self, PixelPos, TraceFormat};
-use crate::render::{RenderSettings, render_pixel, thread_pool};
+use crate::render::{RenderSettings, keeps_linear_light, render_pixel, thread_pool};
 use eframe::egui;
 use std::ffi::OsString;
 use std::sync::Arc;
@@ -104,6 +104,7 @@ impl<E: Example> Viewer<E> {
             rebuild: rebuild.then(|| Box::new(move |settings: &mut _| cli.prepare_scene_and_settings(settings)) as _),
             camera: self.camera,
             settings,
+            film: self.cli.film(),
             preview,
             cancel: Arc::new(AtomicBool::new(false)),
         });
@@ -112,7 +113,7 @@ impl<E: Example> Viewer<E> {
     /// The options changed: parse them as the command line would and render the new scene.
     fn rebuild(&mut self) {
         match self.controls.parse::<E>() {
-            Ok(cli) => match cli.settings().check() {
+            Ok(cli) => match cli.settings().check().and_then(|()| cli.film().check()) {
                 Ok(()) => {
                     self.cli = cli;
                     self.message.clear();
@@ -248,7 +249,8 @@ impl<E: Example> Viewer<E> {
                         && let Some(frame) = &finished
                     {
                         let path = self.cli.output_path(&self.name).with_extension(ext);
-                        self.message = match frame.save(&path) {
+                        let picture = self.cli.film().develop(frame, keeps_linear_light(&path));
+                        self.message = match picture.save(&path) {
                             Ok(()) => format!("saved {}", path.display()),
                             Err(e) => e.to_string(),
                         };
@@ -282,7 +284,7 @@ impl<E: Example> Viewer<E> {
             .unwrap_or_else(|| std::path::Path::new("expected").join(format!("{}.png", self.name)));
         let comparison = Reference::load(&reference).and_then(|expected| {
             expected.check_size(&reference, frame.width, frame.height)?;
-            compare::compare(frame, &expected)
+            compare::compare(&self.cli.film().develop(frame, keeps_linear_light(&reference)), &expected)
         });
         match comparison {
             Ok(comparison) => {

@@ -8,6 +8,7 @@ use crate::error::Result;
 use crate::progressive::{Outcome, Update, preview_settings, quick_frame, render_progressive};
 use crate::render::{Frame, RenderSettings, RenderStats, thread_pool};
 use crate::scene::Scene;
+use crate::tone_mapping::Film;
 use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};
@@ -25,6 +26,8 @@ pub struct Job {
     /// The camera to render from; `None` is the scene's own.
     pub camera: Option<Camera>,
     pub settings: RenderSettings,
+    /// How the picture is exposed and tone mapped on the screen (`--exposure`, `--tonemap`).
+    pub film: Film,
     /// The camera is moving: draw one quick frame ([`crate::progressive::preview_settings`]) and no
     /// refinement.
     pub preview: bool,
@@ -40,6 +43,8 @@ pub struct Shown {
     pub height: u32,
     /// Changed since the window last uploaded it.
     pub dirty: bool,
+    /// How the rendered light becomes `rgb`.
+    pub film: Film,
     /// Tiles of the full-quality picture drawn, of `tiles_total`.
     pub tiles_done: usize,
     pub tiles_total: usize,
@@ -70,6 +75,7 @@ impl Shown {
             width: 0,
             height: 0,
             dirty: false,
+            film: Film::default(),
             tiles_done: 0,
             tiles_total: 0,
             spp: 0,
@@ -106,7 +112,8 @@ impl Shown {
             let fy = (y * frame.height as usize / h) as u32;
             for x in 0..w {
                 let fx = (x * frame.width as usize / w) as u32;
-                self.rgb[(y * w + x) * 3..][..3].copy_from_slice(&to_srgb8(frame.get(fx, fy)));
+                self.rgb[(y * w + x) * 3..][..3]
+                    .copy_from_slice(&to_srgb8(self.film.developed(frame.get(fx, fy), false)));
             }
         }
         self.dirty = true;
@@ -116,7 +123,7 @@ impl Shown {
         let w = self.width as usize;
         for (i, &c) in tile.pixels.iter().enumerate() {
             let (x, y) = (tile.x as usize + i % tile.width as usize, tile.y as usize + i / tile.width as usize);
-            self.rgb[(y * w + x) * 3..][..3].copy_from_slice(&to_srgb8(c));
+            self.rgb[(y * w + x) * 3..][..3].copy_from_slice(&to_srgb8(self.film.developed(c, false)));
         }
         self.tiles_done += 1;
         self.rays += tile.rays;
@@ -206,6 +213,7 @@ fn run_job(
         let mut shown = lock();
         shown.scene = Some(scene.clone());
         shown.settings = Some(settings);
+        shown.film = job.film;
     }
     let tiles_total = crate::progressive::tiles(settings.width, settings.height).len();
     lock().start(&settings, tiles_total);
