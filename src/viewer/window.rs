@@ -312,11 +312,11 @@ impl<E: Example> Viewer<E> {
         text += &match scene.closest_hit(&ray) {
             Some((info, node)) => {
                 let index = scene.nodes.iter().position(|n| std::ptr::eq(n, node)).unwrap_or_default();
-                let (p, n) = (info.ip, info.normal);
+                let (p, n, (u, v)) = (info.ip, info.normal, info.uv());
                 format!(
                     "; hits node {index} at ({:.3}, {:.3}, {:.3}), distance {:.3}, normal ({:.3}, {:.3}, {:.3}), u/v ({:.3}, \
                      {:.3})",
-                    p.x, p.y, p.z, info.distance, n.x, n.y, n.z, info.u, info.v
+                    p.x, p.y, p.z, info.distance, n.x, n.y, n.z, u, v
                 )
             }
             None => "; hits nothing (the environment)".to_string(),
