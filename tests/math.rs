@@ -80,7 +80,7 @@ fn bilinear_filtering_of_a_2x2_image() {
 fn plane_uv_are_world_x_and_z() {
     let plane = Plane::new(1.0, 100.0);
     let hit = plane.intersect(&Ray::new(Vector::new(3.0, 10.0, -7.0), -Vector::Y), f32::INFINITY).unwrap();
-    assert_eq!((hit.u, hit.v, hit.ip.y), (3.0, -7.0, 1.0));
+    assert_eq!((hit.uv(), hit.ip.y), ((3.0, -7.0), 1.0));
     assert!((hit.distance - 9.0).abs() < 1e-6);
     // Outside the limit, or parallel to the plane: no hit.
     assert!(plane.intersect(&Ray::new(Vector::new(300.0, 10.0, 0.0), -Vector::Y), f32::INFINITY).is_none());
@@ -94,15 +94,14 @@ fn sphere_uv_are_longitude_and_latitude() {
         let start = Vector::new(0.0, 5.0, 0.0) + dir * 10.0;
         s.intersect(&Ray::new(start, -dir), f32::INFINITY).unwrap()
     };
+    let uv_at = |dir: Vector| hit_at(dir).uv();
     let top = hit_at(Vector::Y);
-    assert!(top.v.abs() < 1e-6 && (top.normal - Vector::Y).length() < 1e-6);
-    let bottom = hit_at(-Vector::Y);
-    assert!((bottom.v - 1.0).abs() < 1e-6);
-    let minus_x = hit_at(-Vector::X);
-    assert!(minus_x.u.min(1.0 - minus_x.u) < 1e-6 && (minus_x.v - 0.5).abs() < 1e-6);
-    let plus_z = hit_at(Vector::Z);
-    assert!((plus_z.u - 0.75).abs() < 1e-6);
-    assert!((hit_at(Vector::X).u - 0.5).abs() < 1e-6);
+    assert!(top.uv().1.abs() < 1e-6 && (top.normal - Vector::Y).length() < 1e-6);
+    assert!((uv_at(-Vector::Y).1 - 1.0).abs() < 1e-6);
+    let (u, v) = uv_at(-Vector::X);
+    assert!(u.min(1.0 - u) < 1e-6 && (v - 0.5).abs() < 1e-6);
+    assert!((uv_at(Vector::Z).0 - 0.75).abs() < 1e-6);
+    assert!((uv_at(Vector::X).0 - 0.5).abs() < 1e-6);
     assert!((top.distance - 8.0).abs() < 1e-5);
 }
 
@@ -112,13 +111,15 @@ fn cube_uv_span_each_face() {
     // Hit the +Z face at x = 0.5, y = -0.5.
     let hit = c.intersect(&Ray::new(Vector::new(0.5, -0.5, 5.0), -Vector::Z), f32::INFINITY).unwrap();
     assert_eq!(hit.normal, Vector::Z);
-    assert!((hit.u - 0.75).abs() < 1e-6 && (hit.v - 0.25).abs() < 1e-6);
+    let (u, v) = hit.uv();
+    assert!((u - 0.75).abs() < 1e-6 && (v - 0.25).abs() < 1e-6);
     // From inside, the exit face and its outward normal.
     let inside = c.intersect(&Ray::new(Vector::ZERO, Vector::X), f32::INFINITY).unwrap();
     assert_eq!((inside.normal, inside.distance), (Vector::X, 1.0));
     // The +X face: u follows z, v follows y.
     let x_face = c.intersect(&Ray::new(Vector::new(5.0, 0.5, -0.5), -Vector::X), f32::INFINITY).unwrap();
-    assert!((x_face.u - 0.25).abs() < 1e-6 && (x_face.v - 0.75).abs() < 1e-6);
+    let (u, v) = x_face.uv();
+    assert!((u - 0.25).abs() < 1e-6 && (v - 0.75).abs() < 1e-6);
 }
 
 #[test]
@@ -132,4 +133,45 @@ fn camera_follows_the_course_conventions() {
     let corner = Camera::default().frame(640, 480).get_screen_ray(0.0, 0.0).dir;
     assert!((corner.dot(Vector::Z) - 45f32.to_radians().cos()).abs() < 1e-6);
     assert!(corner.x < 0.0 && corner.y > 0.0, "pixel (0, 0) is the top left");
+}
+
+#[test]
+fn floor_without_the_library_call_is_the_library_floor() {
+    let mut rng = lecture6::rng::Rng::for_keys(&[3]);
+    let specials =
+        [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.0f32.powi(23), -(2.0f32.powi(23)), 8388607.5, -8388607.5, 1e30, -1e30];
+    let random = (0..10_000).map(|_| f32::from_bits(rng.next_u32())).filter(|x| x.is_finite());
+    for x in specials.into_iter().chain(random) {
+        assert_eq!(lecture6::math::floor(x), x.floor(), "floor({x})");
+    }
+    assert!(lecture6::math::floor(f32::NAN).is_nan());
+}
+
+#[test]
+fn a_ray_origin_moves_off_the_surface_by_the_error_and_one_to_two_floats() {
+    use lecture6::math::offset_ray_origin;
+    let mut rng = lecture6::rng::Rng::for_keys(&[4]);
+    let mut random = |scale: f32| (rng.next_f32() - 0.5) * scale;
+    for i in 0..20_000 {
+        let scale = [1e-4, 1.0, 1e6, 1e-30][i % 4];
+        let p = Vector::new(random(scale), if i % 5 == 0 { 0.0 } else { random(scale) }, random(scale));
+        let n = match i % 7 {
+            0 => Vector::Y,
+            1 => -Vector::X,
+            _ => Vector::new(random(2.0), random(2.0), random(2.0)).normalize(),
+        };
+        let error = [0.0, 1e-7 * scale, random(scale).abs()][i % 3];
+        let q = offset_ray_origin(p, n, error);
+        let moved = p + n.abs().element_sum() * error * n;
+        for k in 0..3 {
+            let (a, b) = (moved[k], q[k]);
+            if n[k] == 0.0 {
+                assert_eq!(b, a, "{p} {n} {error}");
+            } else {
+                let steps = [a.next_up(), a.next_up().next_up(), a.next_down(), a.next_down().next_down()];
+                let allowed = if n[k] > 0.0 { &steps[..2] } else { &steps[2..] };
+                assert!(allowed.contains(&b), "axis {k}: {a} -> {b} along {n}");
+            }
+        }
+    }
 }

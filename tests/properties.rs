@@ -137,7 +137,7 @@ proptest! {
         for g in geometries() {
             if let Some(hit) = g.intersect(&ray, f32::INFINITY) {
                 prop_assert!(hit.distance > 0.0 && hit.distance.is_finite());
-                prop_assert!(hit.ip.is_finite() && hit.u.is_finite() && hit.v.is_finite());
+                prop_assert!(hit.ip.is_finite() && hit.uv().0.is_finite() && hit.uv().1.is_finite());
                 prop_assert!(hit.error.is_finite() && hit.error >= 0.0);
                 prop_assert!((hit.normal.length() - 1.0).abs() < 1e-4, "normal {}", hit.normal);
             }

@@ -203,7 +203,7 @@ fn shaders_and_textures_render_with_their_properties() {
         let (info, node) = file.scene.closest_hit(&ray).unwrap();
         assert!(near(info.ip, Vector::new(x, -1.0, -5.0)), "the floor at {}", info.ip);
         let mut ctx = lecture6::scene::TraceContext::new(&file.scene, lecture6::rng::Rng::for_keys(&[1]));
-        (info.u, node.shader.shade(&ray, &info, &mut ctx))
+        (info.uv().0, node.shader.shade(&ray, &info, &mut ctx))
     };
     let (a, b) = (floor_at(0.5).1, floor_at(1.5).1);
     assert!(

@@ -2,7 +2,7 @@
 //! face (for the X faces u follows Z and v follows Y; for Y faces u = X, v = Z; for Z faces u = X, v = Y).
 //! Scale and rotate it with a node transform to get any box.
 
-use super::{Aabb, Geometry, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::math::Vector;
 use crate::ray::Ray;
 
@@ -38,13 +38,9 @@ impl Cube {
     }
 }
 
-impl Geometry for Cube {
-    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        let (t_in, axis_in, t_out, axis_out) = self.slabs(ray)?;
-        let (t, axis) = if t_in > 0.0 { (t_in, axis_in) } else { (t_out, axis_out) };
-        if !(t > 0.0 && t < t_max) {
-            return None;
-        }
+impl Cube {
+    /// The surface at the hit at ray parameter `t` on a face perpendicular to `axis`.
+    fn info(&self, ray: &Ray, t: f32, axis: usize) -> IntersectionInfo {
         let mut ip = ray.at(t);
         let local = ip - self.center;
         let sign = if local[axis] >= 0.0 { 1.0 } else { -1.0 };
@@ -59,7 +55,27 @@ impl Geometry for Cube {
         };
         let side = 2.0 * self.half_side;
         let uv = |k: usize| ((local[k] + self.half_side) / side).clamp(0.0, 1.0);
-        Some(IntersectionInfo::new(ip, normal, t, (uv(a), uv(b))))
+        IntersectionInfo::new(ip, normal, t, (uv(a), uv(b)))
+    }
+}
+
+impl Geometry for Cube {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
+    }
+
+    /// The ray parameter and the axis of the face hit; the point, normal and u/v wait for the winner.
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        let (t_in, axis_in, t_out, axis_out) = self.slabs(ray)?;
+        let (t, axis) = if t_in > 0.0 { (t_in, axis_in) } else { (t_out, axis_out) };
+        (t > 0.0 && t < t_max).then_some(Hit::Pending { distance: t, part: axis as u32, coords: [0.0; 3] })
+    }
+
+    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match *hit {
+            Hit::Pending { distance, part, .. } => Some(self.info(ray, distance, part as usize)),
+            Hit::Complete(info) => Some(info),
+        }
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

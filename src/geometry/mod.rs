@@ -27,7 +27,8 @@ use crate::ray::Ray;
 /// What a ray hit (the course's `IntersectionInfo`).
 ///
 /// A shape makes one with [`IntersectionInfo::new`] (and [`IntersectionInfo::with_geometric_normal`] when
-/// its shading normal differs from the surface's own).
+/// its shading normal differs from the surface's own, [`IntersectionInfo::with_tex_coords`] when its u/v
+/// are worth computing only when read). Shaders and textures read u/v with [`IntersectionInfo::uv`].
 #[derive(Clone, Copy, Debug)]
 pub struct IntersectionInfo {
     /// The hit point.
@@ -39,11 +40,39 @@ pub struct IntersectionInfo {
     pub geometric_normal: Vector,
     /// The ray parameter of the hit: its distance from the ray's start when the ray direction is unit.
     pub distance: f32,
-    /// Texture coordinates.
-    pub u: f32,
-    pub v: f32,
     /// An absolute bound on the rounding error of `ip`, in each coordinate.
     pub error: f32,
+    /// The texture coordinates, or what they are computed from: read them with [`IntersectionInfo::uv`].
+    pub tex_coords: TexCoords,
+}
+
+/// The texture coordinates of a hit, as the shape gives them: the coordinates themselves
+/// ([`TexCoords::new`]), or up to three numbers and the function that makes u/v of them
+/// ([`TexCoords::deferred`]), for a shape whose u/v cost more than the shaders that never read them should
+/// pay (the sphere's take two inverse trigonometric functions; glass and mirrors ignore them). Either way
+/// [`TexCoords::get`] gives the same u/v.
+#[derive(Clone, Copy, Debug)]
+pub struct TexCoords {
+    args: [f32; 3],
+    compute: fn([f32; 3]) -> (f32, f32),
+}
+
+impl TexCoords {
+    /// The coordinates (u, v).
+    pub fn new(u: f32, v: f32) -> TexCoords {
+        TexCoords { args: [u, v, 0.0], compute: |[u, v, _]| (u, v) }
+    }
+
+    /// Coordinates that `compute(args)` gives, computed only when read.
+    pub fn deferred(args: [f32; 3], compute: fn([f32; 3]) -> (f32, f32)) -> TexCoords {
+        TexCoords { args, compute }
+    }
+
+    /// (u, v).
+    #[inline]
+    pub fn get(&self) -> (f32, f32) {
+        (self.compute)(self.args)
+    }
 }
 
 impl IntersectionInfo {
@@ -59,10 +88,20 @@ impl IntersectionInfo {
             normal,
             geometric_normal: normal,
             distance,
-            u: uv.0,
-            v: uv.1,
             error: gamma(3) * max_abs(ip),
+            tex_coords: TexCoords::new(uv.0, uv.1),
         }
+    }
+
+    /// The texture coordinates (u, v) of the hit (computed here if the shape deferred them).
+    #[inline]
+    pub fn uv(&self) -> (f32, f32) {
+        self.tex_coords.get()
+    }
+
+    /// The same hit with texture coordinates given as [`TexCoords`] (deferred ones, say).
+    pub fn with_tex_coords(self, tex_coords: TexCoords) -> IntersectionInfo {
+        IntersectionInfo { tex_coords, ..self }
     }
 
     /// The same hit with a larger (or smaller, when the shape knows better) absolute error bound on `ip`.

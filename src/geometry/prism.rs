@@ -9,7 +9,7 @@
 //! The prism is the intersection of five half-spaces (three side faces, two caps), so it is intersected by
 //! clipping the ray against each plane, as the course's cube is by slabs.
 
-use super::{Aabb, Geometry, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::math::{Vector, gamma, max_abs};
 use crate::ray::Ray;
 
@@ -77,13 +77,9 @@ impl Prism {
     }
 }
 
-impl Geometry for Prism {
-    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        let (t_in, face_in, t_out, face_out) = self.clip(ray)?;
-        let (t, face) = if t_in > 0.0 { (t_in, face_in) } else { (t_out, face_out) };
-        if !(t > 0.0 && t < t_max) {
-            return None;
-        }
+impl Prism {
+    /// The surface at the hit at ray parameter `t` on face `face`.
+    fn info(&self, ray: &Ray, t: f32, face: usize) -> IntersectionInfo {
         let (normal, offset) = self.planes[face];
         // Project the hit onto its face, so that only the projection's rounding remains.
         let hit = ray.at(t);
@@ -95,7 +91,27 @@ impl Geometry for Prism {
         } else {
             ((ip.y + self.half_height) / (2.0 * self.half_height)).clamp(0.0, 1.0)
         };
-        Some(IntersectionInfo::new(ip, normal, t, (u, v)).with_error(gamma(7) * (max_abs(ip) + offset.abs())))
+        IntersectionInfo::new(ip, normal, t, (u, v)).with_error(gamma(7) * (max_abs(ip) + offset.abs()))
+    }
+}
+
+impl Geometry for Prism {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
+    }
+
+    /// The ray parameter and the face hit; the point, normal and u/v wait for the winner.
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        let (t_in, face_in, t_out, face_out) = self.clip(ray)?;
+        let (t, face) = if t_in > 0.0 { (t_in, face_in) } else { (t_out, face_out) };
+        (t > 0.0 && t < t_max).then_some(Hit::Pending { distance: t, part: face as u32, coords: [0.0; 3] })
+    }
+
+    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match *hit {
+            Hit::Pending { distance, part, .. } => Some(self.info(ray, distance, part as usize)),
+            Hit::Complete(info) => Some(info),
+        }
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

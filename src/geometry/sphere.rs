@@ -2,7 +2,7 @@
 //! (u = longitude / 2 pi, measured from -X through +Z; v = 0 at the top, 1 at the bottom), as in the course.
 //! Scale it with a node transform to get an ellipsoid.
 
-use super::{Aabb, Geometry, Hit, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo, TexCoords};
 use crate::math::{Vector, gamma, max_abs};
 use crate::ray::Ray;
 use std::f32::consts::{FRAC_1_PI, PI};
@@ -53,10 +53,18 @@ impl Sphere {
         // then the side facing the ray is the only sensible normal.
         let normal = d.try_normalize().unwrap_or_else(|| -ray.dir.normalize());
         let ip = self.center + normal * self.radius;
-        let u = (PI + normal.z.atan2(normal.x)) * (0.5 * FRAC_1_PI);
-        let v = 1.0 - (0.5 * PI + normal.y.clamp(-1.0, 1.0).asin()) * FRAC_1_PI;
-        IntersectionInfo::new(ip, normal, t, (u, v)).with_error(gamma(5) * (max_abs(self.center) + self.radius))
+        IntersectionInfo::new(ip, normal, t, (0.0, 0.0))
+            .with_error(gamma(5) * (max_abs(self.center) + self.radius))
+            .with_tex_coords(TexCoords::deferred(normal.to_array(), spherical_uv))
     }
+}
+
+/// The course's u/v of the point with unit normal `[x, y, z]` on a sphere: longitude and latitude, computed
+/// only when a shader reads them (two inverse trigonometric functions, which glass and mirrors never need).
+fn spherical_uv([x, y, z]: [f32; 3]) -> (f32, f32) {
+    let u = (PI + z.atan2(x)) * (0.5 * FRAC_1_PI);
+    let v = 1.0 - (0.5 * PI + y.clamp(-1.0, 1.0).asin()) * FRAC_1_PI;
+    (u, v)
 }
 
 impl Geometry for Sphere {
@@ -64,7 +72,7 @@ impl Geometry for Sphere {
         self.hit(ray, t_max).map(|hit| self.info(ray, hit.distance()))
     }
 
-    /// Only the ray parameter: the normal and the spherical u/v wait for the winner.
+    /// Only the ray parameter: the normal waits for the winner, and its u/v for a shader that reads them.
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let (t0, t1) = self.roots(ray)?;
         let t = if t0 > 0.0 { t0 } else { t1 };

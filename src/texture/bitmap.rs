@@ -44,6 +44,7 @@ impl BitmapTexture {
 
 impl Texture for BitmapTexture {
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
-        self.bitmap.sample(info.u / self.scaling, info.v / self.scaling, self.filter, self.wrap)
+        let (u, v) = info.uv();
+        self.bitmap.sample(u / self.scaling, v / self.scaling, self.filter, self.wrap)
     }
 }

@@ -4,6 +4,7 @@
 use super::Texture;
 use crate::color::Color;
 use crate::geometry::IntersectionInfo;
+use crate::math::floor;
 use crate::ray::Ray;
 
 #[derive(Clone, Copy, Debug)]
@@ -16,8 +17,9 @@ pub struct CheckerTexture {
 
 impl Texture for CheckerTexture {
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
-        let x = (info.u * self.scaling).floor() as i64;
-        let y = (info.v * self.scaling).floor() as i64;
+        let (u, v) = info.uv();
+        let x = floor(u * self.scaling) as i64;
+        let y = floor(v * self.scaling) as i64;
         if (x + y).rem_euclid(2) == 0 { self.color1 } else { self.color2 }
     }
 }
