@@ -8,7 +8,9 @@
 //! - the red ball and the wooden box between them: reflections of near things stay sharper than those of
 //!   far things (the cone widens with distance);
 //! - the noise: `--glossy-samples 2` shows what too few samples do, `--sampler random` the slide's
-//!   independent disc points (noisier at the same time than the default `stratified`).
+//!   independent disc points, `--sampler stratified` well-spread points for each camera ray, and the default
+//!   `joint` well-spread points for the whole pixel, shared out between its camera rays (the least noise at
+//!   the same time; docs/measurements.md).
 //!
 //! Try: `--glossiness 0.9`, `--glossy-samples 64 --spp 1`, `--sampler random --compare expected/glossy.png`,
 //! `--env textures/sky_cubemap`.
@@ -30,14 +32,15 @@ pub struct Options {
     /// Reflected rays averaged per camera ray on a glossy sphere (the slide's num_samples).
     #[arg(long, default_value_t = 4)]
     pub glossy_samples: u32,
-    /// How the disc points are chosen: random (independent, as on the slide) or stratified.
-    #[arg(long, value_enum, default_value_t = DiscSampler::Stratified)]
+    /// How the disc points are chosen: random (independent, as on the slide), stratified (for each camera
+    /// ray) or joint (stratified over the whole pixel's camera rays).
+    #[arg(long, value_enum, default_value_t = DiscSampler::Joint)]
     pub sampler: DiscSampler,
 }
 
 impl Example for Options {
     // 16 anti-aliasing samples x 4 glossy samples lie on the measured error-versus-time Pareto front
-    // (docs/studies.md).
+    // (docs/measurements.md).
     const DEFAULT_SPP: u32 = 16;
 
     fn scene(&self) -> Result<Scene> {

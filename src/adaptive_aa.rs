@@ -8,11 +8,16 @@
 //! it centres on the pixel's centre, where the workbook's single sample goes: the first sample is the
 //! ordinary one through the centre, and the picture is not shifted by 0.2 pixels against the workbook's
 //! other renders.
+//!
+//! Samplers that spread their points over a whole pixel ([`PixelSample`]): every pixel is rendered as one
+//! that may get [`SAMPLES_PER_REFINED_PIXEL`] samples, the first pass tracing sample 0 of them and this
+//! pass samples 1 to 4, with the pixel's own key; so a refined pixel's five samples share one point set, as
+//! five samples of an ordinary render would.
 
 use crate::camera::CameraFrame;
-use crate::render::{Frame, RenderSettings};
+use crate::render::{Frame, RenderSettings, pixel_key};
 use crate::rng::Rng;
-use crate::scene::{Counters, Scene, TraceContext};
+use crate::scene::{Counters, PixelSample, Scene, TraceContext};
 use rayon::prelude::*;
 
 /// The largest difference from a neighbour (per channel, after clamping both to 1) a pixel may have
@@ -22,6 +27,9 @@ pub const THRESHOLD: f32 = 0.1;
 /// Where the four extra samples go in a marked pixel, from its top-left corner (the first sample is at
 /// its centre, (0.5, 0.5)).
 pub const EXTRA_SAMPLES: [(f32, f32); 4] = [(0.2, 0.2), (0.8, 0.2), (0.2, 0.8), (0.8, 0.8)];
+
+/// The samples of a refined pixel: its first and the extra ones.
+pub const SAMPLES_PER_REFINED_PIXEL: u32 = 1 + EXTRA_SAMPLES.len() as u32;
 
 /// A salt for the random streams of the extra samples (a glossy surface draws random numbers).
 const AA_KEY: u64 = 0x4144_4150_5449_5645;
@@ -61,11 +69,13 @@ pub fn refine(scene: &Scene, camera: &CameraFrame, settings: &RenderSettings, fr
             for (x, pixel) in row.iter_mut().enumerate().filter(|(x, _)| marks[*x]) {
                 let rng = Rng::for_keys(&[settings.seed, x as u64, y as u64, AA_KEY]);
                 let mut ctx = TraceContext::new(scene, rng);
+                let pixel_key = pixel_key(&[settings.seed, x as u64, y as u64]);
                 let mut sum = *pixel;
-                for (dx, dy) in EXTRA_SAMPLES {
+                for (index, (dx, dy)) in (1..).zip(EXTRA_SAMPLES) {
+                    ctx.pixel_sample = Some(PixelSample { index, count: SAMPLES_PER_REFINED_PIXEL, pixel_key });
                     sum += settings.sample(ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy)));
                 }
-                *pixel = sum / 5.0;
+                *pixel = sum / SAMPLES_PER_REFINED_PIXEL as f32;
                 counters.add(&ctx.counters);
             }
             counters

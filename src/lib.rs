@@ -20,7 +20,7 @@
 //! | [`progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
-//! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, and stratified) |
+//! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
 //! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | `viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
 //! | [`cli`] | the command line every example shares, and the `run` that is every example's `main` |

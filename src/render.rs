@@ -20,8 +20,8 @@ use crate::error::{Error, Result};
 use crate::photon_map::PhotonStats;
 use crate::ray::Ray;
 use crate::ray_tree::RayTree;
-use crate::rng::{Rng, shuffled_index};
-use crate::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
+use crate::rng::{Rng, key_of, mix64, shuffled_index};
+use crate::scene::{Counters, PixelSample, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -418,6 +418,16 @@ pub fn render_rect(
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
 const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
 
+/// A salt for the pixels' sample-set keys, so that they are unrelated to the seeds of the pixels' streams.
+const SAMPLE_SET_KEY: u64 = 0x5345_5453_414d_504c;
+
+/// The [`PixelSample::pixel_key`] of the pixel (or wavelength pass of a pixel) whose random stream is keyed
+/// by `stream_keys` (see [`Rng::for_keys`]). The adaptive anti-aliasing pass asks for it again to give a
+/// refined pixel's extra samples the same set.
+pub fn pixel_key(stream_keys: &[u64]) -> u64 {
+    mix64(key_of(stream_keys) ^ SAMPLE_SET_KEY)
+}
+
 /// Renders the pixels of one row: the samples of each pixel, in every wavelength pass the plan asks for.
 struct PixelTracer<'a> {
     scene: &'a Scene,
@@ -425,6 +435,8 @@ struct PixelTracer<'a> {
     settings: &'a RenderSettings,
     plan: &'a SpectralPlan,
     stratifier: Stratifier,
+    /// The [`PixelSample::count`] of every pixel: the spp, or what adaptive anti-aliasing may give a pixel.
+    samples_per_pixel: u32,
     counters: Counters,
     /// The ray tree being recorded for the pixels this tracer renders (`--trace-pixel`), if any.
     recorder: Option<Box<RayTree>>,
@@ -433,16 +445,30 @@ struct PixelTracer<'a> {
 impl<'a> PixelTracer<'a> {
     fn new(scene: &'a Scene, camera: &'a CameraFrame, settings: &'a RenderSettings, plan: &'a SpectralPlan) -> Self {
         let stratifier = Stratifier::new(settings.spp);
-        PixelTracer { scene, camera, settings, plan, stratifier, counters: Counters::default(), recorder: None }
+        let samples_per_pixel =
+            if settings.adaptive_aa { crate::adaptive_aa::SAMPLES_PER_REFINED_PIXEL } else { settings.spp };
+        PixelTracer {
+            scene,
+            camera,
+            settings,
+            plan,
+            stratifier,
+            samples_per_pixel,
+            counters: Counters::default(),
+            recorder: None,
+        }
     }
 
-    /// The average of the pixel's samples, all traced at `wavelength`, with the random stream `rng`.
-    fn samples(&mut self, x: u32, y: u32, rng: Rng, wavelength: Option<f32>) -> Color {
-        let mut ctx = TraceContext::new(self.scene, rng);
+    /// The average of the pixel's samples, all traced at `wavelength`, with the random stream keyed by
+    /// `stream_keys`.
+    fn samples(&mut self, x: u32, y: u32, stream_keys: &[u64], wavelength: Option<f32>) -> Color {
+        let mut ctx = TraceContext::new(self.scene, Rng::for_keys(stream_keys));
+        let pixel_key = pixel_key(stream_keys);
         ctx.recorder = self.recorder.take();
         self.stratifier.start_pixel(&mut ctx.rng);
         let mut sum = Color::BLACK;
         for s in 0..self.settings.spp {
+            ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
             let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
             let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
             sum += self.settings.sample(ctx.raytrace(&ray));
@@ -455,24 +481,27 @@ impl<'a> PixelTracer<'a> {
     fn pixel(&mut self, x: u32, y: u32) -> Color {
         let seed = self.settings.seed;
         match self.plan {
-            SpectralPlan::White => self.samples(x, y, Rng::for_pixel(seed, x, y), None),
+            SpectralPlan::White => self.samples(x, y, &[seed, x as u64, y as u64], None),
             SpectralPlan::Passes(bands) => {
                 let mut sum = [0.0f64; 3];
                 for (k, band) in bands.iter().enumerate() {
-                    let rng = Rng::for_keys(&[seed, x as u64, y as u64, PASS_KEY, k as u64]);
-                    add_weighted(&mut sum, band, self.samples(x, y, rng, Some(band.centre())));
+                    let stream_keys = [seed, x as u64, y as u64, PASS_KEY, k as u64];
+                    add_weighted(&mut sum, band, self.samples(x, y, &stream_keys, Some(band.centre())));
                 }
                 fit_to_gamut(to_color(sum))
             }
             SpectralPlan::Sampled => {
                 let spp = self.settings.spp;
-                let mut ctx = TraceContext::new(self.scene, Rng::for_pixel(seed, x, y));
+                let stream_keys = [seed, x as u64, y as u64];
+                let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
+                let pixel_key = pixel_key(&stream_keys);
                 ctx.recorder = self.recorder.take();
                 self.stratifier.start_pixel(&mut ctx.rng);
                 // Sample s traces band shuffled_index(s): every band once, in an order of the pixel's own.
                 let bands_key = ctx.rng.next_u32();
                 let mut sum = [0.0f64; 3];
                 for s in 0..spp {
+                    ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
                     let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
                     let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
                     let wavelength = Some(band.at(ctx.rng.next_f32()));

@@ -20,10 +20,16 @@ pub fn mix64(mut z: u64) -> u64 {
     z ^ (z >> 31)
 }
 
+/// One 64-bit word for a list of keys (for example seed, x, y, pass): lists that differ anywhere give
+/// unrelated words.
+pub fn key_of(keys: &[u64]) -> u64 {
+    keys.iter().fold(0x243f_6a88_85a3_08d3_u64, |h, &k| mix64(h ^ k))
+}
+
 impl Rng {
     /// A generator for one stream identified by `keys` (for example seed, x, y, pass).
     pub fn for_keys(keys: &[u64]) -> Rng {
-        let h = keys.iter().fold(0x243f_6a88_85a3_08d3_u64, |h, &k| mix64(h ^ k));
+        let h = key_of(keys);
         Rng(Pcg32::new(h, mix64(h) | 1))
     }
     /// The generator of pixel (x, y) for a render with the given seed.

@@ -205,11 +205,31 @@ impl Counters {
     }
 }
 
+/// Which of its pixel's camera samples is being traced: sample `index` of the `count` the pixel gets. A
+/// shader that takes many samples of its own (a glossy mirror's disc points) can spread them over the whole
+/// pixel with it, one well-distributed set for all the pixel's camera samples instead of one per camera ray
+/// (see [`crate::sampling::DiscSampler::Joint`]). Shaders that do not need it ignore it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelSample {
+    /// This camera sample's index, `0..count`.
+    pub index: u32,
+    /// How many camera samples the pixel gets in all: the `spp`, or, under the course's adaptive
+    /// anti-aliasing, the most a pixel may get ([`crate::adaptive_aa::SAMPLES_PER_REFINED_PIXEL`]): a pixel
+    /// that is never refined uses only sample 0 of them.
+    pub count: u32,
+    /// A random word of the pixel (and of the wavelength pass), the same for all its camera samples and
+    /// unrelated to its neighbours': what a sampler randomises its pixel-wide set with.
+    pub pixel_key: u64,
+}
+
 /// The state a shader sees while one pixel is being rendered.
 pub struct TraceContext<'a> {
     pub scene: &'a Scene,
     /// The random generator of the current pixel.
     pub rng: Rng,
+    /// The camera sample being traced, when the context traces a pixel's samples: the renderer sets it
+    /// before each camera ray. `None` (the default) when the rays belong to no pixel (tests, benchmarks).
+    pub pixel_sample: Option<PixelSample>,
     pub counters: Counters,
     /// The ray tree being recorded (`--trace-pixel`), if any: see [`crate::ray_tree`].
     pub recorder: Option<Box<RayTree>>,
@@ -217,7 +237,7 @@ pub struct TraceContext<'a> {
 
 impl<'a> TraceContext<'a> {
     pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
-        TraceContext { scene, rng, counters: Counters::default(), recorder: None }
+        TraceContext { scene, rng, pixel_sample: None, counters: Counters::default(), recorder: None }
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the

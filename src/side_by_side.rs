@@ -1,7 +1,7 @@
 //! Side by side (`--side-by-side "OPTIONS"`): the example rendered twice, with its own options (A) and with
 //! the alternative ones added (B), written as one picture A | B | difference heat map, with a caption under
 //! each part: `fresnel --side-by-side "--fresnel exact"` shows what Schlick's approximation costs,
-//! `glossy --side-by-side "--sampler random"` what stratified disc samples gain.
+//! `glossy --side-by-side "--sampler random"` what disc samples stratified over the whole pixel gain.
 //!
 //! The captions are drawn with the DejaVu Sans Mono font the repository bundles (`benches/fonts/`, its
 //! licence beside it), through `ab_glyph`, so nothing depends on the fonts of the machine.

@@ -36,9 +36,9 @@ fn different_seeds_give_different_anti_aliasing() {
 }
 
 #[test]
-fn glossy_is_identical_for_one_and_two_threads_with_either_sampler() {
+fn glossy_is_identical_for_one_and_two_threads_with_every_sampler() {
     use common::examples::glossy;
-    for sampler in ["random", "stratified"] {
+    for sampler in ["random", "stratified", "joint"] {
         let args = |threads| ["--threads", threads, "--width", "96", "--height", "72", "--sampler", sampler];
         let one = common::render::<glossy::Options>(&args("1"));
         let two = common::render::<glossy::Options>(&args("2"));

@@ -56,6 +56,8 @@ fn tiles_add_up_to_the_plain_render() {
     same_as_plain_render::<glossy::Options>(&["--width", "80", "--height", "45", "--spp", "4"], 1);
     // The adaptive pass, after the tiles.
     same_as_plain_render::<fresnel::Options>(&["--width", "60", "--height", "45", "--spp", "1", "--adaptive-aa"], 2);
+    // Glossy samples shared out over a pixel whose extra samples come in the adaptive pass.
+    same_as_plain_render::<glossy::Options>(&["--width", "48", "--height", "36", "--spp", "1", "--adaptive-aa"], 2);
 }
 
 #[test]

@@ -19,8 +19,10 @@
 //! - a sample under the surface is dropped and the average is taken over the samples kept (the slide only
 //!   says it must be caught). Should every sample of a shading point be dropped (possible at grazing angles
 //!   with a low glossiness), the exact mirror ray is traced instead, so the surface never turns black;
-//! - the disc points may be stratified ([`DiscSampler::Stratified`], the default) rather than independent,
-//!   which gives the same picture with markedly less noise (see `benches/error_vs_time.rs` and the README);
+//! - the disc points may be stratified over the whole pixel ([`DiscSampler::Joint`], the default: the
+//!   `num_samples` points of each camera ray are one block of a set shared by all the pixel's camera rays)
+//!   or per shading point ([`DiscSampler::Stratified`]) rather than independent, which gives the same
+//!   picture with markedly less noise (see `benches/error_vs_time.rs` and docs/measurements.md);
 //! - each spawned ray's `weight` is scaled by the full multiplier, not by its 1/N share of the average, as
 //!   every averaging shader does for adaptive depth control (`Scene::min_ray_weight`): pruning the samples
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
@@ -114,7 +116,14 @@ impl Shader for Reflection {
         let num_samples =
             if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
-        let disc = DiscSamples::new(self.sampler, &mut ctx.rng);
+        // The first bounce of a camera ray may share its pixel's set of points (the joint sampler); deeper
+        // bounces take a set of their own.
+        let disc = match ctx.pixel_sample {
+            Some(sample) if ray.depth == 0 => {
+                DiscSamples::for_pixel_sample(self.sampler, &sample, num_samples, &mut ctx.rng)
+            }
+            _ => DiscSamples::new(self.sampler, &mut ctx.rng),
+        };
         let attenuation = multiplier.max_channel();
         let mut sum = Color::BLACK;
         let mut kept = 0u32;
