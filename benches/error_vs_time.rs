@@ -7,7 +7,7 @@
 //! Each curve sweeps one sample-count option of one example (at 320 x 240; dispersion and the photon map,
 //! the slowest, at 160 x 120) and measures the median wall time of 3 renders and the error against a converged reference
 //! (see `lecture6::study`). It writes `target/study/error_vs_time.md` (the tables, the Pareto-optimal points,
-//! and the equal-time error ratio of the two glossy samplers) and `target/study/error_vs_time.png` (log-log
+//! and the equal-time error ratios of the three glossy samplers) and `target/study/error_vs_time.png` (log-log
 //! charts of error versus time). References are cached in `target/study/` and rendered again whenever the
 //! program is rebuilt. The whole run takes about a minute on 2 idle cores (2.5 minutes on busy ones).
 //!
@@ -71,12 +71,31 @@ fn sweeps() -> Vec<Sweep> {
             &[1, 4, 16, 64],
             &GLOSSY_REFERENCE,
         ),
-        glossy_samples("--spp 4", &["--spp", "4"], &[1, 2, 4, 8, 16, 32], &GLOSSY_REFERENCE),
-        glossy_samples("--spp 16", &["--spp", "16"], &[1, 2, 4, 8], &GLOSSY_REFERENCE),
+        glossy_samples(
+            "--spp 4, joint",
+            &["--spp", "4", "--sampler", "joint"],
+            &[1, 2, 4, 8, 16, 32],
+            &GLOSSY_REFERENCE,
+        ),
         glossy_samples(
             "--spp 4, random",
             &["--spp", "4", "--sampler", "random"],
             &[1, 2, 4, 8, 16, 32],
+            &GLOSSY_REFERENCE,
+        ),
+        // The example's 16 spp with each of the three samplers: what sharing one set of disc points between
+        // a pixel's camera rays gains (the pixel-centre curves below cannot show it: one camera ray per pixel).
+        glossy_samples("--spp 16, joint", &["--spp", "16", "--sampler", "joint"], &[1, 2, 4, 8, 16], &GLOSSY_REFERENCE),
+        glossy_samples(
+            "--spp 16, stratified",
+            &["--spp", "16", "--sampler", "stratified"],
+            &[1, 2, 4, 8, 16],
+            &GLOSSY_REFERENCE,
+        ),
+        glossy_samples(
+            "--spp 16, random",
+            &["--spp", "16", "--sampler", "random"],
+            &[1, 2, 4, 8, 16],
             &GLOSSY_REFERENCE,
         ),
         // Through the pixel centres only, so that the error is the glossy noise alone: the two samplers.
@@ -162,7 +181,9 @@ fn main() {
         rayon::current_num_threads()
     );
     report += &study::markdown_table(&all);
-    report += &sampler_comparison(&curves);
+    for comparison in &SAMPLER_COMPARISONS {
+        report += &sampler_comparison(&curves, comparison);
+    }
     let table_path = dir.join("error_vs_time.md");
     std::fs::write(&table_path, &report)
         .unwrap_or_else(|e| fail(&lecture6::Error::file("cannot write", &table_path, e)));
@@ -183,34 +204,67 @@ fn fail(e: &lecture6::Error) -> ! {
     std::process::exit(2)
 }
 
-/// The equal-time comparison of the glossy samplers: for each point of the stratified curve, the RMSE the
-/// random curve against the same reference reaches in the same time (interpolated in log-log), divided by
-/// the stratified RMSE.
-fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
-    let mut out = String::from(
-        "\n## The slide's random disc points against stratified ones, at equal time\n\n\
-         Pixel-centre curves (the glossy noise alone).\n\n\
-         | setting | time (s) | RMSE stratified | RMSE random, same setting (same rays) | ratio at equal rays | \
-         RMSE random at that time | ratio at equal time |\n\
+/// Two curves of the same group compared at equal time: the title, the curve of the sampler measured and
+/// the curve of the sampler it is measured against (by label).
+struct SamplerComparison {
+    title: &'static str,
+    measured: &'static str,
+    baseline: &'static str,
+}
+
+const SAMPLER_COMPARISONS: [SamplerComparison; 4] = [
+    SamplerComparison {
+        title: "The slide's random disc points against stratified ones, through the pixel centres (the glossy \
+                noise alone)",
+        measured: "stratified",
+        baseline: "random",
+    },
+    SamplerComparison {
+        title: "Joint against the slide's random, whole picture at 16 spp",
+        measured: "--spp 16, joint",
+        baseline: "--spp 16, random",
+    },
+    SamplerComparison {
+        title: "Joint against stratified, whole picture at 16 spp",
+        measured: "--spp 16, joint",
+        baseline: "--spp 16, stratified",
+    },
+    SamplerComparison {
+        title: "Stratified against the slide's random, whole picture at 16 spp",
+        measured: "--spp 16, stratified",
+        baseline: "--spp 16, random",
+    },
+];
+
+/// The equal-time comparison of two glossy samplers: for each point of the measured curve, the RMSE the
+/// baseline curve against the same reference reaches in the same time (interpolated in log-log), divided by
+/// the measured RMSE.
+fn sampler_comparison(curves: &[Vec<Measurement>], comparison: &SamplerComparison) -> String {
+    let SamplerComparison { title, measured, baseline } = comparison;
+    let mut out = format!(
+        "\n## {title}, at equal time\n\n\
+         `{measured}` against `{baseline}`.\n\n\
+         | setting | time (s) | RMSE measured | RMSE baseline, same setting (same rays) | ratio at equal rays | \
+         RMSE baseline at that time | ratio at equal time |\n\
          |---|---:|---:|---:|---:|---:|---:|\n",
     );
-    // (log-ratio sum, count) over all points, and over those with 4 samples or more (one sample per
-    // shading point cannot be stratified).
+    // (log-ratio sum, count) over all points, and over those with 4 glossy samples or more (one sample per
+    // shading point cannot be stratified on its own).
     let mut all = (0.0, 0);
     let mut stratifiable = (0.0, 0);
     let mut equal_rays = (0.0, 0);
-    for stratified in curves.iter().filter(|c| c[0].label == "stratified") {
-        let Some(random) = curves.iter().find(|c| c[0].label == "random" && c[0].same_group(&stratified[0])) else {
+    for new in curves.iter().filter(|c| c[0].label == *measured) {
+        let Some(base) = curves.iter().find(|c| c[0].label == *baseline && c[0].same_group(&new[0])) else {
             continue;
         };
-        let mut random_by_time = random.clone();
-        random_by_time.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
-        for m in stratified {
-            let same_setting = random.iter().find(|r| r.value == m.value).map_or(f64::NAN, |r| r.rmse);
+        let mut base_by_time = base.clone();
+        base_by_time.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
+        for m in new {
+            let same_setting = base.iter().find(|r| r.value == m.value).map_or(f64::NAN, |r| r.rmse);
             if m.value >= 4 && same_setting.is_finite() {
                 equal_rays = (equal_rays.0 + (same_setting / m.rmse).ln(), equal_rays.1 + 1);
             }
-            if let Some(r) = study::rmse_at_time(&random_by_time, m.seconds) {
+            if let Some(r) = study::rmse_at_time(&base_by_time, m.seconds) {
                 let ratio = r / m.rmse;
                 all = (all.0 + ratio.ln(), all.1 + 1);
                 if m.value >= 4 {
@@ -239,7 +293,7 @@ fn sampler_comparison(curves: &[Vec<Measurement>]) -> String {
         if count > 0 {
             let _ = writeln!(
                 out,
-                "\nError ratio (random RMSE / stratified RMSE) {which} ({count}), geometric mean: **{:.2}**",
+                "\nError ratio (baseline RMSE / measured RMSE) {which} ({count}), geometric mean: **{:.2}**",
                 (sum / count as f64).exp()
             );
         }
