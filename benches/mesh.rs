@@ -166,7 +166,8 @@ fn dump_rays(file: &Path, mesh: &Mesh, sets: [RaySet; 3]) {
         put(&[f32::from_bits(rays.len() as u32), f32::from_bits(hits as u32)]);
         rays.iter().for_each(|r| put(&[&r.start.to_array()[..], &r.dir.to_array(), &[t_max(r)]].concat()));
     }
-    if let Err(e) = std::fs::write(file, bytes) {
+    let written = file.parent().map_or(Ok(()), std::fs::create_dir_all).and_then(|()| std::fs::write(file, bytes));
+    if let Err(e) = written {
         eprintln!("mesh: cannot write {}: {e}", file.display());
     }
 }

@@ -14,12 +14,15 @@
  * What it needs: gcc, and Embree 4, which the Python wheel `embreex` bundles (a shared library; the wheel
  * has no headers, so the few declarations used are written out below, as Embree 4's rtcore.h has them):
  *
- *   pip download --no-deps embreex==4.4.0.post1 -d /tmp/embree && cd /tmp/embree && unzip -q embreex-*.whl
- *   LIB=$(echo /tmp/embree/embreex.libs)
+ *   pip download --no-deps embreex==4.4.0.post1 -d /tmp/embree
+ *   unzip -q -d /tmp/embree /tmp/embree/embreex-*.whl
+ *   LIB=/tmp/embree/embreex.libs
  *   gcc -O2 -o /tmp/embree_bench benches/embree/embree_bench.c \
  *       "$LIB"/libembree4-*.so.4 -Wl,-rpath,"$LIB" -lm
  *   cargo bench --bench mesh -- --dump-rays /tmp/rays
  *   /tmp/embree_bench /tmp/rays/teapot.rays /tmp/rays/teapot-100k.rays
+ *
+ * (from the repository's root; the benchmark creates DIR if needed).
  *
  * Options: `--runs N` (default 5). Embree picks its widest kernels the processor has (AVX-512 on the
  * machines of docs/measurements.md) and, as it asks, runs with denormals flushed to zero.
