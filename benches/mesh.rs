@@ -15,9 +15,18 @@
 //! Rates are given by the wall clock and by CPU time (rays per second that each thread actually ran, read
 //! from /proc on Linux): on a machine shared with other work the wall clock understates what the code does,
 //! the CPU time does not.
+//!
+//! `--dump-rays DIR` also writes, for each mesh, its triangles and the three sets of rays to
+//! `DIR/NAME.rays`, so that another ray tracer can be timed on exactly the same work (see
+//! `benches/embree/embree_bench.c`). The file is little-endian: the 8 bytes `L6RAYS1\0`; the triangle
+//! count `n` (u32) and `9 n` f32 (the corners, in the order the BVH stores them); then for the primary,
+//! incoherent and shadow rays in turn, the ray count `m` (u32), how many of them this BVH finds a hit for
+//! (u32), and `7 m` f32 (start x y z, direction x y z, and the largest ray parameter, infinite except for
+//! shadow rays, which end at the light).
 
 use clap::Parser;
 use lecture6::geometry::bvh::Bvh;
+use lecture6::geometry::triangle4::LANES;
 use lecture6::geometry::{Aabb, Geometry, Mesh};
 use lecture6::math::Vector;
 use lecture6::ray::{Ray, spawn_point};
@@ -34,6 +43,9 @@ struct Args {
     /// Runs of each measurement (the median is reported).
     #[arg(long, default_value_t = 5)]
     runs: usize,
+    /// Also write each mesh's triangles and rays to DIR/NAME.rays (see the module documentation).
+    #[arg(long, value_name = "DIR", hide = true)]
+    dump_rays: Option<PathBuf>,
     /// Accepted for `cargo bench` compatibility.
     #[arg(long, hide = true)]
     bench: bool,
@@ -139,7 +151,28 @@ fn measure(rays: &[Ray], threads: usize, runs: usize, f: impl Fn(&Ray) -> bool +
     Rate { wall: mrays / median(wall), cpu: (!cpu.is_empty()).then(|| mrays / median(cpu)), count }
 }
 
-fn bench(path: &Path, runs: usize) -> Result<(), lecture6::Error> {
+/// A set of rays for `--dump-rays`: the rays, each ray's largest parameter, and whether it hits.
+type RaySet<'a> = (&'a [Ray], &'a dyn Fn(&Ray) -> f32, &'a dyn Fn(&Ray) -> bool);
+
+/// Writes the mesh's triangles and the ray sets to `file` (the format is in the module documentation).
+fn dump_rays(file: &Path, mesh: &Mesh, sets: [RaySet; 3]) {
+    let mut bytes = b"L6RAYS1\0".to_vec();
+    let mut put = |values: &[f32]| values.iter().for_each(|v| bytes.extend(v.to_le_bytes()));
+    let triangles = mesh.triangles();
+    put(&[f32::from_bits(triangles.len() as u32)]);
+    triangles.iter().flatten().for_each(|v| put(&v.to_array()));
+    for (rays, t_max, hit) in sets {
+        let hits = rays.iter().filter(|r| hit(r)).count();
+        put(&[f32::from_bits(rays.len() as u32), f32::from_bits(hits as u32)]);
+        rays.iter().for_each(|r| put(&[&r.start.to_array()[..], &r.dir.to_array(), &[t_max(r)]].concat()));
+    }
+    let written = file.parent().map_or(Ok(()), std::fs::create_dir_all).and_then(|()| std::fs::write(file, bytes));
+    if let Err(e) = written {
+        eprintln!("mesh: cannot write {}: {e}", file.display());
+    }
+}
+
+fn bench(path: &Path, runs: usize, dump: Option<&Path>) -> Result<(), lecture6::Error> {
     let mesh = Mesh::load(path)?;
     let b = mesh.bounds().ok_or_else(|| lecture6::Error::file("cannot benchmark mesh", path, "it has no triangles"))?;
     let boxes: Vec<Aabb> = mesh.triangles().iter().map(|t| Aabb::from_points(*t)).collect();
@@ -147,7 +180,7 @@ fn bench(path: &Path, runs: usize) -> Result<(), lecture6::Error> {
         (0..runs)
             .map(|_| {
                 let start = Instant::now();
-                std::hint::black_box(Bvh::build(&boxes));
+                std::hint::black_box(Bvh::build_in_groups(&boxes, LANES));
                 start.elapsed().as_secs_f64()
             })
             .collect(),
@@ -171,10 +204,22 @@ fn bench(path: &Path, runs: usize) -> Result<(), lecture6::Error> {
         })
         .collect();
     let dist = |r: &Ray| (light - r.start).length();
+    let closest = |r: &Ray| mesh.intersect(r, f32::INFINITY).is_some();
+    let any = |r: &Ray| mesh.intersects(r, dist(r));
+    if let Some(dir) = dump {
+        let file = dir.join(path.with_extension("rays").file_name().expect("a mesh file has a name"));
+        let infinite = |_: &Ray| f32::INFINITY;
+        dump_rays(
+            &file,
+            &mesh,
+            [(&primary, &infinite, &closest), (&incoherent, &infinite, &closest), (&shadow, &dist, &any)],
+        );
+        println!("  rays written to {}", file.display());
+    }
     for threads in [1, 2] {
-        let p = measure(&primary, threads, runs, |r| mesh.intersect(r, f32::INFINITY).is_some());
-        let i = measure(&incoherent, threads, runs, |r| mesh.intersect(r, f32::INFINITY).is_some());
-        let s = measure(&shadow, threads, runs, |r| mesh.intersects(r, dist(r)));
+        let p = measure(&primary, threads, runs, closest);
+        let i = measure(&incoherent, threads, runs, closest);
+        let s = measure(&shadow, threads, runs, any);
         println!("  {threads} thread(s): primary    {p}, {} of {} hit", p.count, primary.len());
         println!("  {threads} thread(s): incoherent {i}, {} of {} hit", i.count, incoherent.len());
         println!("  {threads} thread(s): shadow     {s}, {} of {} occluded", s.count, shadow.len());
@@ -201,7 +246,7 @@ fn main() -> std::process::ExitCode {
         }
     };
     for path in &meshes {
-        if let Err(e) = bench(path, args.runs.max(1)) {
+        if let Err(e) = bench(path, args.runs.max(1), args.dump_rays.as_deref()) {
             eprintln!("mesh: error: {e}");
             return std::process::ExitCode::from(2);
         }

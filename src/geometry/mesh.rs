@@ -13,35 +13,34 @@
 //!   `geometric_normal` is the face normal, turned to the side of the shading normal.
 //! - u/v: from the file when it has texture coordinates (as written there), else the barycentric
 //!   coordinates of the hit.
-//! - Intersection: a [`Bvh`] built once at load time, and the watertight ray-triangle test
-//!   of Woop, Benthin and Wald ("Watertight Ray/Triangle Intersection", JCGT 2013): the vertices are moved
-//!   into a frame where the ray runs along +z from the origin, and the 2D edge functions decide the hit.
-//!   Every vertex is transformed the same way whichever triangle it belongs to, and an edge function that
-//!   rounds to exactly zero is recomputed in double precision, edge by edge (the paper and pbrt recompute
-//!   all three, which lets two neighbours evaluate their shared edge differently), so a ray through a
-//!   shared edge or vertex always hits one of the triangles around it: no cracks. The hit point's error
-//!   bound is pbrt-v4's for barycentric interpolation, `gamma(7) * sum |b_i p_i|`, and a hit closer than
-//!   the bound on the error of its `t` is rejected, so a shadow or reflected ray never finds the triangle
-//!   it starts on.
+//! - Intersection: a [`Bvh`] built once at load time, whose leaves hold whole groups of four triangles,
+//!   and the watertight ray-triangle test of Woop, Benthin and Wald, four triangles at a time (see
+//!   [`triangle4`](super::triangle4): no cracks between neighbours, and a hit closer than the rounding
+//!   error of its `t` is rejected, so a shadow or reflected ray never finds the triangle it starts on).
+//!   The hit point's error bound is pbrt-v4's for barycentric interpolation, `gamma(7) * sum |b_i p_i|`.
 
 use super::bvh::Bvh;
 use super::polygon;
+pub use super::triangle4::intersect_triangle;
+use super::triangle4::{LANES, ShearedRay, Triangle4};
 use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::error::{Error, Result};
 use crate::math::{Vector, gamma};
 use crate::ray::Ray;
-use glam::Mat3A;
 use std::path::Path;
 
 /// A triangle mesh with a BVH; see the module documentation.
 #[derive(Clone, Debug)]
 pub struct Mesh {
     bvh: Bvh,
-    /// The vertices of each triangle, in BVH order.
-    triangles: Vec<[Vector; 3]>,
-    /// The vertex normals of each triangle, in BVH order.
+    /// The triangles, four to a [`Triangle4`], in the order of the BVH's slots (slot `i` is lane `i % 4` of
+    /// `triangles[i / 4]`; the slots that pad a leaf to whole groups of four hold no triangle).
+    triangles: Vec<Triangle4>,
+    /// How many slots hold a triangle.
+    triangle_count: usize,
+    /// The vertex normals of the triangle in each slot.
     normals: Vec<[Vector; 3]>,
-    /// The texture coordinates of each triangle, in BVH order; empty when the file has none.
+    /// The texture coordinates of the triangle in each slot; empty when the file has none.
     uvs: Vec<[[f32; 2]; 3]>,
     /// Shade with the face normals instead of the interpolated vertex normals.
     pub faceted: bool,
@@ -77,98 +76,6 @@ fn obj_error(bytes: &[u8], consumed: usize, e: tobj::LoadError) -> String {
 
 /// Index triples into a list of attributes, one per triangle.
 type Indices = [[u32; 3]];
-
-/// The ray in the frame of the watertight test: translated to the origin, its largest direction component
-/// made the z axis, and sheared so that it runs along +z.
-#[derive(Clone, Copy, Debug)]
-pub struct ShearedRay {
-    start: Vector,
-    /// v -> (v[kx] - sx v[kz], v[ky] - sy v[kz], v[kz] / dir[kz]) for v relative to `start`.
-    shear: Mat3A,
-    /// |dir[kz]|: turns the sheared z (in units of the ray parameter) back into lengths, for the error bounds.
-    z_length: f32,
-}
-
-impl ShearedRay {
-    pub fn new(ray: &Ray) -> ShearedRay {
-        let d = ray.dir;
-        let abs = d.abs();
-        let kz = if abs.x > abs.y {
-            if abs.x > abs.z { 0 } else { 2 }
-        } else if abs.y > abs.z {
-            1
-        } else {
-            2
-        };
-        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
-        // Keep the winding (and so the sign of the edge functions) of a right-handed frame.
-        if d[kz] < 0.0 {
-            std::mem::swap(&mut kx, &mut ky);
-        }
-        let (sx, sy, sz) = (d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
-        let mut cols = [Vector::ZERO; 3];
-        cols[kx] = Vector::X;
-        cols[ky] = Vector::Y;
-        cols[kz] = Vector::new(-sx, -sy, sz);
-        ShearedRay { start: ray.start, shear: Mat3A::from_cols(cols[0], cols[1], cols[2]), z_length: d[kz].abs() }
-    }
-
-    /// The watertight test: the ray parameter in (0, `t_max`) and the barycentric coordinates of the hit.
-    #[inline(always)]
-    pub fn hit(&self, tri: &[Vector; 3], t_max: f32) -> Option<(f32, [f32; 3])> {
-        let a = self.shear * (tri[0] - self.start);
-        let b = self.shear * (tri[1] - self.start);
-        let c = self.shear * (tri[2] - self.start);
-        let (e0, e1, e2) = (edge(b, c), edge(c, a), edge(a, b));
-        if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
-            return None;
-        }
-        let det = e0 + e1 + e2;
-        let t_scaled = e0 * a.z + e1 * b.z + e2 * c.z;
-        // Written so that a NaN (a degenerate ray) is a miss.
-        let in_range = if det > 0.0 {
-            t_scaled > 0.0 && t_scaled < t_max * det
-        } else {
-            det < 0.0 && t_scaled < 0.0 && t_scaled > t_max * det
-        };
-        if !in_range {
-            return None;
-        }
-        let inv_det = 1.0 / det;
-        let t = t_scaled * inv_det;
-        // Reject hits within the rounding error of t (pbrt-v4, section 6.8.6).
-        let max_z = a.z.abs().max(b.z.abs()).max(c.z.abs());
-        let max_x = a.x.abs().max(b.x.abs()).max(c.x.abs());
-        let max_y = a.y.abs().max(b.y.abs()).max(c.y.abs());
-        let delta_z = gamma(3) * max_z;
-        // The shear's rounding in x and y scales with the lengths involved, so z enters as a length, not in
-        // units of the ray parameter: a direction that is not of unit length (a ray brought into the
-        // canonical space of a node scaled by 1e4) must not inflate these bounds until every hit is rejected.
-        let max_z_length = max_z * self.z_length;
-        let delta_x = gamma(5) * (max_x + max_z_length);
-        let delta_y = gamma(5) * (max_y + max_z_length);
-        let delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-        let max_e = e0.abs().max(e1.abs()).max(e2.abs());
-        let delta_t = 3.0 * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
-        (t > delta_t).then_some((t, [e0 * inv_det, e1 * inv_det, e2 * inv_det]))
-    }
-}
-
-/// The edge function of the edge from `p` to `q` (twice the signed area of the origin, `p` and `q` in the
-/// sheared frame's xy plane). Where it rounds to exactly zero it is recomputed in double precision, where
-/// the products are exact. The decision depends on the edge alone, so the two triangles that share an edge
-/// always compute the same value (with opposite signs), and a ray cannot pass between them.
-#[inline(always)]
-fn edge(p: Vector, q: Vector) -> f32 {
-    let e = p.x * q.y - p.y * q.x;
-    if e == 0.0 { (p.x as f64 * q.y as f64 - p.y as f64 * q.x as f64) as f32 } else { e }
-}
-
-/// The watertight ray-triangle test on its own: the ray parameter of the hit in (0, `t_max`), if any.
-/// The mesh uses exactly this test; it is public so that tests can compare the BVH with brute force.
-pub fn intersect_triangle(ray: &Ray, tri: &[Vector; 3], t_max: f32) -> Option<f32> {
-    ShearedRay::new(ray).hit(tri, t_max).map(|(t, _)| t)
-}
 
 fn face_normal(tri: &[Vector; 3]) -> Vector {
     (tri[1] - tri[0]).cross(tri[2] - tri[0])
@@ -236,17 +143,28 @@ impl Mesh {
             }
         };
         let boxes: Vec<Aabb> = keep.iter().map(|&i| Aabb::from_points(corners(&triangles[i]))).collect();
-        let (bvh, order) = Bvh::build(&boxes);
-        let original = |k: u32| keep[k as usize];
+        let (bvh, slots) = Bvh::build_in_groups(&boxes, LANES);
+        // The triangle (its index in the file) in each slot.
+        let original: Vec<Option<usize>> = slots.iter().map(|k| k.map(|k| keep[k as usize])).collect();
+        let group = |four: &[Option<usize>]| {
+            let present: Vec<[Vector; 3]> = four.iter().flatten().map(|&t| corners(&triangles[t])).collect();
+            Triangle4::new(&present)
+        };
         Ok(Mesh {
             bvh,
-            triangles: order.iter().map(|&k| corners(&triangles[original(k)])).collect(),
-            normals: order
+            // A leaf's padding comes after its triangles, so the present ones fill the first lanes.
+            triangles: original.chunks(LANES).map(group).collect(),
+            triangle_count: keep.len(),
+            normals: original
                 .iter()
-                .map(|&k| normal_indices[original(k)].map(|i| normal_values[i as usize].normalize_or_zero()))
+                .map(|k| {
+                    k.map_or([Vector::ZERO; 3], |t| {
+                        normal_indices[t].map(|i| normal_values[i as usize].normalize_or_zero())
+                    })
+                })
                 .collect(),
             uvs: uvs.map_or_else(Vec::new, |(values, idx)| {
-                order.iter().map(|&k| idx[original(k)].map(|i| values[i as usize])).collect()
+                original.iter().map(|k| k.map_or([[0.0; 2]; 3], |t| idx[t].map(|i| values[i as usize]))).collect()
             }),
             faceted: false,
             backface_culling: false,
@@ -335,19 +253,24 @@ impl Mesh {
         self
     }
 
-    /// Whether triangle `i` is ignored by a ray along `dir` (back-face culling).
+    /// The triangle in slot `i`.
+    fn triangle(&self, i: usize) -> [Vector; 3] {
+        self.triangles[i / LANES].get(i % LANES).expect("a hit slot holds a triangle")
+    }
+
+    /// Whether the triangle in slot `i` is ignored by a ray along `dir` (back-face culling).
     fn culled(&self, i: usize, dir: Vector) -> bool {
-        self.backface_culling && face_normal(&self.triangles[i]).dot(dir) > 0.0
+        self.backface_culling && face_normal(&self.triangle(i)).dot(dir) > 0.0
     }
 
     /// The number of triangles (after dropping degenerate ones).
     pub fn triangle_count(&self) -> usize {
-        self.triangles.len()
+        self.triangle_count
     }
 
     /// The triangles' vertices, in the order the BVH stores them.
-    pub fn triangles(&self) -> &[[Vector; 3]] {
-        &self.triangles
+    pub fn triangles(&self) -> Vec<[Vector; 3]> {
+        self.triangles.iter().flat_map(|four| (0..LANES).filter_map(|lane| four.get(lane))).collect()
     }
 
     /// The acceleration structure (for the benchmark's report).
@@ -357,7 +280,7 @@ impl Mesh {
 
     /// The hit point, normals, u/v and error bound of a hit on triangle `i`.
     fn info(&self, i: usize, t: f32, b: [f32; 3]) -> IntersectionInfo {
-        let tri = &self.triangles[i];
+        let tri = &self.triangle(i);
         let terms = [tri[0] * b[0], tri[1] * b[1], tri[2] * b[2]];
         let ip = terms[0] + terms[1] + terms[2];
         let error = gamma(7) * (terms[0].abs() + terms[1].abs() + terms[2].abs()).max_element();
@@ -386,11 +309,17 @@ impl Geometry for Mesh {
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let sheared = ShearedRay::new(ray);
         let mut best = None;
-        self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            for i in range.filter(|&i| !self.culled(i, ray.dir)) {
-                if let Some((t, b)) = sheared.hit(&self.triangles[i], *t_max) {
-                    *t_max = t;
-                    best = Some(Hit::Pending { distance: t, part: i as u32, coords: b });
+        self.bvh.traverse(ray.start, ray.dir, t_max, |slots, t_max| {
+            for group in slots.step_by(LANES) {
+                let hits = sheared.hit(&self.triangles[group / LANES], *t_max);
+                // The hits in lane order, each kept if still closer than the best so far: the same choice
+                // as testing the triangles one by one.
+                for lane in hits.lanes() {
+                    if hits.before(lane, *t_max) && !self.culled(group + lane, ray.dir) {
+                        let (t, coords) = hits.get(lane);
+                        *t_max = t;
+                        best = Some(Hit::Pending { distance: t, part: (group + lane) as u32, coords });
+                    }
                 }
             }
             false
@@ -408,10 +337,11 @@ impl Geometry for Mesh {
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         let sheared = ShearedRay::new(ray);
         let mut hit = false;
-        self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            hit = range
-                .into_iter()
-                .any(|i| !self.culled(i, ray.dir) && sheared.hit(&self.triangles[i], *t_max).is_some());
+        self.bvh.traverse(ray.start, ray.dir, t_max, |slots, t_max| {
+            hit = slots.step_by(LANES).any(|group| {
+                let hits = sheared.hit(&self.triangles[group / LANES], *t_max);
+                hits.lanes().any(|lane| !self.culled(group + lane, ray.dir))
+            });
             hit
         });
         hit

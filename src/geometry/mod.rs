@@ -14,6 +14,7 @@ mod plane;
 pub mod polygon;
 mod prism;
 mod sphere;
+pub mod triangle4;
 
 pub use cube::Cube;
 pub use mesh::Mesh;
