@@ -77,7 +77,9 @@ pub fn mirror_room(multiplier: f32, facing_mirrors: bool) -> Result<Scene> {
     }
     // The camera looks along +Z at the height of the mirrors' centres, square-on to them.
     let mut scene = Scene::new(Camera { position: Vector::new(0.0, 30.0, -40.0), fov: 75.0, ..Camera::default() });
-    scene.environment = Some(sky()?);
+    // The sky and the frames' wood are read side by side, on two threads.
+    let (sky, wood) = rayon::join(sky, || facing_mirrors.then(|| texture("wood.png")).transpose());
+    scene.environment = Some(sky?);
     scene.ambient = Color::gray(0.15);
     scene.lights.push(PointLight::new(Vector::new(-80.0, 250.0, 20.0), Color::new(1.0, 0.96, 0.9), 75000.0));
     scene.add(checker_floor(150.0, 20.0));
@@ -91,9 +93,9 @@ pub fn mirror_room(multiplier: f32, facing_mirrors: bool) -> Result<Scene> {
         Phong::new(Color::new(0.75, 0.12, 0.08), 0.3, 60.0),
     ));
 
-    if facing_mirrors {
+    if let Some(wood) = wood? {
         // Each mirror is a thin box in a slightly larger wooden frame just behind it.
-        let wood = Arc::new(Lambert::new(texture("wood.png")?));
+        let wood = Arc::new(Lambert::new(wood));
         for z in [100.0f32, -80.0] {
             let behind = z + z.signum();
             scene.add(
