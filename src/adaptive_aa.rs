@@ -34,12 +34,14 @@ pub const SAMPLES_PER_REFINED_PIXEL: u32 = 1 + EXTRA_SAMPLES.len() as u32;
 /// A salt for the random streams of the extra samples (a glossy surface draws random numbers).
 const AA_KEY: u64 = 0x4144_4150_5449_5645;
 
-/// Which pixels of a frame of single samples differ from a neighbour by more than [`THRESHOLD`].
+/// Which pixels of a frame of single samples differ from a neighbour by more than [`THRESHOLD`] (found in
+/// parallel, on the current rayon pool: nine reads per pixel are a serial step otherwise).
 pub fn marked(frame: &Frame) -> Vec<bool> {
     let (w, h) = (frame.width as i64, frame.height as i64);
     let at = |x: i64, y: i64| frame.pixels[(y * w + x) as usize].0.min(glam::Vec3A::ONE);
-    (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
+    (0..frame.pixels.len())
+        .into_par_iter()
+        .map(|i| (i as i64 % w, i as i64 / w))
         .map(|(x, y)| {
             let own = at(x, y);
             (-1..=1).any(|dy| {
@@ -63,6 +65,8 @@ pub fn refine(scene: &Scene, camera: &CameraFrame, settings: &RenderSettings, fr
         .pixels
         .par_chunks_mut(w)
         .zip(marks.par_chunks(w))
+        // One row per task, as in the first pass: the marked pixels gather along edges, so rows differ.
+        .with_max_len(1)
         .enumerate()
         .map(|(y, (row, marks))| {
             let mut counters = Counters::default();

@@ -94,15 +94,15 @@ impl Bitmap {
         let texels = match img {
             // Floating-point images (Radiance HDR, OpenEXR) hold linear light already.
             D::ImageRgb32F(_) | D::ImageRgba32F(_) => {
-                Texels::Linear(img.to_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0)).sanitized()).collect())
+                Texels::Linear(img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0)).sanitized()).collect())
             }
             // 16-bit integer images are sRGB-encoded.
             D::ImageLuma16(_) | D::ImageLumaA16(_) | D::ImageRgb16(_) | D::ImageRgba16(_) => Texels::Linear(
-                img.to_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0.map(srgb_to_linear)))).collect(),
+                img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0.map(srgb_to_linear)))).collect(),
             ),
             // 8-bit images are sRGB-encoded: kept so, decoded through a 256-entry table when read.
             _ => Texels::Srgb8 {
-                codes: img.to_rgb8().pixels().map(|p| [p[0], p[1], p[2], 0]).collect(),
+                codes: img.into_rgb8().pixels().map(|p| [p[0], p[1], p[2], 0]).collect(),
                 table: srgb8_to_linear_table(),
             },
         };

@@ -413,7 +413,9 @@ pub fn run<E: Example>() -> ExitCode {
     if args.common.window {
         return open_window(&name, args, argv);
     }
-    match run_parsed(&name, &args) {
+    // Everything runs on `--threads` threads: the scene's loading and the picture's encoding are parallel
+    // too (the render builds its own pool of the same size).
+    match thread_pool(args.common.threads).and_then(|pool| pool.install(|| run_parsed(&name, &args))) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("{name}: error: {e}");
@@ -566,7 +568,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         Ok(())
     })?;
     // The picture as written: exposed, and tone mapped for an 8-bit file; the comparison sees the same.
-    let frame = args.film().develop(&frame, keeps_linear_light(&output));
+    let frame = args.film().develop(frame, keeps_linear_light(&output));
     frame.save(&output)?;
     if !args.common.quiet {
         let rays = stats.counters.total();

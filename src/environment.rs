@@ -49,6 +49,7 @@ use crate::bitmap::{Bitmap, Filter, Wrap};
 use crate::color::Color;
 use crate::error::{Error, Result};
 use crate::math::Vector;
+use rayon::prelude::*;
 use std::f32::consts::{FRAC_1_PI, PI};
 use std::path::Path;
 use std::sync::Arc;
@@ -267,8 +268,9 @@ impl CubemapEnvironment {
             let turned = layout == CubemapLayout::Course && face == CubeFace::NegZ;
             Ok::<_, Error>((path.clone(), if turned { half_turn(&bitmap) } else { bitmap }))
         };
-        let [a, b, c, d, e, f] = CubeFace::ALL.map(load_face);
-        let faces = [a?, b?, c?, d?, e?, f?];
+        // The six files are decoded in parallel; an error names the first failing face in the order of `ALL`.
+        let loaded: Vec<_> = CubeFace::ALL.par_iter().map(|&face| load_face(face)).collect();
+        let faces: [_; 6] = loaded.into_iter().collect::<Result<Vec<_>>>()?.try_into().expect("six faces");
         let size = faces[0].1.width();
         for (path, bitmap) in &faces {
             let (w, h) = (bitmap.width(), bitmap.height());

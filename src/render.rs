@@ -153,15 +153,26 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// A black frame. Its pixels are written in parallel (on the current rayon pool), so that the memory of a
+    /// large frame is first touched, page by page, by every thread rather than by one.
     pub fn new(width: u32, height: u32) -> Frame {
-        Frame { width, height, pixels: vec![Color::BLACK; width as usize * height as usize] }
+        let mut pixels = Vec::new();
+        pixels.par_extend(rayon::iter::repeat_n(Color::BLACK, width as usize * height as usize));
+        Frame { width, height, pixels }
     }
     pub fn get(&self, x: u32, y: u32) -> Color {
         self.pixels[(y * self.width + x) as usize]
     }
-    /// The frame encoded as 8-bit sRGB.
+    /// The frame encoded as 8-bit sRGB, row by row in parallel (on the current rayon pool): the encoding's
+    /// `powf` per channel would otherwise be a serial step after the parallel render.
     pub fn to_rgb8(&self) -> image::RgbImage {
-        let bytes = self.pixels.iter().flat_map(|&c| to_srgb8(c)).collect();
+        let w = self.width as usize;
+        let mut bytes = vec![0u8; self.pixels.len() * 3];
+        bytes.par_chunks_mut(3 * w).zip(self.pixels.par_chunks(w)).for_each(|(out, row)| {
+            for (rgb, &c) in out.chunks_exact_mut(3).zip(row) {
+                rgb.copy_from_slice(&to_srgb8(c));
+            }
+        });
         image::RgbImage::from_raw(self.width, self.height, bytes).expect("frame size matches its pixels")
     }
     /// The frame as linear floats.
@@ -305,7 +316,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     } else {
         ProgressBar::hidden()
     };
-    let mut frame = Frame::new(w, h);
+    let mut frame = pool.install(|| Frame::new(w, h));
     if settings.adaptive_aa && plan != SpectralPlan::White {
         return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
     }

@@ -16,6 +16,7 @@
 use crate::color::Color;
 use crate::error::{Error, Result};
 use crate::render::Frame;
+use rayon::prelude::*;
 
 /// How linear light above 1 is fitted into an 8-bit picture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
@@ -59,10 +60,13 @@ impl Film {
     }
 
     /// The picture to write: exposed, and tone mapped unless `linear_output` (an EXR or HDR file, which
-    /// keeps light above 1 for whoever views it).
-    pub fn develop(&self, frame: &Frame, linear_output: bool) -> Frame {
-        let pixels = frame.pixels.iter().map(|&c| self.developed(c, linear_output)).collect();
-        Frame { pixels, ..*frame }
+    /// keeps light above 1 for whoever views it). The pixels are changed in place, in parallel (on the
+    /// current rayon pool); a neutral film returns the frame as it is.
+    pub fn develop(&self, mut frame: Frame, linear_output: bool) -> Frame {
+        if !self.is_neutral() {
+            frame.pixels.par_iter_mut().for_each(|c| *c = self.developed(*c, linear_output));
+        }
+        frame
     }
 
     /// One pixel of [`Film::develop`]'s picture (the live viewer develops its tiles as they come).

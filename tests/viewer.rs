@@ -184,7 +184,7 @@ fn the_window_shows_the_picture_exposed_and_tone_mapped_as_the_options_say() {
     worker.submit(job(&cli, None, true));
     let frame = finished(&worker);
     let shown = worker.shown.lock().unwrap().rgb.clone();
-    assert_eq!(shown, cli.film().develop(&frame, false).to_rgb8().into_raw(), "the picture a PNG would hold");
+    assert_eq!(shown, cli.film().develop(frame.clone(), false).to_rgb8().into_raw(), "the picture a PNG would hold");
     assert_ne!(shown, frame.to_rgb8().into_raw());
 }
 

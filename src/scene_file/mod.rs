@@ -52,6 +52,7 @@ use crate::shader::{ColorSource, Lambert, Layered, Phong, Reflection, Refraction
 use crate::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
 use crate::transform::Transform;
 use parse::{Block, Property};
+use rayon::prelude::*;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -732,10 +733,12 @@ fn with_assumed_gamma(bitmap: &crate::bitmap::Bitmap, path: &Path, gamma: f32) -
         }
     };
     let (w, h) = (bitmap.width(), bitmap.height());
-    let pixels = (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| {
-            let [r, g, b] = bitmap.get_pixel(x, y).to_array();
+    // Texel by texel in parallel (on the current rayon pool): two `powf` per channel are a serial step
+    // before the render otherwise.
+    let pixels = (0..w * h)
+        .into_par_iter()
+        .map(|i| {
+            let [r, g, b] = bitmap.get_pixel(i % w, i / w).to_array();
             Color::new(decode(r), decode(g), decode(b))
         })
         .collect();

@@ -249,7 +249,7 @@ impl<E: Example> Viewer<E> {
                         && let Some(frame) = &finished
                     {
                         let path = self.cli.output_path(&self.name).with_extension(ext);
-                        let picture = self.cli.film().develop(frame, keeps_linear_light(&path));
+                        let picture = self.cli.film().develop(frame.clone(), keeps_linear_light(&path));
                         self.message = match picture.save(&path) {
                             Ok(()) => format!("saved {}", path.display()),
                             Err(e) => e.to_string(),
@@ -284,7 +284,7 @@ impl<E: Example> Viewer<E> {
             .unwrap_or_else(|| std::path::Path::new("expected").join(format!("{}.png", self.name)));
         let comparison = Reference::load(&reference).and_then(|expected| {
             expected.check_size(&reference, frame.width, frame.height)?;
-            compare::compare(&self.cli.film().develop(frame, keeps_linear_light(&reference)), &expected)
+            compare::compare(&self.cli.film().develop(frame.clone(), keeps_linear_light(&reference)), &expected)
         });
         match comparison {
             Ok(comparison) => {
