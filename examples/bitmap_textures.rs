@@ -45,23 +45,19 @@ impl Example for Options {
         scene.ambient = Color::gray(0.12);
         scene.lights.push(PointLight::new(Vector::new(-60.0, 160.0, -90.0), Color::WHITE, 38000.0));
 
-        // The four images are read side by side, one file per thread. The floor keeps the bundled tiles, so
-        // a student's own image is judged on the objects.
-        let [floor, planet, checker, wood] = load_in_parallel([
-            &|| self.load("floor_tiles.png", None),
-            &|| self.load("world.png", own),
-            &|| self.load("checker8.png", own),
-            &|| self.load("wood.png", own),
-        ])?;
-        scene.add(Node::new(Plane::new(0.0, 200.0), Lambert::new(floor.with_scaling(40.0))));
+        // The floor keeps the bundled tiles, so a student's own image is judged on the objects.
+        let floor = self.load("floor_tiles.png", None)?.with_scaling(40.0);
+        scene.add(Node::new(Plane::new(0.0, 200.0), Lambert::new(floor)));
 
         // A 2:1 world map wrapped once around a sphere: u is the longitude, v the latitude.
+        let planet = self.load("world.png", own)?;
         scene.add(Node::new(Sphere::new(Vector::new(-42.0, 20.0, 25.0), 20.0), Phong::new(planet, 0.25, 40.0)));
 
         // An 8 x 8 checker image, magnified: the filter decides whether its texels show as blocks.
-        let checker = checker.with_scaling(0.5);
+        let checker = self.load("checker8.png", own)?.with_scaling(0.5);
         scene.add(Node::new(Sphere::new(Vector::new(0.0, 20.0, 25.0), 20.0), Lambert::new(checker)));
 
+        let wood = self.load("wood.png", own)?;
         scene.add(Node::new(Cube::new(Vector::new(42.0, 16.0, 25.0), 16.0), Lambert::new(wood)));
         Ok(scene)
     }

@@ -42,15 +42,10 @@ impl Example for Options {
     fn scene(&self) -> Result<Scene> {
         let camera = Camera { position: Vector::new(0.0, 24.0, -75.0), pitch: -6.0, fov: 80.0, ..Camera::default() };
         let mut scene = Scene::new(camera);
-        // The sky and the floor's image are read side by side, on two threads.
-        let (environment, floor) = rayon::join(
-            || match self.kind {
-                Kind::Spherical => sky(),
-                Kind::Cubemap => sky_cubemap(),
-            },
-            || texture("floor_tiles.png"),
-        );
-        scene.environment = Some(environment?);
+        scene.environment = Some(match self.kind {
+            Kind::Spherical => sky()?,
+            Kind::Cubemap => sky_cubemap()?,
+        });
         scene.max_depth = 4;
         scene.ambient = Color::new(0.12, 0.14, 0.18);
         // The sun, far away in the direction the sky shows it: about unit irradiance at the stage.
@@ -58,7 +53,7 @@ impl Example for Options {
         let sun = workbook::sun_direction() * distance;
         scene.lights.push(PointLight::new(sun, Color::new(1.0, 0.92, 0.8), distance * distance));
 
-        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(floor?.with_scaling(30.0))));
+        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(texture("floor_tiles.png")?.with_scaling(30.0))));
         // The mirror sphere shows the whole environment around it.
         scene.add(Node::new(Sphere::new(Vector::new(0.0, 20.0, 15.0), 20.0), Reflection::new(0.9)));
         let red = Phong::new(Color::new(0.7, 0.1, 0.08), 0.35, 80.0);

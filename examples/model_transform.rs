@@ -87,23 +87,10 @@ impl Example for Options {
         let mut scene = Scene::new(camera);
         scene.ambient = Color::gray(0.12);
         scene.lights.push(PointLight::new(Vector::new(-14.0, 30.0, -12.0), Color::WHITE, 1500.0));
-        // The mesh and the four images are read side by side, one file per thread.
-        let (mesh, images) = rayon::join(
-            || self.load_mesh(),
-            || {
-                load_in_parallel([
-                    &|| texture("floor_tiles.png"),
-                    &|| texture("world.png"),
-                    &|| texture("wood.png"),
-                    &|| load_texture("checker8.png", None, Filter::Nearest),
-                ])
-            },
-        );
-        let [floor, world, wood, checker] = images?;
-        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(floor.with_scaling(8.0))));
+        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(texture("floor_tiles.png")?.with_scaling(8.0))));
 
         // The canonical teapot, as the file has it, and the slide's transform of the same mesh.
-        let (mesh, fit) = mesh?;
+        let (mesh, fit) = self.load_mesh()?;
         scene.add(self.teapot(&mesh, fit, Color::new(0.75, 0.18, 0.12)));
         let [yaw, pitch, roll] = SLIDE_ROTATE.map(f32::to_degrees);
         let slide = self.teapot(&mesh, fit, Color::new(0.15, 0.35, 0.75));
@@ -121,7 +108,7 @@ impl Example for Options {
 
         // An ellipsoid from the unit sphere: the planet map stretches with it.
         scene.add(
-            Node::new(Sphere::new(Vector::ZERO, 1.0), Phong::new(world, 0.3, 30.0))
+            Node::new(Sphere::new(Vector::ZERO, 1.0), Phong::new(texture("world.png")?, 0.3, 30.0))
                 .scale(Vector::new(3.0, 1.2, 1.2))
                 .rotate(-30.0, 0.0, 0.0)
                 .translate(Vector::new(-10.0, 1.2, 9.0)),
@@ -129,14 +116,14 @@ impl Example for Options {
 
         // A box from the unit cube, rotated 31 degrees around Z.
         scene.add(
-            Node::new(Cube::new(Vector::ZERO, 1.0), Lambert::new(wood))
+            Node::new(Cube::new(Vector::ZERO, 1.0), Lambert::new(texture("wood.png")?))
                 .scale(Vector::new(1.2, 3.0, 1.2))
                 .rotate(0.0, 0.0, 31.0)
                 .translate(Vector::new(10.0, 3.2, 6.0)),
         );
 
         // A tilted square from the horizontal plane: its u/v (canonical x and z) go with it.
-        let checker = checker.with_scaling(3.0);
+        let checker = load_texture("checker8.png", None, Filter::Nearest)?.with_scaling(3.0);
         scene.add(
             Node::new(Plane::new(0.0, 3.0), Lambert::new(checker))
                 .rotate(0.0, -60.0, 0.0)

@@ -93,9 +93,7 @@ pub mod prelude {
     pub use crate::spectral::Ior;
     pub use crate::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
     pub use crate::transform::Transform;
-    pub use crate::workbook::{
-        self, checker_floor, load_in_parallel, load_texture, sky, sky_cubemap, texture, texture_path,
-    };
+    pub use crate::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
     pub use std::path::{Path, PathBuf};
     pub use std::process::ExitCode;
     pub use std::sync::Arc;

@@ -15,7 +15,6 @@ use crate::node::Node;
 use crate::scene::Scene;
 use crate::shader::{Lambert, Phong, Reflection};
 use crate::texture::{BitmapTexture, CheckerTexture};
-use rayon::prelude::*;
 use std::f32::consts::{PI, TAU};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -34,16 +33,6 @@ pub fn texture(name: &str) -> Result<BitmapTexture> {
 pub fn load_texture(name: &str, custom: Option<&Path>, filter: Filter) -> Result<BitmapTexture> {
     let path = custom.map_or_else(|| texture_path(name), Path::to_path_buf);
     Ok(BitmapTexture::new(Arc::new(Bitmap::load(&path)?)).with_filter(filter))
-}
-
-/// Runs the loaders side by side on the current rayon pool (one per thread, as threads come free) and returns
-/// what they loaded, in their order, or the first error in that order. An image file is decoded by one
-/// thread from start to end, so a scene that reads several files starts up faster when they are read
-/// together. The loaders return one type; files of different kinds go side by side with `rayon::join`.
-pub fn load_in_parallel<T: Send, const N: usize>(loaders: [&(dyn Fn() -> Result<T> + Sync); N]) -> Result<[T; N]> {
-    let loaded: Vec<Result<T>> = loaders.par_iter().map(|load| load()).collect();
-    let loaded: Vec<T> = loaded.into_iter().collect::<Result<_>>()?;
-    Ok(loaded.try_into().unwrap_or_else(|_| unreachable!("one result per loader")))
 }
 
 /// The bundled sky (`textures/sky.hdr`) as an equirectangular environment.
