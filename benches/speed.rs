@@ -9,7 +9,7 @@
 //!
 //! - The earlier build: the commit `--base` is checked out in a worktree at `target/bench-base` and its
 //!   examples built there (into `target/bench-base-target`, so this build's binaries stay as they are); both
-//!   are kept for the next run. Nothing of it is committed.
+//!   are kept for the next run. Nothing of it is committed. (`target/` is `CARGO_TARGET_DIR` when set.)
 //! - Every example of both builds (the ones both have) is run at its default settings with each thread count,
 //!   its picture written under `target/bench-out/`. The runs are interleaved: in each round every example runs
 //!   once in each build, the build that goes first alternating from round to round, so that a machine shared
@@ -89,11 +89,17 @@ fn run(what: &str, cmd: &mut Command) -> std::process::Output {
     out
 }
 
+/// Cargo's target directory: `CARGO_TARGET_DIR` when the build was run with it, else `target/`, where
+/// this build's example binaries are.
+fn target_dir(root: &Path) -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| root.join("target"), |dir| root.join(dir))
+}
+
 /// The earlier build's example binaries: the commit checked out and built under `target/`.
 fn base_build(root: &Path, rev: &str) -> PathBuf {
     let short = run("git", Command::new("git").current_dir(root).args(["rev-parse", "--short", rev]));
     let short = String::from_utf8_lossy(&short.stdout).trim().to_string();
-    let tree = root.join("target/bench-base");
+    let tree = target_dir(root).join("bench-base");
     if !tree.exists() {
         run(
             "git worktree add",
@@ -101,7 +107,7 @@ fn base_build(root: &Path, rev: &str) -> PathBuf {
         );
     }
     run("git checkout", Command::new("git").current_dir(&tree).args(["checkout", "--quiet", "--detach", &short]));
-    let target = root.join("target/bench-base-target");
+    let target = target_dir(root).join("bench-base-target");
     eprintln!("building {short}'s examples in {}", tree.display());
     run(
         "cargo build of the earlier build",
@@ -169,7 +175,7 @@ fn figures(samples: &[Sample]) -> Figures {
 
 fn compare_examples(args: &Args, root: &Path) {
     let base_dir = base_build(root, &args.base);
-    let new_dir = root.join("target/release/examples");
+    let new_dir = target_dir(root).join("release/examples");
     let sources = example_names(&root.join("examples"));
     let mut names: Vec<String> =
         example_names(&base_dir).intersection(&sources).filter(|n| new_dir.join(n).exists()).cloned().collect();
@@ -177,7 +183,7 @@ fn compare_examples(args: &Args, root: &Path) {
         names.retain(|n| args.examples.contains(n));
     }
     assert!(!names.is_empty(), "no examples to compare: run `cargo build --release --examples` first");
-    let out_dir = root.join("target/bench-out");
+    let out_dir = target_dir(root).join("bench-out");
     std::fs::create_dir_all(&out_dir).expect("cannot create target/bench-out");
     let builds = [("base", &base_dir), ("new", &new_dir)];
     // samples[example][thread count][build]
