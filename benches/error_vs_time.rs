@@ -6,7 +6,7 @@
 //!
 //! Each curve sweeps one sample-count option of one example (at 320 x 240; dispersion and the photon map,
 //! the slowest, at 160 x 120) and measures the median wall time of 3 renders and the error against a converged reference
-//! (see `lecture6::study`). It writes `target/study/error_vs_time.md` (the tables, the Pareto-optimal points,
+//! (see `lecture6::instruments::study`). It writes `target/study/error_vs_time.md` (the tables, the Pareto-optimal points,
 //! and the equal-time error ratios of the three glossy samplers) and `target/study/error_vs_time.png` (log-log
 //! charts of error versus time). References are cached in `target/study/` and rendered again whenever the
 //! program is rebuilt. The whole run takes about a minute on 2 idle cores (2.5 minutes on busy ones).
@@ -18,7 +18,7 @@
 mod examples;
 
 use examples::{bitmap_textures, dispersion, glossy, photon_map};
-use lecture6::study::{self, Measurement, Sweep};
+use lecture6::instruments::study::{self, Measurement, Sweep};
 use plotters::prelude::*;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -307,9 +307,9 @@ type Metric = fn(&Measurement) -> f64;
 /// Log-log charts of error against time: one column per group of comparable curves (an example against
 /// one reference), RMSE above and mean FLIP below, one line per curve.
 fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> {
-    plotters::style::register_font("sans-serif", FontStyle::Normal, include_bytes!("fonts/DejaVuSansMono.ttf"))
+    plotters::style::register_font("sans-serif", FontStyle::Normal, lecture6::instruments::font::DEJAVU_SANS_MONO)
         .map_err(|_| {
-            lecture6::Error::file("cannot read font", Path::new("benches/fonts/DejaVuSansMono.ttf"), "invalid")
+            lecture6::Error::file("cannot read font", Path::new("src/instruments/font/DejaVuSansMono.ttf"), "invalid")
         })?;
     let mut groups: Vec<Vec<&Vec<Measurement>>> = Vec::new();
     for curve in curves {
@@ -385,7 +385,7 @@ fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> 
         root.present().map_err(|e| chart_error(&e))?;
     }
     let img = image::RgbImage::from_raw(w, h, buffer).expect("the chart buffer matches its size");
-    lecture6::render::save_atomically(path, |tmp| img.save_with_format(tmp, image::ImageFormat::Png))
+    lecture6::lesson::render::save_atomically(path, |tmp| img.save_with_format(tmp, image::ImageFormat::Png))
 }
 
 /// A tick label with two significant digits.

@@ -25,10 +25,10 @@ mod examples;
 use common::cpu_time;
 
 use examples::{fresnel, layered};
-use lecture6::cli::{Cli, Example};
-use lecture6::compare::difference;
-use lecture6::render::{Frame, RenderStats};
-use lecture6::scene::Counters;
+use lecture6::app::cli::{Cli, Example};
+use lecture6::instruments::compare::difference;
+use lecture6::lesson::render::{Frame, RenderStats};
+use lecture6::lesson::scene::Counters;
 use std::time::Duration;
 
 /// Renders with the given options, as the example does; returns the frame, the stats and the CPU time of

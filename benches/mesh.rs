@@ -25,12 +25,12 @@
 //! shadow rays, which end at the light).
 
 use clap::Parser;
-use lecture6::geometry::bvh::Bvh;
-use lecture6::geometry::triangle4::LANES;
-use lecture6::geometry::{Aabb, Geometry, Mesh};
-use lecture6::math::Vector;
-use lecture6::ray::{Ray, spawn_point};
-use lecture6::rng::Rng;
+use lecture6::lesson::geometry::bvh::Bvh;
+use lecture6::lesson::geometry::triangle4::LANES;
+use lecture6::lesson::geometry::{Aabb, Geometry, Mesh};
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::ray::{Ray, spawn_point};
+use lecture6::lesson::rng::Rng;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -235,9 +235,10 @@ fn main() -> std::process::ExitCode {
             let root = Path::new(env!("CARGO_MANIFEST_DIR"));
             let fine = root.join("target").join("teapot-100k.obj");
             if !fine.exists() {
-                let write =
-                    |tmp: &Path| std::fs::write(tmp, lecture6::teapot::obj(40)).map_err(image::ImageError::IoError);
-                if let Err(e) = lecture6::render::save_atomically(&fine, write) {
+                let write = |tmp: &Path| {
+                    std::fs::write(tmp, lecture6::app::assets::teapot::obj(40)).map_err(image::ImageError::IoError)
+                };
+                if let Err(e) = lecture6::lesson::render::save_atomically(&fine, write) {
                     eprintln!("mesh: error: {e}");
                     return std::process::ExitCode::from(2);
                 }

@@ -12,11 +12,11 @@
 mod examples;
 
 use examples::photon_map::Options;
-use lecture6::cli::Cli;
-use lecture6::math::Vector;
-use lecture6::photon_map::{Emitter, PhotonMap, StoredPhoton, trace_photons};
-use lecture6::render::thread_pool;
-use lecture6::rng::Rng;
+use lecture6::app::cli::Cli;
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::photon_map::{Emitter, PhotonMap, StoredPhoton, trace_photons};
+use lecture6::lesson::render::thread_pool;
+use lecture6::lesson::rng::Rng;
 use std::time::{Duration, Instant};
 
 /// Runs of each measurement; the median is reported.

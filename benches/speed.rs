@@ -23,16 +23,16 @@
 //!   with the slides' loop over every node, and reports the CPU time per ray.
 
 use clap::Parser;
-use lecture6::camera::Camera;
-use lecture6::color::Color;
-use lecture6::geometry::{Plane, Sphere};
-use lecture6::light::PointLight;
-use lecture6::math::Vector;
-use lecture6::node::Node;
-use lecture6::render::{RenderSettings, render};
-use lecture6::rng::Rng;
-use lecture6::scene::{Scene, TraceContext};
-use lecture6::shader::Lambert;
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::geometry::{Plane, Sphere};
+use lecture6::lesson::light::PointLight;
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::node::Node;
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::{Scene, TraceContext};
+use lecture6::lesson::shader::Lambert;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::Command;

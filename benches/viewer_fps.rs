@@ -18,10 +18,10 @@ mod examples;
 
 use common::cpu_time;
 
-use lecture6::camera::Camera;
-use lecture6::cli::{Cli, Example};
-use lecture6::progressive::{preview_settings, quick_frame};
-use lecture6::render::thread_pool;
+use lecture6::app::cli::{Cli, Example};
+use lecture6::instruments::progressive::{preview_settings, quick_frame};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::render::thread_pool;
 use std::sync::atomic::AtomicBool;
 use std::time::Instant;
 
@@ -29,7 +29,7 @@ use std::time::Instant;
 /// the origin per frame, the steps a held key makes at 60 frames a second.
 fn camera_at(start: &Camera, i: u32) -> Camera {
     let step = start.position.length().max(1.0) * 1e-3;
-    let forward = lecture6::camera::rotation(start.yaw, start.pitch, start.roll) * lecture6::Vector::Z;
+    let forward = lecture6::lesson::camera::rotation(start.yaw, start.pitch, start.roll) * lecture6::Vector::Z;
     Camera { position: start.position + forward * (step * i as f32), yaw: start.yaw + 0.25 * i as f32, ..*start }
 }
 

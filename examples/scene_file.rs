@@ -23,10 +23,10 @@
 //!
 //! Homework ideas: write your homework's scene as a file; add a `Const` shader to the loader.
 
-use lecture6::cli::CommonArgs;
+use lecture6::app::cli::CommonArgs;
+use lecture6::app::scene_file::{self, LoadOptions};
+use lecture6::lesson::render::RenderSettings;
 use lecture6::prelude::*;
-use lecture6::render::RenderSettings;
-use lecture6::scene_file::{self, LoadOptions};
 
 /// Renders a scene file of the course's format (.qdmg).
 #[derive(clap::Args, Clone, Debug)]

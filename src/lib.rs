@@ -31,69 +31,40 @@
 //! An example, or a homework, starts with `use lecture6::prelude::*;`, which brings in everything it needs to
 //! build a scene and run it (see [`cli::Example`] for a whole example in 25 lines).
 
-pub mod adaptive_aa;
-pub mod assets;
-pub mod bitmap;
-pub mod camera;
-pub mod cli;
-pub mod color;
-pub mod compare;
-pub mod debug_view;
-pub mod environment;
-pub mod error;
-pub mod geometry;
-pub mod light;
-pub mod math;
-pub mod node;
-pub mod photon_map;
-pub mod progressive;
-pub mod ray;
-pub mod ray_tree;
-pub mod render;
-pub mod rng;
-pub mod sampling;
-pub mod scene;
-pub mod scene_file;
-pub mod shader;
-pub mod side_by_side;
-pub mod spectral;
-pub mod study;
-pub mod teapot;
-pub mod texture;
-pub mod tone_mapping;
-pub mod transform;
-#[cfg(feature = "viewer")]
-pub mod viewer;
-pub mod workbook;
+pub mod app;
+pub mod instruments;
+pub mod lesson;
 
-pub use color::Color;
-pub use error::{Error, Result};
-pub use math::Vector;
+pub use lesson::color::Color;
+pub use lesson::error::{Error, Result};
+pub use lesson::math::Vector;
 
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
-    pub use crate::bitmap::{Bitmap, Filter, Wrap};
-    pub use crate::camera::{Camera, FovAxis};
-    pub use crate::cli::{Example, run};
-    pub use crate::color::Color;
-    pub use crate::environment::{
+    pub use crate::app::cli::{Example, run};
+    pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
+    pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
+    pub use crate::lesson::camera::{Camera, FovAxis};
+    pub use crate::lesson::color::Color;
+    pub use crate::lesson::environment::{
         ConstantEnvironment, CubemapEnvironment, Environment, SphericalEnvironment, load as load_environment,
     };
-    pub use crate::error::{Error, Result};
-    pub use crate::geometry::{Aabb, Cube, Geometry, IntersectionInfo, Mesh, Plane, Prism, Sphere, TexCoords};
-    pub use crate::light::{PointLight, diffuse_light, light_loop};
-    pub use crate::math::{Vector, faceforward, reflect, refract};
-    pub use crate::node::Node;
-    pub use crate::photon_map::{PhotonScatter, PhotonSettings};
-    pub use crate::ray::Ray;
-    pub use crate::rng::Rng;
-    pub use crate::sampling::DiscSampler;
-    pub use crate::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
-    pub use crate::shader::{ColorSource, Lambert, Layered, Phong, Reflection, Refraction, Shader, fresnel_glass};
-    pub use crate::spectral::Ior;
-    pub use crate::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
-    pub use crate::transform::Transform;
-    pub use crate::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
+    pub use crate::lesson::error::{Error, Result};
+    pub use crate::lesson::geometry::{Aabb, Cube, Geometry, IntersectionInfo, Mesh, Plane, Prism, Sphere, TexCoords};
+    pub use crate::lesson::light::{PointLight, diffuse_light, light_loop};
+    pub use crate::lesson::math::{Vector, faceforward, reflect, refract};
+    pub use crate::lesson::node::Node;
+    pub use crate::lesson::photon_map::{PhotonScatter, PhotonSettings};
+    pub use crate::lesson::ray::Ray;
+    pub use crate::lesson::rng::Rng;
+    pub use crate::lesson::sampling::DiscSampler;
+    pub use crate::lesson::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
+    pub use crate::lesson::shader::{
+        ColorSource, Lambert, Layered, Phong, Reflection, Refraction, Shader, fresnel_glass,
+    };
+    pub use crate::lesson::spectral::Ior;
+    pub use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
+    pub use crate::lesson::transform::Transform;
     pub use std::path::{Path, PathBuf};
     pub use std::process::ExitCode;
     pub use std::sync::Arc;

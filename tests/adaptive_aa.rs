@@ -3,11 +3,11 @@
 
 mod common;
 
-use lecture6::adaptive_aa::marked;
-use lecture6::render::{RenderSettings, render};
-use lecture6::scene_file::{LoadOptions, load};
+use lecture6::app::scene_file::{LoadOptions, load};
+use lecture6::lesson::adaptive_aa::marked;
+use lecture6::lesson::render::{RenderSettings, render};
 
-fn fresnel_file() -> lecture6::scene_file::SceneFile {
+fn fresnel_file() -> lecture6::app::scene_file::SceneFile {
     load(&common::root().join("examples/data/fresnel.qdmg"), &LoadOptions::default()).unwrap()
 }
 

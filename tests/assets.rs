@@ -2,7 +2,7 @@
 
 mod common;
 
-use lecture6::assets::{ASSETS, HDR_ASSETS};
+use lecture6::app::assets::{ASSETS, HDR_ASSETS};
 
 #[test]
 fn bundled_textures_match_the_generator() {
@@ -33,7 +33,7 @@ fn bundled_hdr_images_match_the_generator() {
 
 #[test]
 fn bundled_meshes_match_the_generator() {
-    for mesh in lecture6::assets::MESHES {
+    for mesh in lecture6::app::assets::MESHES {
         let path = common::root().join("textures").join(mesh.name);
         let on_disk = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert!(on_disk == (mesh.write)(), "{} is stale: run `cargo run --release --bin make-assets`", path.display());

@@ -7,8 +7,8 @@ mod common;
 
 use common::examples::{fresnel, photon_map, reflect_v02};
 use common::{root, run_example};
-use lecture6::compare::{Difference, heat_map, with_colour_bar};
-use lecture6::rng::shuffled_index;
+use lecture6::instruments::compare::{Difference, heat_map, with_colour_bar};
+use lecture6::lesson::rng::shuffled_index;
 use std::path::PathBuf;
 use std::process::Output;
 
@@ -240,7 +240,7 @@ fn photon_map_says_where_the_mirror_throws_its_patch() {
     let with = common::render::<photon_map::Options>(&size);
     let without = common::render::<photon_map::Options>(&[&size[..], &["--photons", "0"]].concat());
     let cli = common::parse::<photon_map::Options>(&size);
-    let scene = lecture6::cli::Example::scene(&cli.example).unwrap();
+    let scene = lecture6::app::cli::Example::scene(&cli.example).unwrap();
     let camera = scene.camera.frame(w, h);
     let (mut on_wall, mut on_floor) = (0, 0);
     for y in 0..h {
@@ -272,7 +272,7 @@ fn reflect_v02_offers_no_homework_the_renderer_already_does() {
     let ideas = &homework[homework.find("Homework ideas:").unwrap()..];
     let ideas = &ideas[..ideas.find("\n\n").unwrap_or(ideas.len())];
     assert!(!ideas.contains("weight") || ideas.contains("--exhaustive"), "{sentence}");
-    let scene = lecture6::cli::Example::scene(&common::parse::<reflect_v02::Options>(&[]).example).unwrap();
+    let scene = lecture6::app::cli::Example::scene(&common::parse::<reflect_v02::Options>(&[]).example).unwrap();
     assert!(scene.min_ray_weight > 0.0, "the renderer cuts weak rays by default");
 }
 
@@ -310,7 +310,7 @@ fn compare_says_whether_the_render_is_within_the_regression_tolerance() {
     // Schlick against the exact equations: a few levels at the rim, within the tolerance.
     let expected = image::open(&reference).unwrap().to_rgb8();
     let actual = image::open(&exact).unwrap().to_rgb8();
-    let d: Difference = lecture6::compare::difference(&actual, &expected).unwrap();
+    let d: Difference = lecture6::instruments::compare::difference(&actual, &expected).unwrap();
     let verdict = if d.within_regression_tolerance() { "; within the regression" } else { "; NOT within" };
     assert!(stdout.contains(verdict), "{stdout}");
     assert!(stdout.contains(&format!("max diff {} levels", d.max_diff)), "{stdout}");
@@ -395,7 +395,7 @@ fn fov_axis_vertical_keeps_the_height_of_the_picture_when_the_aspect_ratio_chang
     let plain = common::render::<fresnel::Options>(&["--width", "64", "--height", "48"]);
     for axis in ["vertical", "horizontal"] {
         let other = common::render::<fresnel::Options>(&["--width", "64", "--height", "48", "--fov-axis", axis]);
-        let d = lecture6::compare::difference(&plain.to_rgb8(), &other.to_rgb8()).unwrap();
+        let d = lecture6::instruments::compare::difference(&plain.to_rgb8(), &other.to_rgb8()).unwrap();
         assert!(d.max_diff <= 1, "{axis}: {d:?}");
     }
 }

@@ -4,8 +4,8 @@
 mod common;
 
 use lecture6::Vector;
-use lecture6::color::linear_to_srgb;
-use lecture6::environment::{
+use lecture6::lesson::color::linear_to_srgb;
+use lecture6::lesson::environment::{
     CubeFace, CubemapEnvironment, CubemapLayout, Environment, SphericalEnvironment, cube_face_direction,
 };
 use std::path::{Path, PathBuf};

@@ -4,17 +4,17 @@
 mod common;
 
 use common::examples::{bitmap_textures, dispersion};
-use lecture6::cli::Example;
-use lecture6::color::Color;
-use lecture6::environment::{ConstantEnvironment, Environment};
-use lecture6::geometry::{Prism, Sphere};
-use lecture6::math::Vector;
-use lecture6::node::Node;
-use lecture6::render::{Frame, RenderStats, render_with_plan};
-use lecture6::rng::Rng;
-use lecture6::scene::{Scene, TraceContext};
-use lecture6::shader::Refraction;
-use lecture6::spectral::{
+use lecture6::app::cli::Example;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::environment::{ConstantEnvironment, Environment};
+use lecture6::lesson::geometry::{Prism, Sphere};
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::node::Node;
+use lecture6::lesson::render::{Frame, RenderStats, render_with_plan};
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::{Scene, TraceContext};
+use lecture6::lesson::shader::Refraction;
+use lecture6::lesson::spectral::{
     Band, Ior, LAMBDA_C, LAMBDA_D, LAMBDA_F, LAMBDA_MAX, LAMBDA_MIN, SpectralPlan, bands, cie_xyz,
 };
 use std::sync::Arc;
@@ -80,7 +80,7 @@ fn the_visible_range_holds_nearly_all_of_the_colour_matching_functions() {
 fn white_light_through_every_plan_stays_exactly_white() {
     let mut scene = Scene::new(Default::default());
     scene.environment = Some(Arc::new(ConstantEnvironment(Color::WHITE)));
-    let mut s = lecture6::render::RenderSettings { width: 8, height: 6, spp: 5, ..Default::default() };
+    let mut s = lecture6::lesson::render::RenderSettings { width: 8, height: 6, spp: 5, ..Default::default() };
     for plan in [SpectralPlan::Passes(bands(8)), SpectralPlan::Passes(bands(3)), SpectralPlan::Sampled] {
         let (frame, _) = render_with_plan(&scene, &s, plan.clone()).unwrap();
         assert!(frame.pixels.iter().all(|&p| p == Color::WHITE), "{plan}: {:?}", frame.pixels[0]);
@@ -166,7 +166,7 @@ fn the_prism_deviates_each_wavelength_as_snells_law_says() {
             let dir = t.cos() * -left + t.sin() * along;
             let world_start = transform.point_to_world(aim - 5.0 * dir);
             let world_dir = (transform.point_to_world(aim) - world_start).normalize();
-            let mut ray = lecture6::ray::Ray::new(world_start, world_dir);
+            let mut ray = lecture6::lesson::ray::Ray::new(world_start, world_dir);
             ray.wavelength = Some(wavelength);
             let out = ctx.raytrace(&ray).0;
             assert!(
@@ -278,7 +278,7 @@ fn a_sphere_of_dispersive_glass_focuses_blue_nearer_than_red() {
     scene.environment = Some(Arc::new(DirectionEnvironment));
     let mut ctx = TraceContext::new(&scene, Rng::for_keys(&[2]));
     let bent = |ctx: &mut TraceContext, wavelength: f32| {
-        let mut ray = lecture6::ray::Ray::new(Vector::new(1.0, 0.0, 0.0), Vector::Z);
+        let mut ray = lecture6::lesson::ray::Ray::new(Vector::new(1.0, 0.0, 0.0), Vector::Z);
         ray.wavelength = Some(wavelength);
         ctx.raytrace(&ray).0.x
     };

@@ -6,18 +6,18 @@
 mod common;
 
 use lecture6::Color;
-use lecture6::camera::Camera;
-use lecture6::compare::{difference, heat_map};
-use lecture6::environment::ConstantEnvironment;
-use lecture6::geometry::{Cube, Geometry, Mesh, Plane, Sphere};
-use lecture6::light::PointLight;
-use lecture6::math::{Vector, fresnel, fresnel_exact, refract};
-use lecture6::node::Node;
-use lecture6::ray::Ray;
-use lecture6::render::{RenderSettings, render};
-use lecture6::scene::Scene;
-use lecture6::shader::{Lambert, Layered, Reflection, Refraction, Shader};
-use lecture6::texture::{CheckerTexture, Fresnel, FresnelMode};
+use lecture6::instruments::compare::{difference, heat_map};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::environment::ConstantEnvironment;
+use lecture6::lesson::geometry::{Cube, Geometry, Mesh, Plane, Sphere};
+use lecture6::lesson::light::PointLight;
+use lecture6::lesson::math::{Vector, fresnel, fresnel_exact, refract};
+use lecture6::lesson::node::Node;
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::scene::Scene;
+use lecture6::lesson::shader::{Lambert, Layered, Reflection, Refraction, Shader};
+use lecture6::lesson::texture::{CheckerTexture, Fresnel, FresnelMode};
 use std::sync::Arc;
 
 /// Every hit is in front of the ray, finite, and agrees with the any-hit test.
@@ -271,7 +271,7 @@ fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
 /// every hit of a teapot scaled by 1e4; the hit must not depend on the direction's length.
 #[test]
 fn a_mesh_hit_does_not_depend_on_the_length_of_the_direction() {
-    let mesh = Mesh::load(&lecture6::workbook::texture_path("teapot.obj")).unwrap();
+    let mesh = Mesh::load(&lecture6::app::workbook::texture_path("teapot.obj")).unwrap();
     let mut hits = 0;
     for k in 0..200 {
         let a = k as f32 * 0.31;
@@ -296,7 +296,7 @@ fn a_mesh_hit_does_not_depend_on_the_length_of_the_direction() {
 /// directions of length 1e-6 to 1e6.
 #[test]
 fn every_shape_hits_the_same_point_whatever_the_length_of_the_direction() {
-    use lecture6::geometry::Prism;
+    use lecture6::lesson::geometry::Prism;
     let shapes: [(&str, Box<dyn Geometry>); 4] = [
         ("plane", Box::new(Plane::new(0.0, 3.0))),
         ("sphere", Box::new(Sphere::new(Vector::ZERO, 1.0))),

@@ -4,19 +4,19 @@
 mod common;
 
 use common::examples::{bitmap_textures, environment as environment_example};
-use lecture6::assets::{SkyFunction, sun_direction};
-use lecture6::bitmap::{Bitmap, Filter};
-use lecture6::camera::Camera;
-use lecture6::cli::Example;
-use lecture6::color::Color;
-use lecture6::compare::difference;
-use lecture6::environment::{
+use lecture6::app::assets::{SkyFunction, sun_direction};
+use lecture6::app::cli::Example;
+use lecture6::instruments::compare::difference;
+use lecture6::lesson::bitmap::{Bitmap, Filter};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::environment::{
     self, CubeFace, CubemapEnvironment, Environment, SphericalEnvironment, cube_face_direction, cube_face_uv,
     equirect_direction, equirect_uv,
 };
-use lecture6::math::Vector;
-use lecture6::render::Frame;
-use lecture6::rng::Rng;
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::render::Frame;
+use lecture6::lesson::rng::Rng;
 use std::path::PathBuf;
 use std::sync::Arc;
 
@@ -235,7 +235,7 @@ fn the_two_environment_kinds_are_equally_close_to_the_sky_they_sample() {
     let render = |sky: Arc<dyn Environment>| {
         let mut scene = spherical.example.scene().unwrap();
         scene.environment = Some(sky);
-        lecture6::render::render(&scene, &spherical.settings()).unwrap().0
+        lecture6::lesson::render::render(&scene, &spherical.settings()).unwrap().0
     };
     let truth = render(Arc::new(SkyFunction));
     let from_image = render(Arc::new(SphericalEnvironment::load(&sky_path()).unwrap()));

@@ -5,17 +5,17 @@ mod common;
 
 use common::examples::glossy;
 use lecture6::Color;
-use lecture6::camera::Camera;
-use lecture6::cli::Example;
-use lecture6::environment::Environment;
-use lecture6::geometry::Plane;
-use lecture6::math::{Vector, reflect};
-use lecture6::node::Node;
-use lecture6::render::{RenderSettings, render};
-use lecture6::rng::Rng;
-use lecture6::sampling::{DiscSampler, DiscSamples};
-use lecture6::scene::Scene;
-use lecture6::shader::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
+use lecture6::app::cli::Example;
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::environment::Environment;
+use lecture6::lesson::geometry::Plane;
+use lecture6::lesson::math::{Vector, reflect};
+use lecture6::lesson::node::Node;
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::sampling::{DiscSampler, DiscSamples};
+use lecture6::lesson::scene::Scene;
+use lecture6::lesson::shader::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 use std::sync::{Arc, Mutex};
 
 fn small(spp: u32) -> RenderSettings {
@@ -160,10 +160,10 @@ fn adaptive_depth_control_never_prunes_glossy_samples() {
 
 #[test]
 fn glossy_mirrors_scatter_photons_into_their_cone() {
-    use lecture6::geometry::{IntersectionInfo, TexCoords};
-    use lecture6::photon_map::PhotonScatter;
-    use lecture6::ray::Ray;
-    use lecture6::shader::Shader;
+    use lecture6::lesson::geometry::{IntersectionInfo, TexCoords};
+    use lecture6::lesson::photon_map::PhotonScatter;
+    use lecture6::lesson::ray::Ray;
+    use lecture6::lesson::shader::Shader;
     let info = IntersectionInfo {
         ip: Vector::ZERO,
         normal: Vector::Y,

@@ -96,7 +96,7 @@ fn caustic_scene(floor: impl Shader + 'static) -> Scene {
 fn a_students_diffuse_shader_gets_the_caustics_through_the_light_loop() {
     let under_the_ball = |floor: Box<dyn Fn() -> Scene>| {
         let mut scene = floor();
-        scene.photon_map = lecture6::photon_map::PhotonMap::build(&scene, 1).unwrap().map(Arc::new);
+        scene.photon_map = lecture6::lesson::photon_map::PhotonMap::build(&scene, 1).unwrap().map(Arc::new);
         let map = scene.photon_map.clone().expect("the glass is a caustic caster");
         let ray = Ray::new(Vector::new(0.0, 1.0, 0.0), Vector::new(0.0, -1.0, 0.0));
         let (info, node) = scene.closest_hit(&ray).expect("the floor");

@@ -4,12 +4,12 @@
 mod common;
 
 use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract};
-use lecture6::cli::Example;
-use lecture6::color::Color;
-use lecture6::debug_view::{DebugView, render_view};
-use lecture6::ray_tree::{LightKind, RayKind, RayTree, Stop, TermKind};
-use lecture6::render::{render, render_pixel};
-use lecture6::side_by_side::{Panel, compose};
+use lecture6::app::cli::Example;
+use lecture6::instruments::debug_view::{DebugView, render_view};
+use lecture6::instruments::ray_tree::{LightKind, RayKind, RayTree, Stop, TermKind};
+use lecture6::instruments::side_by_side::{Panel, compose};
+use lecture6::lesson::color::Color;
+use lecture6::lesson::render::{render, render_pixel};
 
 /// Whether two colours agree to float rounding of sums of a few hundred terms.
 fn close(a: Color, b: Color) -> bool {
@@ -119,7 +119,7 @@ fn the_json_tree_is_one_object_naming_every_ray() {
 }
 
 /// Draws a view of the glossy scene at 64 x 48 and returns it, after checking its size.
-fn view(v: DebugView, extra: &[&str]) -> lecture6::debug_view::DebugImage {
+fn view(v: DebugView, extra: &[&str]) -> lecture6::instruments::debug_view::DebugImage {
     let mut args = vec!["--width", "64", "--height", "48"];
     args.extend(extra);
     let cli = common::parse::<glossy::Options>(&args);
@@ -182,10 +182,10 @@ fn side_by_side_of_an_example_writes_three_panels_of_its_size() {
     let _ = std::fs::remove_file(&path);
     let args: Vec<std::ffi::OsString> =
         ["--width", "64", "--height", "48", "--quiet", "-o", path.to_str().unwrap()].map(Into::into).to_vec();
-    lecture6::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--fresnel exact").unwrap();
+    lecture6::instruments::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--fresnel exact").unwrap();
     let out = image::open(&path).unwrap().to_rgb8();
     assert_eq!(out.width(), 3 * 64);
     assert!(out.height() > 48);
-    let bad = lecture6::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
+    let bad = lecture6::instruments::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
     assert!(bad.is_err(), "A and B of different sizes cannot be compared");
 }

@@ -5,18 +5,18 @@ mod common;
 
 use common::examples::{fresnel as fresnel_example, layered};
 use lecture6::Color;
-use lecture6::camera::Camera;
-use lecture6::environment::ConstantEnvironment;
-use lecture6::geometry::{Cube, IntersectionInfo, Sphere, TexCoords};
-use lecture6::math::{Vector, fresnel, fresnel_exact};
-use lecture6::node::Node;
-use lecture6::photon_map::PhotonScatter;
-use lecture6::ray::Ray;
-use lecture6::render::{Frame, RenderSettings, render};
-use lecture6::rng::Rng;
-use lecture6::scene::{Scene, TraceContext};
-use lecture6::shader::{Layered, Shader, fresnel_glass};
-use lecture6::texture::{FresnelMode, Texture};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::environment::ConstantEnvironment;
+use lecture6::lesson::geometry::{Cube, IntersectionInfo, Sphere, TexCoords};
+use lecture6::lesson::math::{Vector, fresnel, fresnel_exact};
+use lecture6::lesson::node::Node;
+use lecture6::lesson::photon_map::PhotonScatter;
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::{Frame, RenderSettings, render};
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::{Scene, TraceContext};
+use lecture6::lesson::shader::{Layered, Shader, fresnel_glass};
+use lecture6::lesson::texture::{FresnelMode, Texture};
 use proptest::prelude::*;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -97,7 +97,7 @@ fn hit_at_origin() -> IntersectionInfo {
 fn the_fresnel_texture_flips_eta_inside_the_object() {
     let info = hit_at_origin();
     for mode in [FresnelMode::Schlick, FresnelMode::Exact] {
-        let tex = lecture6::texture::Fresnel::new(1.5, mode);
+        let tex = lecture6::lesson::texture::Fresnel::new(1.5, mode);
         // From inside (the ray goes out through the normal's side) at 60 degrees: total internal reflection.
         let out = Ray::new(Vector::new(0.0, -1.0, 0.0), -incoming(60.0));
         assert_eq!(tex.get_tex_color(&out, &info), Color::WHITE);
@@ -309,7 +309,7 @@ fn shading_every_layer_gives_the_same_picture() {
     let size = ["--width", "160", "--height", "120"];
     let skipping = common::render::<layered::Options>(&size).to_rgb8();
     let every = common::render::<layered::Options>(&[&size[..], &["--shade-every-layer"]].concat()).to_rgb8();
-    let d = lecture6::compare::difference(&skipping, &every).unwrap();
+    let d = lecture6::instruments::compare::difference(&skipping, &every).unwrap();
     assert!(d.max_diff <= 1, "{d}");
 }
 

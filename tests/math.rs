@@ -2,12 +2,12 @@
 //! canonical shapes.
 
 use lecture6::Color;
-use lecture6::bitmap::{Bitmap, Filter, Wrap};
-use lecture6::camera::Camera;
-use lecture6::color::{linear_to_srgb, srgb_to_linear, to_srgb8};
-use lecture6::geometry::{Cube, Geometry, Plane, Sphere};
-use lecture6::math::{OrthonormalBasis, Vector, faceforward, reflect};
-use lecture6::ray::Ray;
+use lecture6::lesson::bitmap::{Bitmap, Filter, Wrap};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::color::{linear_to_srgb, srgb_to_linear, to_srgb8};
+use lecture6::lesson::geometry::{Cube, Geometry, Plane, Sphere};
+use lecture6::lesson::math::{OrthonormalBasis, Vector, faceforward, reflect};
+use lecture6::lesson::ray::Ray;
 
 fn unit(x: f32, y: f32, z: f32) -> Vector {
     Vector::new(x, y, z).normalize()
@@ -137,20 +137,20 @@ fn camera_follows_the_course_conventions() {
 
 #[test]
 fn floor_without_the_library_call_is_the_library_floor() {
-    let mut rng = lecture6::rng::Rng::for_keys(&[3]);
+    let mut rng = lecture6::lesson::rng::Rng::for_keys(&[3]);
     let specials =
         [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.0f32.powi(23), -(2.0f32.powi(23)), 8388607.5, -8388607.5, 1e30, -1e30];
     let random = (0..10_000).map(|_| f32::from_bits(rng.next_u32())).filter(|x| x.is_finite());
     for x in specials.into_iter().chain(random) {
-        assert_eq!(lecture6::math::floor(x), x.floor(), "floor({x})");
+        assert_eq!(lecture6::lesson::math::floor(x), x.floor(), "floor({x})");
     }
-    assert!(lecture6::math::floor(f32::NAN).is_nan());
+    assert!(lecture6::lesson::math::floor(f32::NAN).is_nan());
 }
 
 #[test]
 fn a_ray_origin_moves_off_the_surface_by_the_error_and_one_to_two_floats() {
-    use lecture6::math::offset_ray_origin;
-    let mut rng = lecture6::rng::Rng::for_keys(&[4]);
+    use lecture6::lesson::math::offset_ray_origin;
+    let mut rng = lecture6::lesson::rng::Rng::for_keys(&[4]);
     let mut random = |scale: f32| (rng.next_f32() - 0.5) * scale;
     for i in 0..20_000 {
         let scale = [1e-4, 1.0, 1e6, 1e-30][i % 4];

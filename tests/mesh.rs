@@ -3,11 +3,11 @@
 
 mod common;
 
-use lecture6::geometry::mesh::intersect_triangle;
-use lecture6::geometry::{Geometry, Mesh};
-use lecture6::math::Vector;
-use lecture6::ray::Ray;
-use lecture6::rng::Rng;
+use lecture6::lesson::geometry::mesh::intersect_triangle;
+use lecture6::lesson::geometry::{Geometry, Mesh};
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::rng::Rng;
 
 fn random_unit(rng: &mut Rng) -> Vector {
     let z = 1.0 - 2.0 * rng.next_f32();
@@ -75,7 +75,7 @@ fn the_bvh_finds_the_same_closest_hit_as_brute_force() {
 /// same answer to the any-hit query.
 #[test]
 fn the_bvh_finds_brute_forces_hits_on_both_benchmark_teapots() {
-    let fine = common::temp_file("mesh", "teapot-100k.obj", &lecture6::teapot::obj(40));
+    let fine = common::temp_file("mesh", "teapot-100k.obj", &lecture6::app::assets::teapot::obj(40));
     let meshes = [(common::root().join("textures/teapot.obj"), 2000), (fine, 200)];
     let mut rng = Rng::for_keys(&[11]);
     for (path, rays) in meshes {

@@ -6,21 +6,21 @@
 mod common;
 
 use common::examples::{bitmap_textures, photon_map};
-use lecture6::camera::Camera;
-use lecture6::cli::Example;
-use lecture6::color::Color;
-use lecture6::geometry::{Geometry, Plane, Sphere};
-use lecture6::light::PointLight;
-use lecture6::math::Vector;
-use lecture6::node::Node;
-use lecture6::photon_map::{PhotonMap, PhotonScatter, PhotonSettings};
-use lecture6::ray::Ray;
-use lecture6::render::render;
-use lecture6::rng::Rng;
-use lecture6::scene::{Scene, TraceContext};
-use lecture6::shader::{Lambert, Layered, Reflection, Refraction, Shader};
-use lecture6::spectral::Ior;
-use lecture6::texture::{Fresnel, FresnelMode};
+use lecture6::app::cli::Example;
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::geometry::{Geometry, Plane, Sphere};
+use lecture6::lesson::light::PointLight;
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::node::Node;
+use lecture6::lesson::photon_map::{PhotonMap, PhotonScatter, PhotonSettings};
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::render;
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::{Scene, TraceContext};
+use lecture6::lesson::shader::{Lambert, Layered, Reflection, Refraction, Shader};
+use lecture6::lesson::spectral::Ior;
+use lecture6::lesson::texture::{Fresnel, FresnelMode};
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -202,7 +202,8 @@ fn a_layered_surface_sends_photons_on_in_proportion_to_its_blends() {
 #[test]
 fn dispersive_glass_passes_white_light_in_coloured_photons() {
     // A dense flint: photons get wavelengths and band colours, but together they are as white as the light.
-    let glass = lecture6::shader::fresnel_glass(Ior::SF11, lecture6::texture::FresnelMode::Schlick, 1.0);
+    let glass =
+        lecture6::lesson::shader::fresnel_glass(Ior::SF11, lecture6::lesson::texture::FresnelMode::Schlick, 1.0);
     let map = build(&glass_scene(glass, vec![]));
     let expected = INTENSITY as f64 * sphere_solid_angle(1.0, 5.0);
     for channel in 0..3 {

@@ -4,9 +4,9 @@
 mod common;
 
 use lecture6::Vector;
-use lecture6::geometry::polygon::{newell_normal, triangulate};
-use lecture6::geometry::{Geometry, Mesh};
-use lecture6::ray::Ray;
+use lecture6::lesson::geometry::polygon::{newell_normal, triangulate};
+use lecture6::lesson::geometry::{Geometry, Mesh};
+use lecture6::lesson::ray::Ray;
 
 /// A star with `points` tips (radii 1 and 0.4), in the plane z = 0.
 fn star(points: usize) -> Vec<Vector> {

@@ -4,9 +4,9 @@
 mod common;
 
 use common::examples::{dispersion, fresnel, glossy};
-use lecture6::cli::{Cli, Example};
-use lecture6::progressive::{Outcome, TILE_SIZE, Update, coarse_settings, render_progressive, tiles};
-use lecture6::render::{render, thread_pool};
+use lecture6::app::cli::{Cli, Example};
+use lecture6::instruments::progressive::{Outcome, TILE_SIZE, Update, coarse_settings, render_progressive, tiles};
+use lecture6::lesson::render::{render, thread_pool};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 

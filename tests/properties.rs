@@ -3,19 +3,19 @@
 //! non-negative.
 
 use lecture6::Color;
-use lecture6::camera::Camera;
-use lecture6::environment::ConstantEnvironment;
-use lecture6::geometry::{Cube, Geometry, Mesh, Plane, Prism, Sphere};
-use lecture6::light::PointLight;
-use lecture6::math::Vector;
-use lecture6::node::Node;
-use lecture6::photon_map::{PhotonMap, PhotonSettings};
-use lecture6::ray::Ray;
-use lecture6::rng::Rng;
-use lecture6::scene::{Scene, TraceContext};
-use lecture6::shader::{Lambert, Layered, Phong, Reflection, Refraction, Shader};
-use lecture6::spectral::Ior;
-use lecture6::texture::{CheckerTexture, Fresnel, FresnelMode};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::environment::ConstantEnvironment;
+use lecture6::lesson::geometry::{Cube, Geometry, Mesh, Plane, Prism, Sphere};
+use lecture6::lesson::light::PointLight;
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::node::Node;
+use lecture6::lesson::photon_map::{PhotonMap, PhotonSettings};
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::{Scene, TraceContext};
+use lecture6::lesson::shader::{Lambert, Layered, Phong, Reflection, Refraction, Shader};
+use lecture6::lesson::spectral::Ior;
+use lecture6::lesson::texture::{CheckerTexture, Fresnel, FresnelMode};
 use proptest::prelude::*;
 use std::sync::{Arc, OnceLock};
 

@@ -5,17 +5,17 @@
 mod common;
 
 use common::examples::{reflect_v01, reflect_v02, refract as refract_scene};
-use lecture6::camera::Camera;
-use lecture6::color::Color;
-use lecture6::environment::{ConstantEnvironment, Environment};
-use lecture6::geometry::{Cube, Sphere};
-use lecture6::math::{OrthonormalBasis, Vector, reflect, refract};
-use lecture6::node::Node;
-use lecture6::ray::Ray;
-use lecture6::render::{RenderSettings, render};
-use lecture6::rng::Rng;
-use lecture6::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
-use lecture6::shader::{Reflection, Refraction};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::environment::{ConstantEnvironment, Environment};
+use lecture6::lesson::geometry::{Cube, Sphere};
+use lecture6::lesson::math::{OrthonormalBasis, Vector, reflect, refract};
+use lecture6::lesson::node::Node;
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
+use lecture6::lesson::shader::{Reflection, Refraction};
 use std::sync::Arc;
 
 const GLASS: f32 = 1.5;
@@ -112,7 +112,7 @@ fn into_and_back_out_of_a_slab_restores_the_direction() {
     for yaw in [0.0, 25.0, -50.0] {
         let scene = slab_scene(yaw);
         // The outward normal of the face towards the camera.
-        let n = lecture6::camera::rotation(yaw, 0.0, 0.0) * -Vector::Z;
+        let n = lecture6::lesson::camera::rotation(yaw, 0.0, 0.0) * -Vector::Z;
         for step in 0..12 {
             let dir = incoming(n, (step as f32 * 5.0).to_radians(), step as f32);
             let ray = Ray::new(Vector::new(3.0, -2.0, 40.0) - 30.0 * dir, dir);
@@ -174,7 +174,7 @@ fn a_perfect_mirror_sphere_shows_exactly_its_environment() {
     }
 }
 
-fn counters<E: lecture6::cli::Example>(args: &[&str]) -> Counters {
+fn counters<E: lecture6::app::cli::Example>(args: &[&str]) -> Counters {
     common::parse::<E>(args).render().unwrap().1.counters
 }
 

@@ -7,11 +7,11 @@ mod common;
 use common::examples::scene_file as scene_file_example;
 
 use lecture6::Vector;
-use lecture6::color::Color;
-use lecture6::compare::difference;
-use lecture6::ray::Ray;
-use lecture6::render::{RenderSettings, render};
-use lecture6::scene_file::{LoadOptions, SceneFile, load};
+use lecture6::app::scene_file::{LoadOptions, SceneFile, load};
+use lecture6::instruments::compare::difference;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::{RenderSettings, render};
 use std::path::PathBuf;
 
 const FOLDER: &str = "scene-file-tests";
@@ -38,7 +38,7 @@ fn error(name: &str, text: &str) -> String {
 const CAMERA: &str = "Camera {\n position (0, 0, -10)\n}\n";
 
 /// The first hit of a ray from `start` along `dir` in the scene.
-fn hit(file: &SceneFile, start: Vector, dir: Vector) -> Option<lecture6::geometry::IntersectionInfo> {
+fn hit(file: &SceneFile, start: Vector, dir: Vector) -> Option<lecture6::lesson::geometry::IntersectionInfo> {
     file.scene.closest_hit(&Ray::new(start, dir.normalize())).map(|(h, _)| h)
 }
 
@@ -202,7 +202,8 @@ fn shaders_and_textures_render_with_their_properties() {
         let ray = Ray::new(Vector::new(x, 0.5, -20.0), Vector::new(0.0, -1.5, 15.0).normalize());
         let (info, node) = file.scene.closest_hit(&ray).unwrap();
         assert!(near(info.ip, Vector::new(x, -1.0, -5.0)), "the floor at {}", info.ip);
-        let mut ctx = lecture6::scene::TraceContext::new(&file.scene, lecture6::rng::Rng::for_keys(&[1]));
+        let mut ctx =
+            lecture6::lesson::scene::TraceContext::new(&file.scene, lecture6::lesson::rng::Rng::for_keys(&[1]));
         (info.uv().0, node.shader.shade(&ray, &info, &mut ctx))
     };
     let (a, b) = (floor_at(0.5).1, floor_at(1.5).1);
@@ -226,12 +227,13 @@ fn assumed_gamma_decodes_the_stored_values() {
         let file = loaded("gamma.qdmg", &text);
         let ray = Ray::new(Vector::new(0.3, 1.0, 0.3), -Vector::Y);
         let (info, node) = file.scene.closest_hit(&ray).unwrap();
-        let mut ctx = lecture6::scene::TraceContext::new(&file.scene, lecture6::rng::Rng::for_keys(&[1]));
+        let mut ctx =
+            lecture6::lesson::scene::TraceContext::new(&file.scene, lecture6::lesson::rng::Rng::for_keys(&[1]));
         node.shader.shade(&ray, &info, &mut ctx).r()
     };
     let stored = 128.0 / 255.0;
     assert!((colour("") - stored).abs() < 1e-3, "no gamma: the stored value {}", colour(""));
-    assert!((colour(" assumedGamma 2.2\n") - lecture6::color::srgb_to_linear(stored)).abs() < 1e-3);
+    assert!((colour(" assumedGamma 2.2\n") - lecture6::lesson::color::srgb_to_linear(stored)).abs() < 1e-3);
     assert!((colour(" assumedGamma 1.5\n") - stored.powf(1.5)).abs() < 1e-3);
 }
 
@@ -301,7 +303,7 @@ fn unknown_properties_odd_bools_and_duplicate_names_are_warnings_with_their_line
     let (info, node) = file.scene.closest_hit(&ray).unwrap();
     let mut scene = file.scene.clone();
     scene.ambient = Color::WHITE;
-    let mut ctx = lecture6::scene::TraceContext::new(&scene, lecture6::rng::Rng::for_keys(&[1]));
+    let mut ctx = lecture6::lesson::scene::TraceContext::new(&scene, lecture6::lesson::rng::Rng::for_keys(&[1]));
     assert_eq!(node.shader.shade(&ray, &info, &mut ctx), Color::new(1.0, 0.0, 0.0));
 }
 
@@ -442,7 +444,7 @@ fn a_cube_map_in_the_course_layout_is_read_by_default_and_opengl_on_request() {
     let text = |layout: &str| format!("{CAMERA}CubemapEnvironment {{\n folder {}\n{layout}}}\n", dir.display());
     let course = loaded("cube-course.qdmg", &text(""));
     let opengl = loaded("cube-opengl.qdmg", &text(" layout opengl\n"));
-    let reference = lecture6::environment::load(&dir).unwrap();
+    let reference = lecture6::lesson::environment::load(&dir).unwrap();
     let (a, b) = (course.scene.environment.unwrap(), opengl.scene.environment.unwrap());
     let side = Vector::new(1.0, 0.2, 0.3);
     let behind = Vector::new(0.3, -0.2, -1.0);

@@ -22,12 +22,12 @@
 #[macro_use]
 mod common;
 
-use lecture6::cli::Example;
-use lecture6::compare::{Difference, difference, heat_map};
-use lecture6::math::Vector;
-use lecture6::photon_map::PhotonMap;
-use lecture6::render::{RenderSettings, render};
-use lecture6::scene::Scene;
+use lecture6::app::cli::Example;
+use lecture6::instruments::compare::{Difference, difference, heat_map};
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::photon_map::PhotonMap;
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::scene::Scene;
 use std::sync::Arc;
 
 /// The scene scaled by `s` about the origin, then moved by `offset`.

@@ -4,7 +4,7 @@
 mod common;
 
 use common::examples::{bitmap_textures, glossy};
-use lecture6::study::{Measurement, Sweep, pareto_front, rmse_at_time};
+use lecture6::instruments::study::{Measurement, Sweep, pareto_front, rmse_at_time};
 
 fn rmse_curve(sweep: &Sweep) -> Vec<f64> {
     let reference = sweep.reference_frame(None).unwrap();

@@ -2,18 +2,18 @@
 //! analytic ellipsoid normal, instancing renders exactly what separate copies render, and a singular
 //! transform is an error.
 
-use lecture6::camera::{Camera, rotation};
-use lecture6::color::Color;
-use lecture6::geometry::{Geometry, Mesh, Sphere};
-use lecture6::light::PointLight;
-use lecture6::math::Vector;
-use lecture6::node::Node;
-use lecture6::ray::Ray;
-use lecture6::render::{RenderSettings, render};
-use lecture6::rng::Rng;
-use lecture6::scene::Scene;
-use lecture6::shader::{Lambert, Phong, Shader};
-use lecture6::transform::Transform;
+use lecture6::lesson::camera::{Camera, rotation};
+use lecture6::lesson::color::Color;
+use lecture6::lesson::geometry::{Geometry, Mesh, Sphere};
+use lecture6::lesson::light::PointLight;
+use lecture6::lesson::math::Vector;
+use lecture6::lesson::node::Node;
+use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::rng::Rng;
+use lecture6::lesson::scene::Scene;
+use lecture6::lesson::shader::{Lambert, Phong, Shader};
+use lecture6::lesson::transform::Transform;
 use proptest::prelude::*;
 use std::sync::Arc;
 

@@ -8,14 +8,14 @@ mod common;
 
 use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;
-use lecture6::camera::Camera;
-use lecture6::cli::Cli;
-use lecture6::cli::Example;
-use lecture6::progressive::{PREVIEW_PIXELS, preview_settings};
-use lecture6::render::{Frame, MAX_SPP, RenderSettings};
-use lecture6::viewer::controls::{Controls, Kind};
-use lecture6::viewer::fly::{Motion, as_code, moved};
-use lecture6::viewer::worker::{Job, Worker};
+use lecture6::app::cli::Cli;
+use lecture6::app::cli::Example;
+use lecture6::instruments::progressive::{PREVIEW_PIXELS, preview_settings};
+use lecture6::instruments::viewer::controls::{Controls, Kind};
+use lecture6::instruments::viewer::fly::{Motion, as_code, moved};
+use lecture6::instruments::viewer::worker::{Job, Worker};
+use lecture6::lesson::camera::Camera;
+use lecture6::lesson::render::{Frame, MAX_SPP, RenderSettings};
 use std::ffi::OsString;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
@@ -173,7 +173,7 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     let moved = finished(&worker);
     let mut scene = second.prepare_scene().unwrap();
     scene.camera = camera;
-    assert!(moved == lecture6::render::render(&scene, &second.settings()).unwrap().0);
+    assert!(moved == lecture6::lesson::render::render(&scene, &second.settings()).unwrap().0);
 }
 
 #[test]

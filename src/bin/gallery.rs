@@ -13,8 +13,8 @@
 #[macro_use]
 mod examples;
 
-use lecture6::cli::{Cli, Example};
-use lecture6::render::save_atomically;
+use lecture6::app::cli::{Cli, Example};
+use lecture6::lesson::render::save_atomically;
 use std::fmt::Write;
 use std::path::Path;
 use std::process::ExitCode;

@@ -1,9 +1,9 @@
-//! Draws every texture and writes every mesh of the workbook into `textures/` (see `lecture6::assets`).
+//! Draws every texture and writes every mesh of the workbook into `textures/` (see `lecture6::app::assets`).
 //! Deterministic: running it again writes the same files.
 
 use lecture6::Result;
-use lecture6::assets::{ASSETS, HDR_ASSETS, MESHES};
-use lecture6::render::save_atomically;
+use lecture6::app::assets::{ASSETS, HDR_ASSETS, MESHES};
+use lecture6::lesson::render::save_atomically;
 use std::path::Path;
 use std::process::ExitCode;
 

@@ -4,13 +4,13 @@
 
 #![allow(dead_code)] // each test file uses its own part of this module
 
-use lecture6::cli::{Cli, Example};
+use lecture6::app::cli::{Cli, Example};
 
 #[macro_use]
 pub mod examples;
 
-use lecture6::compare::{difference, heat_map};
-use lecture6::render::Frame;
+use lecture6::instruments::compare::{difference, heat_map};
+use lecture6::lesson::render::Frame;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -1,0 +1,209 @@
+//! Progressive rendering: the picture building up on screen while it renders, as the course's program shows
+//! it (row by row at lecture 6, bucket by bucket in its later versions). The live viewer draws with it; it
+//! needs no window, so the tests drive it directly.
+//!
+//! A progressive render is a fast coarse pass (one sample through each pixel's centre at a quarter of the
+//! resolution in each direction), then the full picture in square tiles, nearest the centre of the image
+//! first, at the quality the settings ask for. Every pixel's random stream depends only on (seed, x, y), so
+//! the tiles, in whatever order and on whatever thread, add up to exactly the picture [`render`] gives. The
+//! course's adaptive anti-aliasing, which compares each pixel with its neighbours, runs once the last tile
+//! is drawn, as it does after [`render`]'s rows.
+//!
+//! A render can be cancelled: it checks a flag before each row of the coarse pass and before each tile, so
+//! once the flag is set every worker finishes at most the tile it is drawing and stops.
+//!
+//! The functions run on the current rayon pool: call them inside [`crate::lesson::render::thread_pool`]'s
+//! `install`, whose threads have the stack that deep ray trees need.
+//!
+//! [`render`]: crate::lesson::render::render
+
+use crate::lesson::color::Color;
+use crate::lesson::error::{Error, Result};
+use crate::lesson::render::{Frame, RenderSettings, RenderStats, render_rect};
+use crate::lesson::scene::{Counters, Scene};
+use crate::lesson::spectral::SpectralPlan;
+use rayon::prelude::*;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::time::Instant;
+
+/// The side of a tile, in pixels.
+pub const TILE_SIZE: u32 = 32;
+
+/// The coarse pass has 1/COARSE_SCALE of the picture's resolution in each direction.
+pub const COARSE_SCALE: u32 = 4;
+
+/// A rectangle of pixels of the picture and, once drawn, their colours (row by row) and the rays traced
+/// for them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tile {
+    pub x: u32,
+    pub y: u32,
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Color>,
+    pub rays: u64,
+}
+
+/// What a progressive render shows as it goes.
+pub enum Update<'a> {
+    /// The coarse pass, complete: a small frame to be shown stretched over the picture.
+    Coarse(&'a Frame),
+    /// One tile of the full picture, final.
+    Tile(&'a Tile),
+}
+
+/// How a progressive render ended.
+#[derive(Debug)]
+pub enum Outcome {
+    /// Every tile was drawn: the picture, the same as [`crate::lesson::render::render`]'s, and its statistics.
+    Finished(Frame, Box<RenderStats>),
+    /// The cancel flag was set before the last tile.
+    Cancelled,
+}
+
+/// The tiles of a `width` x `height` picture (not yet drawn), those nearest the centre first.
+pub fn tiles(width: u32, height: u32) -> Vec<Tile> {
+    let mut tiles: Vec<Tile> = (0..height.div_ceil(TILE_SIZE))
+        .flat_map(|j| (0..width.div_ceil(TILE_SIZE)).map(move |i| (i * TILE_SIZE, j * TILE_SIZE)))
+        .map(|(x, y)| Tile {
+            x,
+            y,
+            width: TILE_SIZE.min(width - x),
+            height: TILE_SIZE.min(height - y),
+            pixels: Vec::new(),
+            rays: 0,
+        })
+        .collect();
+    // Twice the distance from the tile's centre to the picture's, in whole pixels (so the sort is exact).
+    let distance = |t: &Tile| {
+        let dx = (2 * t.x + t.width).abs_diff(width) as u64;
+        let dy = (2 * t.y + t.height).abs_diff(height) as u64;
+        dx * dx + dy * dy
+    };
+    tiles.sort_by_key(distance);
+    tiles
+}
+
+/// The settings of the coarse pass of a render with `settings`: one sample per pixel at 1/COARSE_SCALE of
+/// the resolution (at least one pixel each way).
+pub fn coarse_settings(settings: &RenderSettings) -> RenderSettings {
+    RenderSettings {
+        width: settings.width.div_ceil(COARSE_SCALE),
+        height: settings.height.div_ceil(COARSE_SCALE),
+        spp: 1,
+        progress: false,
+        ..*settings
+    }
+}
+
+/// At most this many pixels are rendered while the viewer's camera moves (320 x 240, one sample each).
+pub const PREVIEW_PIXELS: u32 = 320 * 240;
+
+/// The settings of the picture the viewer draws while the camera moves: one sample per pixel, the picture's
+/// size divided by the smallest whole factor that brings it to at most [`PREVIEW_PIXELS`].
+pub fn preview_settings(settings: &RenderSettings) -> RenderSettings {
+    let pixels = settings.width as f64 * settings.height as f64;
+    let factor = (pixels / PREVIEW_PIXELS as f64).sqrt().ceil().max(1.0) as u32;
+    RenderSettings {
+        width: settings.width.div_ceil(factor),
+        height: settings.height.div_ceil(factor),
+        spp: 1,
+        progress: false,
+        ..*settings
+    }
+}
+
+/// The wavelength plan a render of `scene` with `settings` follows (as [`crate::lesson::render::render`] chooses it).
+fn plan_for(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
+    SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths)
+}
+
+/// Renders the whole of a (small) picture with `settings`, rows in parallel, unless `cancel` is set first:
+/// the coarse pass, and the picture the viewer shows while the camera moves. Returns the frame and the rays
+/// traced, or `None` if cancelled.
+pub fn quick_frame(scene: &Scene, settings: &RenderSettings, cancel: &AtomicBool) -> Result<Option<(Frame, Counters)>> {
+    settings.check()?;
+    scene.check()?;
+    let plan = plan_for(scene, settings);
+    let mut frame = Frame::new(settings.width, settings.height);
+    let width = settings.width;
+    let rows: Option<Vec<Counters>> = frame
+        .pixels
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .map(|(y, row)| {
+            let y = y as u32;
+            (!cancel.load(Ordering::Relaxed)).then(|| render_rect(scene, settings, &plan, 0..width, y..y + 1, row))
+        })
+        .collect();
+    Ok(rows.map(|rows| {
+        let mut counters = Counters::default();
+        rows.iter().for_each(|c| counters.add(c));
+        (frame, counters)
+    }))
+}
+
+/// Renders `scene` progressively: the coarse pass, then the tiles of the full picture, each given to
+/// `on_update` as soon as it is done (from the worker thread that drew it). Stops, with
+/// [`Outcome::Cancelled`], once `cancel` is set: every worker finishes at most the tile it is drawing.
+pub fn render_progressive(
+    scene: &Scene,
+    settings: &RenderSettings,
+    cancel: &AtomicBool,
+    on_update: &(dyn Fn(Update) + Sync),
+) -> Result<Outcome> {
+    settings.check()?;
+    scene.check()?;
+    let plan = plan_for(scene, settings);
+    if settings.adaptive_aa && plan != SpectralPlan::White {
+        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
+    }
+    let start = Instant::now();
+    let Some((coarse, coarse_rays)) = quick_frame(scene, &coarse_settings(settings), cancel)? else {
+        return Ok(Outcome::Cancelled);
+    };
+    on_update(Update::Coarse(&coarse));
+
+    let tiles = tiles(settings.width, settings.height);
+    let next = AtomicUsize::new(0);
+    let frame = Mutex::new(Frame::new(settings.width, settings.height));
+    let counters = Mutex::new(coarse_rays);
+    // Every worker takes the next tile in order until none is left or the render is cancelled.
+    rayon::broadcast(|_| {
+        let mut rays = Counters::default();
+        while !cancel.load(Ordering::Relaxed) {
+            let Some(tile) = tiles.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
+            let mut tile = Tile { pixels: vec![Color::BLACK; (tile.width * tile.height) as usize], ..tile.clone() };
+            let (xs, ys) = (tile.x..tile.x + tile.width, tile.y..tile.y + tile.height);
+            let tile_rays = render_rect(scene, settings, &plan, xs, ys, &mut tile.pixels);
+            tile.rays = tile_rays.total();
+            rays.add(&tile_rays);
+            on_update(Update::Tile(&tile));
+            let mut frame = frame.lock().expect("no worker panics holding the frame");
+            for (row, colors) in tile.pixels.chunks(tile.width as usize).enumerate() {
+                let start = ((tile.y + row as u32) * settings.width + tile.x) as usize;
+                frame.pixels[start..start + colors.len()].copy_from_slice(colors);
+            }
+        }
+        counters.lock().expect("no worker panics holding the counters").add(&rays);
+    });
+    if next.load(Ordering::Relaxed) < tiles.len() || cancel.load(Ordering::Relaxed) {
+        return Ok(Outcome::Cancelled);
+    }
+    let mut frame = frame.into_inner().expect("no worker panicked");
+    let mut counters = counters.into_inner().expect("no worker panicked");
+    // The course's adaptive anti-aliasing looks at each pixel's neighbours: once every tile is drawn.
+    if settings.adaptive_aa {
+        let camera = scene.camera.frame(settings.width, settings.height);
+        counters.add(&crate::lesson::adaptive_aa::refine(scene, &camera, settings, &mut frame));
+    }
+    let stats = RenderStats {
+        elapsed: start.elapsed(),
+        threads: rayon::current_num_threads(),
+        counters,
+        spectral: plan,
+        photons: scene.photon_map.as_ref().map(|map| map.stats),
+    };
+    Ok(Outcome::Finished(frame, Box::new(stats)))
+}

@@ -1,0 +1,169 @@
+//! `Bitmap` (slide "Bitmap текстури"): an image held in linear light, with nearest and bilinear look-ups and
+//! wrapping. Used by [`BitmapTexture`](crate::lesson::texture::BitmapTexture) and by the environments.
+//!
+//! 8-bit files (PNG, JPEG, BMP) hold sRGB-encoded values. They are kept as they are, 4 bytes a texel, and
+//! each texel read is decoded to linear light through a 256-entry table: a quarter of the memory of float
+//! texels, so a large texture stays in the cache, and the same linear values as decoding on load. Bilinear
+//! filtering mixes the decoded (linear) values. Floating point files (Radiance HDR, OpenEXR) are linear
+//! already, keep values above 1 and are stored as floats, as are 16-bit files (decoded on load).
+
+use crate::lesson::color::{Color, srgb_to_linear, srgb8_to_linear_table};
+use crate::lesson::error::{Error, Result};
+use crate::lesson::math::floor;
+use glam::Vec3A;
+use std::path::Path;
+
+/// What happens to texture coordinates outside [0, 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Wrap {
+    /// The image tiles the plane.
+    #[default]
+    Repeat,
+    /// Every other tile is mirrored, so neighbouring tiles meet without a seam.
+    Mirror,
+    /// Coordinates stick to the edge pixels.
+    Clamp,
+}
+
+/// How a texel is chosen for a point between texel centres.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Filter {
+    /// The texel the point falls in: blocky when magnified.
+    Nearest,
+    /// A distance-weighted mix of the four texels around the point.
+    #[default]
+    Bilinear,
+}
+
+impl Wrap {
+    /// Maps an integer texel index into [0, n).
+    #[inline(always)]
+    fn texel(self, i: i64, n: usize) -> usize {
+        // Inside the image every mode leaves the index as it is: no division.
+        if (0..n as i64).contains(&i) {
+            return i as usize;
+        }
+        let n = n as i64;
+        (match self {
+            Wrap::Repeat => i.rem_euclid(n),
+            Wrap::Clamp => i.clamp(0, n - 1),
+            Wrap::Mirror => {
+                let m = i.rem_euclid(2 * n);
+                if m < n { m } else { 2 * n - 1 - m }
+            }
+        }) as usize
+    }
+}
+
+/// How a bitmap holds its texels.
+#[derive(Clone, Debug)]
+enum Texels {
+    /// Linear colours.
+    Linear(Vec<Color>),
+    /// 8-bit sRGB codes (the fourth byte is padding), decoded through `table`.
+    Srgb8 { codes: Vec<[u8; 4]>, table: &'static [f32; 256] },
+}
+
+#[derive(Clone, Debug)]
+pub struct Bitmap {
+    width: usize,
+    height: usize,
+    texels: Texels,
+}
+
+impl Bitmap {
+    /// A bitmap from linear pixels in rows from the top. Panics if the sizes disagree or are zero (a
+    /// programming error, not user input).
+    pub fn from_pixels(width: usize, height: usize, pixels: Vec<Color>) -> Bitmap {
+        assert!(width > 0 && height > 0 && pixels.len() == width * height);
+        Bitmap { width, height, texels: Texels::Linear(pixels) }
+    }
+
+    /// Loads an image file; the format is detected from its contents.
+    pub fn load(path: &Path) -> Result<Bitmap> {
+        let reader = image::ImageReader::open(path)
+            .map_err(|e| Error::file("cannot open image", path, e))?
+            .with_guessed_format()
+            .map_err(|e| Error::file("cannot read image", path, e))?;
+        let img = reader.decode().map_err(|e| Error::file("cannot decode image", path, e))?;
+        let (width, height) = (img.width() as usize, img.height() as usize);
+        if width == 0 || height == 0 {
+            return Err(Error::file("cannot use image", path, "it has no pixels"));
+        }
+        use image::DynamicImage as D;
+        let texels = match img {
+            // Floating-point images (Radiance HDR, OpenEXR) hold linear light already.
+            D::ImageRgb32F(_) | D::ImageRgba32F(_) => {
+                Texels::Linear(img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0)).sanitized()).collect())
+            }
+            // 16-bit integer images are sRGB-encoded.
+            D::ImageLuma16(_) | D::ImageLumaA16(_) | D::ImageRgb16(_) | D::ImageRgba16(_) => Texels::Linear(
+                img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0.map(srgb_to_linear)))).collect(),
+            ),
+            // 8-bit images are sRGB-encoded: kept so, decoded through a 256-entry table when read.
+            _ => Texels::Srgb8 {
+                codes: img.into_rgb8().pixels().map(|p| [p[0], p[1], p[2], 0]).collect(),
+                table: srgb8_to_linear_table(),
+            },
+        };
+        Ok(Bitmap { width, height, texels })
+    }
+
+    pub fn width(&self) -> usize {
+        self.width
+    }
+    pub fn height(&self) -> usize {
+        self.height
+    }
+
+    /// The pixel at column `x`, row `y` (row 0 is the top).
+    pub fn get_pixel(&self, x: usize, y: usize) -> Color {
+        let i = y * self.width + x;
+        match &self.texels {
+            Texels::Linear(pixels) => pixels[i],
+            Texels::Srgb8 { codes, table } => decode(codes[i], table),
+        }
+    }
+
+    /// The colour at texture coordinates (u, v): u runs left to right and v top to bottom across the image,
+    /// one image per unit; outside [0, 1) the `wrap` mode decides.
+    pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
+        // The storage is chosen once per look-up, not once per texel.
+        match &self.texels {
+            Texels::Linear(pixels) => self.filtered(u, v, filter, wrap, |i| pixels[i]),
+            Texels::Srgb8 { codes, table } => self.filtered(u, v, filter, wrap, |i| decode(codes[i], table)),
+        }
+    }
+
+    /// [`Bitmap::sample`], with `texel(i)` the linear colour of the texel at index `i` (row by row).
+    #[inline(always)]
+    fn filtered(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap), texel: impl Fn(usize) -> Color) -> Color {
+        // NaN coordinates (a degenerate hit) read the first texel rather than index out of range.
+        let x = if u.is_finite() { u * self.width as f32 } else { 0.0 };
+        let y = if v.is_finite() { v * self.height as f32 } else { 0.0 };
+        let at = |i: usize, j: usize| texel(j * self.width + i);
+        match filter {
+            Filter::Nearest => {
+                at(wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height))
+            }
+            Filter::Bilinear => {
+                // Texel centres sit at half-integer coordinates.
+                let (fx, fy) = (x - 0.5, y - 0.5);
+                let (x0, y0) = (floor(fx), floor(fy));
+                let (tx, ty) = (fx - x0, fy - y0);
+                let (x0, y0) = (x0 as i64, y0 as i64);
+                let (i0, i1) = (wrap.0.texel(x0, self.width), wrap.0.texel(x0 + 1, self.width));
+                let (j0, j1) = (wrap.1.texel(y0, self.height), wrap.1.texel(y0 + 1, self.height));
+                let top = at(i0, j0) * (1.0 - tx) + at(i1, j0) * tx;
+                let bottom = at(i0, j1) * (1.0 - tx) + at(i1, j1) * tx;
+                top * (1.0 - ty) + bottom * ty
+            }
+        }
+    }
+}
+
+/// The linear colour of an 8-bit sRGB texel.
+#[inline(always)]
+fn decode(code: [u8; 4], table: &[f32; 256]) -> Color {
+    Color::new(table[code[0] as usize], table[code[1] as usize], table[code[2] as usize])
+}

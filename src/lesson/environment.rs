@@ -1,0 +1,301 @@
+//! The environment (slides "Заден фон", "Интерфейс за заден фон"): what a ray that hits nothing sees. It
+//! depends on the ray's direction only, never on where the ray starts.
+//!
+//! Two image-based environments, as on the slides:
+//! - [`SphericalEnvironment`]: one equirectangular image (longitude across, latitude down);
+//! - [`CubemapEnvironment`]: six square images, the faces of a cube around the scene; the largest absolute
+//!   component of the direction picks the face and the other two index it.
+//!
+//! Both read any format [`Bitmap`] reads (PNG, JPEG, BMP in sRGB; Radiance HDR and OpenEXR in linear light,
+//! keeping values above 1, so a sun can be much brighter than white) and filter bilinearly by default.
+//!
+//! # Conventions
+//!
+//! The world is the camera's: +Y is up and, with zero angles, the camera looks along +Z with +X to its
+//! right. Every image is seen **from the inside, unmirrored**: looking at some part of the image from the
+//! centre of the scene, the picture appears as it does in an image viewer.
+//!
+//! **Equirectangular** (2:1): the **centre of the image faces +Z** (what the default camera looks at).
+//! `u = 0.5 + atan2(x, z) / 2π` runs left to right: -Z at the left and right edges (the seam), -X at a
+//! quarter, +Z at the middle, +X at three quarters. `v = 0.5 - asin(y) / π` runs top to bottom: the top row
+//! is straight up (+Y), the middle row the horizon, the bottom row straight down.
+//!
+//! **Cube map**: files `posx, negx, posy, negy, posz, negz` with any of the extensions in
+//! [`FACE_EXTENSIONS`]. Each face spans 90° and its centre is its axis (the direction +X lands in the
+//! middle of `posx`). Within a face, u runs left to right and v top to bottom along these directions:
+//!
+//! | face | centre | u (left → right) | v (top → bottom) |
+//! |---|---|---|---|
+//! | `posx` | +X | -Z | -Y |
+//! | `negx` | -X | +Z | -Y |
+//! | `posy` | +Y | +X | +Z |
+//! | `negy` | -Y | +X | -Z |
+//! | `posz` | +Z | +X | -Y |
+//! | `negz` | -Z | -X | -Y |
+//!
+//! This is the layout of OpenGL and Direct3D cube maps, so skyboxes made for them (with these names) work
+//! as they are. A camera with a 90° square view pointed along an axis sees exactly that face.
+//!
+//! **The course's layout** ([`CubemapLayout::Course`]) differs in one face: its `negz` image is the OpenGL
+//! one turned by 180° (u along +X, v along +Y; it is the -Z face cut from a vertical-cross picture, where
+//! that face stands on its head). The course's scene files and cube maps use it; such a face is turned when
+//! it is loaded, so the look-up is the same for both layouts. Face files are found whatever the case of
+//! their extension (`posx.PNG`); all six must be square and of one size.
+//!
+//! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
+//! matters), and a degenerate direction returns a colour of the image rather than failing.
+
+use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
+use crate::lesson::color::Color;
+use crate::lesson::error::{Error, Result};
+use crate::lesson::math::Vector;
+use rayon::prelude::*;
+use std::f32::consts::{FRAC_1_PI, PI};
+use std::path::Path;
+use std::sync::Arc;
+
+/// The course's `Environment` interface (`getEnvironment(dir)`).
+pub trait Environment: Send + Sync {
+    /// The colour seen in the unit direction `dir`.
+    fn get(&self, dir: Vector) -> Color;
+}
+
+/// The same colour in every direction (a uniformly lit sky, useful for tests and energy checks).
+#[derive(Clone, Copy, Debug)]
+pub struct ConstantEnvironment(pub Color);
+
+impl Environment for ConstantEnvironment {
+    fn get(&self, _dir: Vector) -> Color {
+        self.0
+    }
+}
+
+/// Loads the environment at `path`: a folder is a cube map in the OpenGL layout (see
+/// [`CubemapEnvironment::load`]), a file an equirectangular image (see [`SphericalEnvironment::load`]).
+pub fn load(path: &Path) -> Result<Arc<dyn Environment>> {
+    load_with_layout(path, CubemapLayout::OpenGl)
+}
+
+/// Loads the environment at `path` as [`load`] does, reading a cube map's faces in `layout`.
+pub fn load_with_layout(path: &Path, layout: CubemapLayout) -> Result<Arc<dyn Environment>> {
+    Ok(if path.is_dir() {
+        Arc::new(CubemapEnvironment::load_layout(path, layout)?)
+    } else {
+        Arc::new(SphericalEnvironment::load(path)?)
+    })
+}
+
+/// Where the direction `dir` lands in an equirectangular image: (u, v) in [0, 1] (see the module docs).
+pub fn equirect_uv(dir: Vector) -> (f32, f32) {
+    let u = 0.5 + dir.x.atan2(dir.z) * (0.5 * FRAC_1_PI);
+    let v = 0.5 - dir.y.atan2(dir.x.hypot(dir.z)) * FRAC_1_PI;
+    (u, v)
+}
+
+/// The unit direction that lands at (u, v) of an equirectangular image: the inverse of [`equirect_uv`].
+pub fn equirect_direction(u: f32, v: f32) -> Vector {
+    let longitude = (u - 0.5) * 2.0 * PI;
+    let latitude = (0.5 - v) * PI;
+    Vector::new(latitude.cos() * longitude.sin(), latitude.sin(), latitude.cos() * longitude.cos())
+}
+
+/// An environment from one equirectangular image (the slides' spherical environment).
+#[derive(Clone, Debug)]
+pub struct SphericalEnvironment {
+    pub bitmap: Arc<Bitmap>,
+    pub filter: Filter,
+}
+
+impl SphericalEnvironment {
+    /// A bilinearly filtered environment from an image in linear light.
+    pub fn new(bitmap: Arc<Bitmap>) -> SphericalEnvironment {
+        SphericalEnvironment { bitmap, filter: Filter::Bilinear }
+    }
+
+    /// Loads an equirectangular image file; one that is not twice as wide as high is refused.
+    pub fn load(path: &Path) -> Result<SphericalEnvironment> {
+        let bitmap = Bitmap::load(path)?;
+        let (w, h) = (bitmap.width(), bitmap.height());
+        if w != 2 * h {
+            return Err(Error::file(
+                "cannot use environment",
+                path,
+                format!("an equirectangular image must be twice as wide as high (2:1), this one is {w}x{h}"),
+            ));
+        }
+        Ok(SphericalEnvironment::new(Arc::new(bitmap)))
+    }
+
+    pub fn with_filter(self, filter: Filter) -> SphericalEnvironment {
+        SphericalEnvironment { filter, ..self }
+    }
+}
+
+impl Environment for SphericalEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        let (u, v) = equirect_uv(dir);
+        // Longitude goes round (repeat); latitude stops at the poles (clamp).
+        self.bitmap.sample(u, v, self.filter, (Wrap::Repeat, Wrap::Clamp))
+    }
+}
+
+/// One face of a cube map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CubeFace {
+    PosX,
+    NegX,
+    PosY,
+    NegY,
+    PosZ,
+    NegZ,
+}
+
+impl CubeFace {
+    /// The faces in the order [`CubemapEnvironment::new`] takes them.
+    pub const ALL: [CubeFace; 6] =
+        [CubeFace::PosX, CubeFace::NegX, CubeFace::PosY, CubeFace::NegY, CubeFace::PosZ, CubeFace::NegZ];
+
+    /// The face's file name without extension.
+    pub fn name(self) -> &'static str {
+        ["posx", "negx", "posy", "negy", "posz", "negz"][self as usize]
+    }
+
+    /// The face's centre direction and the directions its u and v run along (the table in the module docs).
+    pub fn axes(self) -> (Vector, Vector, Vector) {
+        let (x, y, z) = (Vector::X, Vector::Y, Vector::Z);
+        match self {
+            CubeFace::PosX => (x, -z, -y),
+            CubeFace::NegX => (-x, z, -y),
+            CubeFace::PosY => (y, x, z),
+            CubeFace::NegY => (-y, x, -z),
+            CubeFace::PosZ => (z, x, -y),
+            CubeFace::NegZ => (-z, -x, -y),
+        }
+    }
+}
+
+/// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
+pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
+    let a = dir.abs();
+    let face = if a.x >= a.y && a.x >= a.z {
+        if dir.x >= 0.0 { CubeFace::PosX } else { CubeFace::NegX }
+    } else if a.y >= a.z {
+        if dir.y >= 0.0 { CubeFace::PosY } else { CubeFace::NegY }
+    } else if dir.z >= 0.0 {
+        CubeFace::PosZ
+    } else {
+        CubeFace::NegZ
+    };
+    let (centre, u_axis, v_axis) = face.axes();
+    // Project onto the face's plane at distance 1: the major component becomes 1.
+    let major = dir.dot(centre);
+    (face, 0.5 + 0.5 * dir.dot(u_axis) / major, 0.5 + 0.5 * dir.dot(v_axis) / major)
+}
+
+/// The unit direction through (u, v) of a cube face: the inverse of [`cube_face_uv`].
+pub fn cube_face_direction(face: CubeFace, u: f32, v: f32) -> Vector {
+    let (centre, u_axis, v_axis) = face.axes();
+    (centre + (2.0 * u - 1.0) * u_axis + (2.0 * v - 1.0) * v_axis).normalize()
+}
+
+/// The extensions a cube face file may have, tried in this order.
+pub const FACE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr"];
+
+/// How the six images of a cube map are oriented (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum CubemapLayout {
+    /// OpenGL's and Direct3D's: the skyboxes found on the web, and the workbook's own `sky_cubemap`.
+    #[default]
+    #[value(name = "opengl")]
+    OpenGl,
+    /// The course's: `negz` turned by 180° against OpenGL's. The course's cube maps and scene files.
+    Course,
+}
+
+/// The image turned by 180° (upside down and mirrored).
+fn half_turn(bitmap: &Bitmap) -> Bitmap {
+    let (w, h) = (bitmap.width(), bitmap.height());
+    let pixels = (0..h).flat_map(|y| (0..w).map(move |x| bitmap.get_pixel(w - 1 - x, h - 1 - y))).collect();
+    Bitmap::from_pixels(w, h, pixels)
+}
+
+/// An environment from six images on the faces of a cube (the slides' cube map).
+#[derive(Clone, Debug)]
+pub struct CubemapEnvironment {
+    /// In the order of [`CubeFace::ALL`].
+    pub faces: [Arc<Bitmap>; 6],
+    pub filter: Filter,
+}
+
+impl CubemapEnvironment {
+    /// A bilinearly filtered cube map from six images in linear light, in the order of [`CubeFace::ALL`].
+    pub fn new(faces: [Arc<Bitmap>; 6]) -> CubemapEnvironment {
+        CubemapEnvironment { faces, filter: Filter::Bilinear }
+    }
+
+    /// Loads the six faces `posx, negx, posy, negy, posz, negz` (each with one of [`FACE_EXTENSIONS`], in
+    /// any case) from the folder `dir`, in the OpenGL layout.
+    pub fn load(dir: &Path) -> Result<CubemapEnvironment> {
+        CubemapEnvironment::load_layout(dir, CubemapLayout::OpenGl)
+    }
+
+    /// Loads the six faces from the folder `dir`, in `layout`. A missing or unreadable face is an error
+    /// naming its file; so are faces that are not square or not all of one size.
+    pub fn load_layout(dir: &Path, layout: CubemapLayout) -> Result<CubemapEnvironment> {
+        let entries: Vec<std::path::PathBuf> = std::fs::read_dir(dir)
+            .map_err(|e| Error::file("cannot read cube map folder", dir, e))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file())
+            .collect();
+        let find = |face: CubeFace| {
+            let named = |ext: &str| {
+                entries.iter().find(|p| {
+                    let lower = |s: Option<&std::ffi::OsStr>| s.map(|s| s.to_string_lossy().to_ascii_lowercase());
+                    p.file_stem().is_some_and(|s| s == face.name()) && lower(p.extension()).as_deref() == Some(ext)
+                })
+            };
+            FACE_EXTENSIONS.iter().find_map(|ext| named(ext)).ok_or_else(|| {
+                Error::file(
+                    "cannot find cube face",
+                    &dir.join(face.name()),
+                    format!("no {}.png, .jpg, .jpeg, .bmp, .hdr or .exr in the folder", face.name()),
+                )
+            })
+        };
+        let load_face = |face: CubeFace| {
+            let path = find(face)?;
+            let bitmap = Bitmap::load(path)?;
+            let turned = layout == CubemapLayout::Course && face == CubeFace::NegZ;
+            Ok::<_, Error>((path.clone(), if turned { half_turn(&bitmap) } else { bitmap }))
+        };
+        // The six files are decoded in parallel; an error names the first failing face in the order of `ALL`.
+        let loaded: Vec<_> = CubeFace::ALL.par_iter().map(|&face| load_face(face)).collect();
+        let faces: [_; 6] = loaded.into_iter().collect::<Result<Vec<_>>>()?.try_into().expect("six faces");
+        let size = faces[0].1.width();
+        for (path, bitmap) in &faces {
+            let (w, h) = (bitmap.width(), bitmap.height());
+            if w != h || w != size {
+                return Err(Error::file(
+                    "cannot use cube face",
+                    path,
+                    format!(
+                        "it is {w}x{h}; the six faces of a cube map must be square and of one size ({size}x{size})"
+                    ),
+                ));
+            }
+        }
+        Ok(CubemapEnvironment::new(faces.map(|(_, bitmap)| Arc::new(bitmap))))
+    }
+
+    pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {
+        CubemapEnvironment { filter, ..self }
+    }
+}
+
+impl Environment for CubemapEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        let (face, u, v) = cube_face_uv(dir);
+        // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.
+        self.faces[face as usize].sample(u, v, self.filter, (Wrap::Clamp, Wrap::Clamp))
+    }
+}

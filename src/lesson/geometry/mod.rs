@@ -1,0 +1,218 @@
+//! Geometry (lectures 2-3, and slide "Model трансформация"): the shapes rays can hit, each in its canonical
+//! form: plane, sphere, cube, prism, triangle mesh (with its BVH). Placing a shape anywhere else is the job
+//! of a [`Node`](crate::lesson::node::Node)'s transform.
+//!
+//! Every shape reports, with the hit, an absolute bound on the floating-point error of the hit point
+//! (`IntersectionInfo::error`). Secondary rays start that far off the surface (see
+//! [`Ray::spawn`](crate::lesson::ray::Ray::spawn)) instead of the slides' fixed `1e-6`, which is too small for a
+//! scene at 1e6 and too large for one at 1e-4.
+
+pub mod bvh;
+mod cube;
+pub mod mesh;
+mod plane;
+pub mod polygon;
+mod prism;
+mod sphere;
+pub mod triangle4;
+
+pub use cube::Cube;
+pub use mesh::Mesh;
+pub use plane::Plane;
+pub use prism::Prism;
+pub use sphere::Sphere;
+
+use crate::lesson::math::{Vector, gamma, max_abs};
+use crate::lesson::ray::Ray;
+
+/// What a ray hit (the course's `IntersectionInfo`).
+///
+/// A shape makes one with [`IntersectionInfo::new`] (and [`IntersectionInfo::with_geometric_normal`] when
+/// its shading normal differs from the surface's own, [`IntersectionInfo::with_tex_coords`] when its u/v
+/// are worth computing only when read). Shaders and textures read u/v with [`IntersectionInfo::uv`].
+#[derive(Clone, Copy, Debug)]
+pub struct IntersectionInfo {
+    /// The hit point.
+    pub ip: Vector,
+    /// The unit shading normal, pointing out of the object (not face-forwarded).
+    pub normal: Vector,
+    /// The unit normal of the surface itself (differs from `normal` on smoothly shaded meshes); used to
+    /// offset secondary rays.
+    pub geometric_normal: Vector,
+    /// The ray parameter of the hit: its distance from the ray's start when the ray direction is unit.
+    pub distance: f32,
+    /// An absolute bound on the rounding error of `ip`, in each coordinate.
+    pub error: f32,
+    /// The texture coordinates, or what they are computed from: read them with [`IntersectionInfo::uv`].
+    pub tex_coords: TexCoords,
+}
+
+/// The texture coordinates of a hit, as the shape gives them: the coordinates themselves
+/// ([`TexCoords::new`]), or up to three numbers and the function that makes u/v of them
+/// ([`TexCoords::deferred`]), for a shape whose u/v cost more than the shaders that never read them should
+/// pay (the sphere's take two inverse trigonometric functions; glass and mirrors ignore them). Either way
+/// [`TexCoords::get`] gives the same u/v.
+#[derive(Clone, Copy, Debug)]
+pub struct TexCoords {
+    args: [f32; 3],
+    compute: fn([f32; 3]) -> (f32, f32),
+}
+
+impl TexCoords {
+    /// The coordinates (u, v).
+    pub fn new(u: f32, v: f32) -> TexCoords {
+        TexCoords { args: [u, v, 0.0], compute: |[u, v, _]| (u, v) }
+    }
+
+    /// Coordinates that `compute(args)` gives, computed only when read.
+    pub fn deferred(args: [f32; 3], compute: fn([f32; 3]) -> (f32, f32)) -> TexCoords {
+        TexCoords { args, compute }
+    }
+
+    /// (u, v).
+    #[inline]
+    pub fn get(&self) -> (f32, f32) {
+        (self.compute)(self.args)
+    }
+}
+
+impl IntersectionInfo {
+    /// A hit at ray parameter `distance` on the point `ip`, with the unit outward `normal` (used for both
+    /// shading and offsetting) and texture coordinates `uv`. The error bound is that of a point lying on the
+    /// surface up to the rounding of a few operations on coordinates no larger than its own,
+    /// `gamma(3) * max|ip|`: right for a hit re-projected onto the surface (snapped onto a plane or a face,
+    /// or moved onto a sphere along its normal) and for one computed from exact parameters. A shape whose hit
+    /// point carries more error says so with [`IntersectionInfo::with_error`].
+    pub fn new(ip: Vector, normal: Vector, distance: f32, uv: (f32, f32)) -> IntersectionInfo {
+        IntersectionInfo {
+            ip,
+            normal,
+            geometric_normal: normal,
+            distance,
+            error: gamma(3) * max_abs(ip),
+            tex_coords: TexCoords::new(uv.0, uv.1),
+        }
+    }
+
+    /// The texture coordinates (u, v) of the hit (computed here if the shape deferred them).
+    #[inline]
+    pub fn uv(&self) -> (f32, f32) {
+        self.tex_coords.get()
+    }
+
+    /// The same hit with texture coordinates given as [`TexCoords`] (deferred ones, say).
+    pub fn with_tex_coords(self, tex_coords: TexCoords) -> IntersectionInfo {
+        IntersectionInfo { tex_coords, ..self }
+    }
+
+    /// The same hit with a larger (or smaller, when the shape knows better) absolute error bound on `ip`.
+    pub fn with_error(self, error: f32) -> IntersectionInfo {
+        IntersectionInfo { error, ..self }
+    }
+
+    /// The same hit with its own surface normal, when the shading normal differs (an interpolated normal).
+    pub fn with_geometric_normal(self, geometric_normal: Vector) -> IntersectionInfo {
+        IntersectionInfo { geometric_normal, ..self }
+    }
+}
+
+/// What the first, cheap phase of a closest-hit search found on a shape (see [`Geometry::hit`]).
+///
+/// The scene looks for the nearest hit over all its nodes with [`Geometry::hit`] and describes only the
+/// winner's surface ([`Geometry::surface`]): the normal, u/v (spherical coordinates cost two inverse
+/// trigonometric functions) and the error bound are computed once per ray instead of once per candidate
+/// (pbrt's two-phase intersection).
+#[derive(Clone, Copy, Debug)]
+pub enum Hit {
+    /// The hit with its surface already described (what the default [`Geometry::hit`] returns).
+    Complete(IntersectionInfo),
+    /// Only the ray parameter, and what the shape needs to describe the surface later: which part of it was
+    /// hit (a triangle, a face) and up to three coordinates on that part (barycentric coordinates).
+    Pending { distance: f32, part: u32, coords: [f32; 3] },
+}
+
+impl Hit {
+    /// The ray parameter of the hit.
+    pub fn distance(&self) -> f32 {
+        match self {
+            Hit::Complete(info) => info.distance,
+            Hit::Pending { distance, .. } => *distance,
+        }
+    }
+}
+
+/// A shape in its canonical form.
+///
+/// A new shape needs [`intersect`](Geometry::intersect) (its closest hit, described with
+/// [`IntersectionInfo::new`]) and [`bounds`](Geometry::bounds) (or `None`); the other methods have correct
+/// defaults. A shape whose surface description is expensive may also override [`hit`](Geometry::hit), to
+/// return [`Hit::Pending`] with just the ray parameter, together with [`surface`](Geometry::surface), which
+/// finishes it; if it overrides `hit` alone, the default `surface` intersects the ray again, which is
+/// correct but slower.
+pub trait Geometry: Send + Sync {
+    /// The closest hit with ray parameter in (0, `t_max`), if any. The ray direction need not be unit
+    /// (rays reach here through a node's inverse transform); `distance` is the ray parameter either way.
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo>;
+
+    /// The first phase of a closest-hit search: the same hit as `intersect`, possibly without its surface
+    /// description (see [`Hit`]).
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.intersect(ray, t_max).map(Hit::Complete)
+    }
+
+    /// The second phase: the surface description of a hit that [`hit`](Geometry::hit) found for the same
+    /// ray. `None` only if the shape cannot find the hit again.
+    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match hit {
+            Hit::Complete(info) => Some(*info),
+            // The closest hit in (0, inf) is the closest one in (0, t_max) that `hit` found.
+            Hit::Pending { .. } => self.intersect(ray, f32::INFINITY),
+        }
+    }
+
+    /// Whether anything is hit with ray parameter in (0, `t_max`) (shadow rays). Shapes with a cheaper
+    /// any-hit test override it.
+    fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        self.intersect(ray, t_max).is_some()
+    }
+
+    /// The shape's bounding box, or `None` for a shape too large to bound usefully.
+    fn bounds(&self) -> Option<Aabb>;
+
+    /// What the ray tree (`--trace-pixel`) calls this shape: its type's name.
+    fn name(&self) -> &'static str {
+        crate::instruments::ray_tree::type_label::<Self>()
+    }
+}
+
+/// An axis-aligned bounding box.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    pub min: Vector,
+    pub max: Vector,
+}
+
+impl Aabb {
+    pub fn new(min: Vector, max: Vector) -> Aabb {
+        Aabb { min, max }
+    }
+    pub fn center(&self) -> Vector {
+        (self.min + self.max) * 0.5
+    }
+    /// The eight corners.
+    pub fn corners(&self) -> [Vector; 8] {
+        std::array::from_fn(|i| {
+            Vector::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            )
+        })
+    }
+    /// The smallest box holding all the points.
+    pub fn from_points(points: impl IntoIterator<Item = Vector>) -> Aabb {
+        points.into_iter().fold(Aabb::new(Vector::splat(f32::INFINITY), Vector::splat(f32::NEG_INFINITY)), |b, p| {
+            Aabb::new(b.min.min(p), b.max.max(p))
+        })
+    }
+}

@@ -1,0 +1,57 @@
+//! The course's `Plane`: the horizontal plane y = `y`, limited to |x|, |z| < `limit`, with u = x and v = z
+//! (a texture's `scaling` turns these world units into texture repeats). Tilt or move it with a node
+//! transform; its u/v stay attached to it.
+
+use super::{Aabb, Geometry, Hit, IntersectionInfo};
+use crate::lesson::math::Vector;
+use crate::lesson::ray::Ray;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    pub y: f32,
+    /// Half the side of the square the plane is limited to; `f32::INFINITY` for an endless plane.
+    pub limit: f32,
+}
+
+impl Plane {
+    pub fn new(y: f32, limit: f32) -> Plane {
+        Plane { y, limit }
+    }
+}
+
+impl Geometry for Plane {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
+    }
+
+    /// The ray parameter and the hit's x and z (its u/v); the rest is known from them.
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        // A ray parallel to the plane (dir.y == 0) gives t = +-inf or NaN, and both fail this test.
+        let t = (self.y - ray.start.y) / ray.dir.y;
+        if !(t > 0.0 && t < t_max) {
+            return None;
+        }
+        let ip = ray.at(t);
+        if ip.x.abs() >= self.limit || ip.z.abs() >= self.limit {
+            return None;
+        }
+        Some(Hit::Pending { distance: t, part: 0, coords: [ip.x, ip.z, 0.0] })
+    }
+
+    fn surface(&self, _ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match *hit {
+            // The hit lies on the plane by definition: its y is the plane's, so only x and z carry rounding
+            // error.
+            Hit::Pending { distance, coords: [x, z, _], .. } => {
+                Some(IntersectionInfo::new(Vector::new(x, self.y, z), Vector::Y, distance, (x, z)))
+            }
+            Hit::Complete(info) => Some(info),
+        }
+    }
+
+    fn bounds(&self) -> Option<Aabb> {
+        self.limit.is_finite().then(|| {
+            Aabb::new(Vector::new(-self.limit, self.y, -self.limit), Vector::new(self.limit, self.y, self.limit))
+        })
+    }
+}

@@ -1,0 +1,77 @@
+//! Point lights and shadow rays (lectures 2-3). A point light of `intensity` I at distance d gives
+//! I / d^2 (times its colour) to a surface facing it, if nothing stands in between.
+
+use crate::instruments::ray_tree::LightKind;
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::math::Vector;
+use crate::lesson::scene::TraceContext;
+
+#[derive(Clone, Copy, Debug)]
+pub struct PointLight {
+    pub position: Vector,
+    pub color: Color,
+    /// The course's light "power": irradiance at distance 1 is `color * intensity`.
+    pub intensity: f32,
+}
+
+impl PointLight {
+    pub fn new(position: Vector, color: Color, intensity: f32) -> PointLight {
+        PointLight { position, color, intensity }
+    }
+}
+
+/// The light loop of the diffuse shaders (Lambert, Phong, and any new one): the irradiance a diffuse surface
+/// receives at the hit point, whose face-forwarded shading normal is `n`. It is the sum of
+///
+/// - the scene's ambient light,
+/// - for every lamp that reaches the point (a shadow ray says so), its irradiance times the cosine of its
+///   angle to the normal; a lamp behind the surface costs no shadow ray,
+/// - the caustic light of the photon map, if the scene has one (slide "Photon Mapping"): light that reaches
+///   the point through mirrors and glass, which shadow rays cannot find.
+///
+/// For each lamp that reaches the point it also calls `each_lamp(to_light, irradiance)`, with the unit
+/// direction to the lamp and its irradiance before the cosine, for the terms that depend on where the light
+/// comes from (Phong's highlight). A shader that takes its light from here gets caustics without asking.
+pub fn light_loop(
+    ctx: &mut TraceContext,
+    info: &IntersectionInfo,
+    n: Vector,
+    mut each_lamp: impl FnMut(Vector, Color),
+) -> Color {
+    let scene = ctx.scene;
+    let mut irradiance = scene.ambient;
+    if !scene.ambient.is_black() {
+        ctx.record(|tree| tree.light(LightKind::Ambient, scene.ambient));
+    }
+    for (index, light) in scene.lights.iter().enumerate() {
+        let to_light = light.position - info.ip;
+        let dist2 = to_light.length_squared();
+        let l = to_light / dist2.sqrt();
+        if n.dot(l) <= 0.0 || info.geometric_normal.dot(l) * info.geometric_normal.dot(n) <= 0.0 {
+            continue;
+        }
+        let visible = ctx.visible(info, light.position);
+        let shadow_ray = LightKind::Lamp { index, from: info.ip, dir: l, visible };
+        if visible {
+            let lamp = light.color * (light.intensity / dist2);
+            let direct = lamp * n.dot(l);
+            irradiance += direct;
+            each_lamp(l, lamp);
+            ctx.record(|tree| tree.light(shadow_ray, direct));
+        } else {
+            ctx.record(|tree| tree.light(shadow_ray, Color::BLACK));
+        }
+    }
+    if let Some(map) = &scene.photon_map {
+        let caustic = map.irradiance(info.ip, n);
+        irradiance += caustic;
+        ctx.record(|tree| tree.light(LightKind::Photons, caustic));
+    }
+    irradiance
+}
+
+/// The irradiance a diffuse surface receives at the hit point (see [`light_loop`]).
+pub fn diffuse_light(ctx: &mut TraceContext, info: &IntersectionInfo, n: Vector) -> Color {
+    light_loop(ctx, info, n, |_, _| {})
+}

@@ -1,0 +1,231 @@
+//! `Node` (slide "Model трансформация"): a geometry, the shader that colours it, and the transform that
+//! places it. Rays are intersected with nodes, not with bare geometry; a node takes its transform into
+//! account (`Node::intersect` on the slide). Geometry and shaders can be shared through `Arc`, so two nodes can
+//! show the same mesh with different transforms and shaders (instancing) without a copy.
+
+use crate::lesson::geometry::bvh::Bvh;
+use crate::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo};
+use crate::lesson::math::Vector;
+use crate::lesson::ray::Ray;
+use crate::lesson::shader::{IntoShader, Shader};
+use crate::lesson::transform::Transform;
+use std::sync::Arc;
+
+/// Anything that can be a node's geometry: a shape, or a shape shared with other nodes (`Arc<Mesh>`,
+/// `Arc<dyn Geometry>`), which is how two nodes show one mesh without a copy (instancing).
+pub trait IntoGeometry {
+    fn into_geometry(self) -> Arc<dyn Geometry>;
+}
+
+impl<G: Geometry + 'static> IntoGeometry for G {
+    fn into_geometry(self) -> Arc<dyn Geometry> {
+        Arc::new(self)
+    }
+}
+
+impl<G: Geometry + 'static> IntoGeometry for Arc<G> {
+    fn into_geometry(self) -> Arc<dyn Geometry> {
+        self
+    }
+}
+
+impl IntoGeometry for Arc<dyn Geometry> {
+    fn into_geometry(self) -> Arc<dyn Geometry> {
+        self
+    }
+}
+
+#[derive(Clone)]
+pub struct Node {
+    pub geometry: Arc<dyn Geometry>,
+    pub shader: Arc<dyn Shader>,
+    /// `None` is the identity, and skips the two matrix products per ray.
+    pub transform: Option<Transform>,
+    /// What the ray tree (`--trace-pixel`) calls the node; `None` names it by its geometry and its position
+    /// in the scene (see [`crate::lesson::scene::Scene::node_name`]).
+    pub name: Option<String>,
+}
+
+impl Node {
+    /// A node showing `geometry` with `shader`, not yet transformed. Either may be shared with other nodes
+    /// by passing an `Arc` of it (`Arc::new(mesh)`, then `mesh.clone()` for each node).
+    pub fn new(geometry: impl IntoGeometry, shader: impl IntoShader) -> Node {
+        Node { geometry: geometry.into_geometry(), shader: shader.into_shader(), transform: None, name: None }
+    }
+
+    /// Gives the node a name, for the ray tree (`--trace-pixel`).
+    pub fn named(mut self, name: impl Into<String>) -> Node {
+        self.name = Some(name.into());
+        self
+    }
+
+    fn with_transform(mut self, f: impl FnOnce(Transform) -> Transform) -> Node {
+        self.transform = Some(f(self.transform.unwrap_or_default()));
+        self
+    }
+    /// Scales the node by (x, y, z) after its current transform.
+    pub fn scale(self, s: Vector) -> Node {
+        self.with_transform(|t| t.scale(s))
+    }
+    /// Rotates the node by yaw, pitch and roll (degrees) after its current transform.
+    pub fn rotate(self, yaw: f32, pitch: f32, roll: f32) -> Node {
+        self.with_transform(|t| t.rotate(yaw, pitch, roll))
+    }
+    /// Moves the node by `offset` after its current transform.
+    pub fn translate(self, offset: Vector) -> Node {
+        self.with_transform(|t| t.translate(offset))
+    }
+
+    /// The slide's `Node::intersect`: the ray goes to canonical space, meets the geometry there, and the hit
+    /// comes back to world space.
+    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
+    }
+
+    /// The first phase of [`Node::intersect`] ([`Geometry::hit`] in canonical space): where the ray meets
+    /// the node, with the surface perhaps not yet described.
+    pub fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        match &self.transform {
+            None => self.geometry.hit(ray, t_max),
+            Some(t) => self.geometry.hit(&t.ray_to_canonical(ray), t_max),
+        }
+    }
+
+    /// The second phase: the surface at a hit that [`Node::hit`] found for the same ray, in world space.
+    pub fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match &self.transform {
+            None => self.geometry.surface(ray, hit),
+            Some(t) => self.geometry.surface(&t.ray_to_canonical(ray), hit).map(|info| t.info_to_world(&info)),
+        }
+    }
+
+    /// Whether the ray hits this node before `t_max` (shadow rays).
+    pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        match &self.transform {
+            None => self.geometry.intersects(ray, t_max),
+            Some(t) => self.geometry.intersects(&t.ray_to_canonical(ray), t_max),
+        }
+    }
+
+    /// The node's bounding box in world space, if its geometry is bounded.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let b = self.geometry.bounds()?;
+        Some(match &self.transform {
+            None => b,
+            Some(t) => Aabb::from_points(b.corners().map(|c| t.point_to_world(c))),
+        })
+    }
+}
+
+/// A bounding volume hierarchy over a scene's nodes, by their world-space boxes (the top level above each
+/// mesh's own BVH; the same builder and traversal). Not on the slides, which test every node for every ray:
+/// with it a ray's cost grows about with the logarithm of the number of nodes instead of linearly. Nodes
+/// without a box (an endless plane) are kept apart and tested one by one.
+///
+/// A scene of at most [`LINEAR_NODES`] nodes is not worth a tree: the loop is cheaper than walking one.
+///
+/// Ties keep the slides' order: when two nodes are hit at the same distance, the one added to the scene
+/// first wins, as in the loop over the nodes.
+#[derive(Clone, Debug, Default)]
+pub struct NodeTree {
+    bvh: Bvh,
+    /// The bounded nodes' indices, in the order the BVH's leaves refer to.
+    bounded: Vec<u32>,
+    /// The nodes without a (finite) box.
+    unbounded: Vec<u32>,
+}
+
+/// Scenes with this many nodes or fewer are traced by the loop over the nodes, which tests them all faster
+/// than a tree is walked (measured on the examples: `fresnel`'s two nodes took 20% longer with the tree).
+pub const LINEAR_NODES: usize = 8;
+
+/// The nearest hit found so far over a list of nodes.
+struct Closest {
+    t_max: f32,
+    best: Option<(Hit, usize)>,
+}
+
+impl Closest {
+    fn new() -> Closest {
+        Closest { t_max: f32::INFINITY, best: None }
+    }
+
+    /// Tests node `i`: a hit before the best so far wins, and so does one at the same distance on a node
+    /// that comes earlier in the scene.
+    #[inline]
+    fn consider(&mut self, nodes: &[Node], i: usize, ray: &Ray) {
+        let earlier = self.best.as_ref().is_some_and(|&(_, b)| i < b);
+        let limit = if earlier { self.t_max.next_up() } else { self.t_max };
+        if let Some(hit) = nodes[i].hit(ray, limit) {
+            self.t_max = hit.distance();
+            self.best = Some((hit, i));
+        }
+    }
+
+    /// The winner's surface (the second phase).
+    fn finish<'a>(self, nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
+        let (hit, i) = self.best?;
+        let node = &nodes[i];
+        node.surface(ray, &hit).map(|info| (info, node))
+    }
+}
+
+/// The closest node hit by the ray, testing every node in turn (the slides' loop).
+pub fn closest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
+    let mut closest = Closest::new();
+    (0..nodes.len()).for_each(|i| closest.consider(nodes, i, ray));
+    closest.finish(nodes, ray)
+}
+
+impl NodeTree {
+    /// The tree over `nodes`, or `None` when there are too few for a tree to pay ([`LINEAR_NODES`]).
+    pub fn build(nodes: &[Node]) -> Option<NodeTree> {
+        if nodes.len() <= LINEAR_NODES {
+            return None;
+        }
+        let mut boxes = Vec::new();
+        let mut bounded = Vec::new();
+        let mut unbounded = Vec::new();
+        for (i, node) in nodes.iter().enumerate() {
+            match node.bounds().filter(|b| b.min.is_finite() && b.max.is_finite()) {
+                Some(b) => {
+                    boxes.push(b);
+                    bounded.push(i as u32);
+                }
+                None => unbounded.push(i as u32),
+            }
+        }
+        let (bvh, order) = Bvh::build(&boxes);
+        let bounded = order.iter().map(|&k| bounded[k as usize]).collect();
+        Some(NodeTree { bvh, bounded, unbounded })
+    }
+
+    /// The closest of `nodes` (the ones the tree was built over) hit by the ray.
+    pub fn closest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
+        let mut closest = Closest::new();
+        for &i in &self.unbounded {
+            closest.consider(nodes, i as usize, ray);
+        }
+        self.bvh.traverse(ray.start, ray.dir, closest.t_max, |range, t_max| {
+            for &i in &self.bounded[range] {
+                closest.consider(nodes, i as usize, ray);
+            }
+            *t_max = closest.t_max;
+            false
+        });
+        closest.finish(nodes, ray)
+    }
+
+    /// Whether any of `nodes` is hit before `t_max` (shadow rays).
+    pub fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
+        if self.unbounded.iter().any(|&i| nodes[i as usize].intersects(ray, t_max)) {
+            return true;
+        }
+        let mut hit = false;
+        self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
+            hit = self.bounded[range].iter().any(|&i| nodes[i as usize].intersects(ray, *t_max));
+            hit
+        });
+        hit
+    }
+}

@@ -1,0 +1,539 @@
+//! The renderer: turns a scene into a frame of linear colours, in parallel and deterministically.
+//!
+//! Rows are rendered in parallel by rayon. Each pixel has its own random stream seeded from
+//! (seed, x, y) (see [`crate::lesson::rng`]), and its samples are averaged in a fixed order, so the frame is the same
+//! bit for bit whatever the thread count.
+//!
+//! Anti-aliasing: with `spp` samples per pixel, a square `spp` (4, 9, 16, ...) is a jittered k x k grid;
+//! any other count uses N-rooks (Latin hypercube) stratification, one sample in each column and each row
+//! of an N x N grid. One sample per pixel goes through the pixel's centre.
+//!
+//! Dispersion (see [`crate::lesson::spectral`]): a scene whose shaders depend on the wavelength is traced once per
+//! wavelength band (the slide's K passes; each pass of a pixel has its own random stream, keyed by the pass)
+//! or, with spectral sampling, once with a band of its own for every anti-aliasing sample. The bands'
+//! colours are added in double precision, so a surface that looks the same in every band keeps its colour
+//! exactly. A scene with nothing dispersive is traced once, in white light, whatever `wavelengths` says.
+
+use crate::instruments::ray_tree::RayTree;
+use crate::lesson::camera::CameraFrame;
+use crate::lesson::color::{Color, to_srgb8};
+use crate::lesson::error::{Error, Result};
+use crate::lesson::photon_map::PhotonStats;
+use crate::lesson::ray::Ray;
+use crate::lesson::rng::{Rng, key_of, mix64, shuffled_index};
+use crate::lesson::scene::{Counters, PixelSample, RECURSION_SAFETY_CAP, Scene, TraceContext};
+use crate::lesson::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use std::io::IsTerminal;
+use std::ops::Range;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+/// The largest frame the renderer accepts, in pixels (64 Mpx, 1 GiB of linear colour).
+pub const MAX_PIXELS: u64 = 1 << 26;
+
+/// The most anti-aliasing samples per pixel the renderer accepts: far beyond what a picture needs (the
+/// examples use 1 to 16; a reference for an error study a few thousand), low enough that a mistyped count
+/// is refused at once instead of rendering for days.
+pub const MAX_SPP: u32 = 1 << 16;
+
+/// The most worker threads the renderer starts.
+pub const MAX_THREADS: usize = 1024;
+
+/// Stack size of the worker threads: room for [`RECURSION_SAFETY_CAP`] nested `raytrace` calls at 8 KiB
+/// each. One level of mirror reflection takes about 0.7 KiB (measured: a ray bouncing 1000 times between two
+/// mirrors runs in 768 KiB of stack and overflows 640 KiB); the margin is for shaders with larger frames or
+/// more nested calls per level. Only the pages a render touches are committed.
+pub const WORKER_STACK_SIZE: usize = RECURSION_SAFETY_CAP as usize * 8 * 1024;
+
+/// How to render a scene.
+#[derive(Clone, Copy, Debug)]
+pub struct RenderSettings {
+    pub width: u32,
+    pub height: u32,
+    /// Anti-aliasing samples per pixel.
+    pub spp: u32,
+    /// Worker threads; `None` uses every core.
+    pub threads: Option<usize>,
+    /// Seed of every random choice; the same seed gives the same picture.
+    pub seed: u64,
+    /// Show a progress bar on stderr (only when stderr is a terminal).
+    pub progress: bool,
+    /// Wavelength passes for a dispersive scene (the slide's K); ignored by other scenes and by spectral sampling.
+    pub wavelengths: u32,
+    /// How a dispersive scene is traced: K wavelength passes or one wavelength per sample.
+    pub spectral: SpectralMode,
+    /// The course's adaptive anti-aliasing after the single sample of each pixel (see
+    /// [`crate::lesson::adaptive_aa`]); needs `spp` 1.
+    pub adaptive_aa: bool,
+    /// The largest a sample's brightest channel may be (`--clamp-sample`); brighter samples are scaled down
+    /// to it, hue kept. It tames fireflies (a glossy surface that now and then reflects a small, very bright
+    /// sun) at the price of bias: the clamped light is lost. `None`, the default, keeps every sample as is.
+    pub max_sample: Option<f32>,
+}
+
+impl Default for RenderSettings {
+    fn default() -> RenderSettings {
+        RenderSettings {
+            width: 640,
+            height: 480,
+            spp: 1,
+            threads: None,
+            seed: 1,
+            progress: false,
+            wavelengths: 8,
+            spectral: SpectralMode::Passes,
+            adaptive_aa: false,
+            max_sample: None,
+        }
+    }
+}
+
+impl RenderSettings {
+    /// A traced sample as it goes into a pixel's average: NaN and negative channels zeroed (see
+    /// [`Color::sanitized`]) and, with [`RenderSettings::max_sample`], scaled down to that brightness.
+    pub fn sample(&self, c: Color) -> Color {
+        let c = c.sanitized();
+        match self.max_sample {
+            Some(max) if c.max_channel() > max => c * (max / c.max_channel()),
+            _ => c,
+        }
+    }
+
+    /// Rejects sizes and counts that make no sense or would exhaust memory.
+    pub fn check(&self) -> Result<()> {
+        if self.width == 0 || self.height == 0 {
+            return Err(Error::parameter("image size", format!("{}x{}", self.width, self.height), "must not be zero"));
+        }
+        if self.width as u64 * self.height as u64 > MAX_PIXELS {
+            return Err(Error::parameter(
+                "image size",
+                format!("{}x{}", self.width, self.height),
+                format!("more than {MAX_PIXELS} pixels"),
+            ));
+        }
+        if !(1..=MAX_SPP).contains(&self.spp) {
+            return Err(Error::parameter("samples per pixel", self.spp, format!("must be 1 to {MAX_SPP}")));
+        }
+        if !(1..=MAX_WAVELENGTHS).contains(&self.wavelengths) {
+            return Err(Error::parameter(
+                "wavelength passes",
+                self.wavelengths,
+                format!("must be 1 to {MAX_WAVELENGTHS}"),
+            ));
+        }
+        if self.adaptive_aa && self.spp != 1 {
+            return Err(Error::parameter(
+                "samples per pixel",
+                self.spp,
+                "adaptive anti-aliasing starts from one sample per pixel",
+            ));
+        }
+        if let Some(max) = self.max_sample
+            && !(max.is_finite() && max > 0.0)
+        {
+            return Err(Error::parameter("--clamp-sample", max, "must be a positive number"));
+        }
+        if let Some(threads) = self.threads
+            && !(1..=MAX_THREADS).contains(&threads)
+        {
+            return Err(Error::parameter("thread count", threads, format!("must be 1 to {MAX_THREADS}")));
+        }
+        Ok(())
+    }
+}
+
+/// A rendered picture in linear light, rows from the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<Color>,
+}
+
+impl Frame {
+    /// A black frame. Its pixels are written in parallel (on the current rayon pool), so that the memory of a
+    /// large frame is first touched, page by page, by every thread rather than by one.
+    pub fn new(width: u32, height: u32) -> Frame {
+        let mut pixels = Vec::new();
+        pixels.par_extend(rayon::iter::repeat_n(Color::BLACK, width as usize * height as usize));
+        Frame { width, height, pixels }
+    }
+    pub fn get(&self, x: u32, y: u32) -> Color {
+        self.pixels[(y * self.width + x) as usize]
+    }
+    /// The frame encoded as 8-bit sRGB, row by row in parallel (on the current rayon pool): the encoding's
+    /// `powf` per channel would otherwise be a serial step after the parallel render.
+    pub fn to_rgb8(&self) -> image::RgbImage {
+        let w = self.width as usize;
+        let mut bytes = vec![0u8; self.pixels.len() * 3];
+        bytes.par_chunks_mut(3 * w).zip(self.pixels.par_chunks(w)).for_each(|(out, row)| {
+            for (rgb, &c) in out.chunks_exact_mut(3).zip(row) {
+                rgb.copy_from_slice(&to_srgb8(c));
+            }
+        });
+        image::RgbImage::from_raw(self.width, self.height, bytes).expect("frame size matches its pixels")
+    }
+    /// The frame as linear floats.
+    pub fn to_rgb32f(&self) -> image::Rgb32FImage {
+        let values = self.pixels.iter().flat_map(|c| c.to_array()).collect();
+        image::Rgb32FImage::from_raw(self.width, self.height, values).expect("frame size matches its pixels")
+    }
+    /// A frame from an 8-bit sRGB image (decoded to linear light).
+    pub fn from_rgb8(img: &image::RgbImage) -> Frame {
+        let table = crate::lesson::color::srgb8_to_linear_table();
+        let pixels = img.pixels().map(|p| Color::new(table[p[0] as usize], table[p[1] as usize], table[p[2] as usize]));
+        Frame { width: img.width(), height: img.height(), pixels: pixels.collect() }
+    }
+
+    /// Writes the frame: `.png` as 8-bit sRGB, `.exr` and `.hdr` as linear floats. The image goes to a
+    /// temporary file beside the target first and is renamed over it only when complete, so a failure never
+    /// destroys an earlier picture.
+    pub fn save(&self, path: &Path) -> Result<()> {
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        let format = match ext.as_deref() {
+            Some("png") => image::ImageFormat::Png,
+            Some("exr") => image::ImageFormat::OpenExr,
+            Some("hdr") => image::ImageFormat::Hdr,
+            _ => return Err(Error::file("cannot write image", path, "the name must end in .png, .exr or .hdr")),
+        };
+        save_atomically(path, |tmp| match format {
+            image::ImageFormat::Png => self.to_rgb8().save_with_format(tmp, format),
+            _ => self.to_rgb32f().save_with_format(tmp, format),
+        })
+    }
+}
+
+/// True for the files that keep linear light, floats above 1 included (`.exr`, `.hdr`); PNG and the other
+/// 8-bit formats hold sRGB-encoded values from 0 to 1.
+pub fn keeps_linear_light(path: &Path) -> bool {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    matches!(ext.as_deref(), Some("exr" | "hdr"))
+}
+
+/// Writes a file through `write`, which is given a temporary path beside `path`; the temporary file is
+/// renamed over `path` only when it is complete, so a failure never destroys an earlier file.
+pub fn save_atomically(path: &Path, write: impl FnOnce(&Path) -> image::ImageResult<()>) -> Result<()> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| Error::file("cannot create the folder for", path, e))?;
+    }
+    let name = path.file_name().map(|n| n.to_string_lossy()).unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let result = write(&tmp)
+        .map_err(|e| Error::file("cannot write image", path, e))
+        .and_then(|()| std::fs::rename(&tmp, path).map_err(|e| Error::file("cannot write image", path, e)));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+/// What a render produced besides the picture.
+#[derive(Clone, Debug)]
+pub struct RenderStats {
+    pub elapsed: Duration,
+    pub threads: usize,
+    /// Rays of all passes.
+    pub counters: Counters,
+    /// How wavelengths were traced (white light when the scene has nothing dispersive).
+    pub spectral: SpectralPlan,
+    /// How the scene's photon map was built (before the render, not counted in `elapsed`), if it has one.
+    pub photons: Option<PhotonStats>,
+}
+
+/// The worker threads the renderer uses: `threads` of them, or one per core, each with a stack of
+/// [`WORKER_STACK_SIZE`].
+pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .stack_size(WORKER_STACK_SIZE)
+        .build()
+        .map_err(|e| Error::parameter("thread count", threads.unwrap_or(0), e))
+}
+
+/// Where in its pixel each anti-aliasing sample goes (see the module documentation).
+pub struct Stratifier {
+    spp: u32,
+    /// k when spp = k * k (a jittered grid), else 0 (N-rooks).
+    grid: u32,
+    /// N-rooks: the key of the current pixel's random permutation of the rows (see [`shuffled_index`]).
+    rows_key: u32,
+}
+
+impl Stratifier {
+    pub fn new(spp: u32) -> Stratifier {
+        let k = (spp as f64).sqrt().round() as u32;
+        Stratifier { spp, grid: if k * k == spp { k } else { 0 }, rows_key: 0 }
+    }
+
+    /// Prepares the samples of a new pixel: N-rooks draws the pixel's permutation of the rows.
+    pub fn start_pixel(&mut self, rng: &mut Rng) {
+        if self.grid == 0 && self.spp > 1 {
+            self.rows_key = rng.next_u32();
+        }
+    }
+
+    /// The position of sample `s` within the pixel, in [0, 1)^2.
+    pub fn offset(&self, s: u32, rng: &mut Rng) -> (f32, f32) {
+        if self.spp == 1 {
+            return (0.5, 0.5);
+        }
+        let (col, row, n) = match self.grid {
+            0 => (s, shuffled_index(s, self.spp, self.rows_key), self.spp),
+            k => (s % k, s / k, k),
+        };
+        ((col as f32 + rng.next_f32()) / n as f32, (row as f32 + rng.next_f32()) / n as f32)
+    }
+}
+
+/// Renders the scene. Fails, before any work, on settings or a scene that cannot be rendered. A dispersive
+/// scene is traced as `settings.spectral` says; any other in one white pass.
+pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, RenderStats)> {
+    settings.check()?;
+    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    render_with_plan(scene, settings, plan)
+}
+
+/// Renders the scene with the given wavelength plan, whether or not the scene needs it (tests use this to
+/// check that a non-dispersive material gives the same picture in every plan).
+pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: SpectralPlan) -> Result<(Frame, RenderStats)> {
+    settings.check()?;
+    scene.check()?;
+    let scene = &scene.with_node_tree();
+    let pool = thread_pool(settings.threads)?;
+    let start = Instant::now();
+    let (w, h) = (settings.width, settings.height);
+    let camera = scene.camera.frame(w, h);
+    let bar = if settings.progress && std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new(h as u64);
+        bar.set_style(
+            ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} rows, {eta} left")
+                .expect("valid template")
+                .progress_chars("=> "),
+        );
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    let mut frame = pool.install(|| Frame::new(w, h));
+    if settings.adaptive_aa && plan != SpectralPlan::White {
+        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
+    }
+    let mut counters = pool.install(|| {
+        frame
+            .pixels
+            .par_chunks_mut(w as usize)
+            // One row per task: rows cost very different amounts (sky against glass), and rayon's default
+            // splitting into a few large chunks leaves a thread idle at the end.
+            .with_max_len(1)
+            .enumerate()
+            .map(|(y, row)| {
+                let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
+                for (x, pixel) in row.iter_mut().enumerate() {
+                    *pixel = tracer.pixel(x as u32, y as u32);
+                }
+                bar.inc(1);
+                tracer.counters
+            })
+            .reduce(Counters::default, |mut a, b| {
+                a.add(&b);
+                a
+            })
+    });
+    bar.finish_and_clear();
+    if settings.adaptive_aa {
+        counters.add(&pool.install(|| crate::lesson::adaptive_aa::refine(scene, &camera, settings, &mut frame)));
+    }
+    let stats = RenderStats {
+        elapsed: start.elapsed(),
+        threads: pool.current_num_threads(),
+        counters,
+        spectral: plan,
+        photons: scene.photon_map.as_ref().map(|map| map.stats),
+    };
+    Ok((frame, stats))
+}
+
+/// One pixel rendered alone, exactly as [`render`] renders it (same samples, same random streams).
+#[derive(Clone, Debug)]
+pub struct PixelTrace {
+    pub color: Color,
+    /// The rays traced for the pixel.
+    pub counters: Counters,
+    /// The rays behind the pixel, when asked for.
+    pub tree: Option<Box<RayTree>>,
+}
+
+/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and, with
+/// `record`, recording its ray tree (see [`crate::instruments::ray_tree`]). `--trace-pixel` uses it.
+pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, record: bool) -> Result<PixelTrace> {
+    if x >= settings.width || y >= settings.height {
+        return Err(Error::parameter(
+            "pixel",
+            format!("{x},{y}"),
+            format!("is outside the {}x{} picture", settings.width, settings.height),
+        ));
+    }
+    let mut pixels = render_row(scene, settings, y, x..x + 1, record.then_some(x))?;
+    Ok(pixels.pop().expect("the row holds pixel x"))
+}
+
+/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters, and the ray tree
+/// of pixel `record`, if given. The debug views use it.
+pub fn render_row(
+    scene: &Scene,
+    settings: &RenderSettings,
+    y: u32,
+    xs: Range<u32>,
+    record: Option<u32>,
+) -> Result<Vec<PixelTrace>> {
+    settings.check()?;
+    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
+    let mut pixels = Vec::with_capacity(xs.len());
+    for x in xs.start..xs.end.min(settings.width) {
+        tracer.counters = Counters::default();
+        tracer.recorder = (record == Some(x)).then(|| Box::new(RayTree::new()));
+        let color = tracer.pixel(x, y);
+        pixels.push(PixelTrace { color, counters: tracer.counters.clone(), tree: tracer.recorder.take() });
+    }
+    Ok(pixels)
+}
+
+/// Renders the pixels `xs` of the rows `ys` of the frame that `settings` describes into `out`, row by row, on
+/// the calling thread, and returns the rays it traced: the same colours [`render`] gives those pixels, since
+/// every pixel's random stream depends only on (seed, x, y). The progressive renderer draws its tiles with it.
+pub fn render_rect(
+    scene: &Scene,
+    settings: &RenderSettings,
+    plan: &SpectralPlan,
+    xs: Range<u32>,
+    ys: Range<u32>,
+    out: &mut [Color],
+) -> Counters {
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut counters = Counters::default();
+    let width = xs.len();
+    for (y, row) in ys.zip(out.chunks_mut(width)) {
+        let mut tracer = PixelTracer::new(scene, &camera, settings, plan);
+        for (pixel, x) in row.iter_mut().zip(xs.clone()) {
+            *pixel = tracer.pixel(x, y);
+        }
+        counters.add(&tracer.counters);
+    }
+    counters
+}
+
+/// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
+const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
+
+/// A salt for the pixels' sample-set keys, so that they are unrelated to the seeds of the pixels' streams.
+const SAMPLE_SET_KEY: u64 = 0x5345_5453_414d_504c;
+
+/// The [`PixelSample::pixel_key`] of the pixel (or wavelength pass of a pixel) whose random stream is keyed
+/// by `stream_keys` (see [`Rng::for_keys`]). The adaptive anti-aliasing pass asks for it again to give a
+/// refined pixel's extra samples the same set.
+pub fn pixel_key(stream_keys: &[u64]) -> u64 {
+    mix64(key_of(stream_keys) ^ SAMPLE_SET_KEY)
+}
+
+/// Renders the pixels of one row: the samples of each pixel, in every wavelength pass the plan asks for.
+struct PixelTracer<'a> {
+    scene: &'a Scene,
+    camera: &'a CameraFrame,
+    settings: &'a RenderSettings,
+    plan: &'a SpectralPlan,
+    stratifier: Stratifier,
+    /// The [`PixelSample::count`] of every pixel: the spp, or what adaptive anti-aliasing may give a pixel.
+    samples_per_pixel: u32,
+    counters: Counters,
+    /// The ray tree being recorded for the pixels this tracer renders (`--trace-pixel`), if any.
+    recorder: Option<Box<RayTree>>,
+}
+
+impl<'a> PixelTracer<'a> {
+    fn new(scene: &'a Scene, camera: &'a CameraFrame, settings: &'a RenderSettings, plan: &'a SpectralPlan) -> Self {
+        let stratifier = Stratifier::new(settings.spp);
+        let samples_per_pixel =
+            if settings.adaptive_aa { crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL } else { settings.spp };
+        PixelTracer {
+            scene,
+            camera,
+            settings,
+            plan,
+            stratifier,
+            samples_per_pixel,
+            counters: Counters::default(),
+            recorder: None,
+        }
+    }
+
+    /// The average of the pixel's samples, all traced at `wavelength`, with the random stream keyed by
+    /// `stream_keys`.
+    fn samples(&mut self, x: u32, y: u32, stream_keys: &[u64], wavelength: Option<f32>) -> Color {
+        let mut ctx = TraceContext::new(self.scene, Rng::for_keys(stream_keys));
+        let pixel_key = pixel_key(stream_keys);
+        ctx.recorder = self.recorder.take();
+        self.stratifier.start_pixel(&mut ctx.rng);
+        let mut sum = Color::BLACK;
+        for s in 0..self.settings.spp {
+            ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
+            let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
+            let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
+            sum += self.settings.sample(ctx.raytrace(&ray));
+        }
+        self.counters.add(&ctx.counters);
+        self.recorder = ctx.recorder.take();
+        sum / self.settings.spp as f32
+    }
+
+    fn pixel(&mut self, x: u32, y: u32) -> Color {
+        let seed = self.settings.seed;
+        match self.plan {
+            SpectralPlan::White => self.samples(x, y, &[seed, x as u64, y as u64], None),
+            SpectralPlan::Passes(bands) => {
+                let mut sum = [0.0f64; 3];
+                for (k, band) in bands.iter().enumerate() {
+                    let stream_keys = [seed, x as u64, y as u64, PASS_KEY, k as u64];
+                    add_weighted(&mut sum, band, self.samples(x, y, &stream_keys, Some(band.centre())));
+                }
+                fit_to_gamut(to_color(sum))
+            }
+            SpectralPlan::Sampled => {
+                let spp = self.settings.spp;
+                let stream_keys = [seed, x as u64, y as u64];
+                let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
+                let pixel_key = pixel_key(&stream_keys);
+                ctx.recorder = self.recorder.take();
+                self.stratifier.start_pixel(&mut ctx.rng);
+                // Sample s traces band shuffled_index(s): every band once, in an order of the pixel's own.
+                let bands_key = ctx.rng.next_u32();
+                let mut sum = [0.0f64; 3];
+                for s in 0..spp {
+                    ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
+                    let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
+                    let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
+                    let wavelength = Some(band.at(ctx.rng.next_f32()));
+                    let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
+                    add_weighted(&mut sum, &band, self.settings.sample(ctx.raytrace(&ray)));
+                }
+                self.counters.add(&ctx.counters);
+                self.recorder = ctx.recorder.take();
+                fit_to_gamut(to_color(sum))
+            }
+        }
+    }
+}
+
+/// Adds a colour seen in `band`, multiplied by the band's colour, to a double-precision sum.
+fn add_weighted(sum: &mut [f64; 3], band: &Band, c: Color) {
+    for ((s, w), v) in sum.iter_mut().zip(band.weight).zip(c.to_array()) {
+        *s += w * v as f64;
+    }
+}
+
+fn to_color(sum: [f64; 3]) -> Color {
+    Color::new(sum[0] as f32, sum[1] as f32, sum[2] as f32)
+}

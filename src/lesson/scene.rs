@@ -1,0 +1,287 @@
+//! The scene and the slides' global `raytrace()`.
+//!
+//! `TraceContext` is what the course's C++ keeps in globals: the scene, the ray-depth limit, the random
+//! generator of the pixel being rendered and the ray counters. Shaders receive it and call
+//! [`TraceContext::raytrace`] to follow reflected and refracted rays, and [`TraceContext::visible`] for
+//! shadow rays (through [`crate::lesson::light::light_loop`], which adds the caustic light of the photon map as well). One context exists
+//! per pixel row being rendered, so threads never share one.
+//!
+//! Adaptive ray-tree depth control (the classic Whitted optimisation, beyond the slides): besides the
+//! slides' `MAX_RAY_DEPTH`, `raytrace` returns black at once for a ray whose `weight` (the product of the
+//! multipliers, blends and Fresnel factors along its path) is below [`Scene::min_ray_weight`]: what such a ray
+//! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
+//! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
+
+use crate::instruments::ray_tree::{RayTree, Stop};
+use crate::lesson::camera::Camera;
+use crate::lesson::color::{Color, srgb_to_linear};
+use crate::lesson::environment::Environment;
+use crate::lesson::error::Result;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::light::PointLight;
+use crate::lesson::math::{Vector, max_abs};
+use crate::lesson::node::{Node, NodeTree, closest_hit_linear};
+use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
+use crate::lesson::ray::{Ray, spawn_point};
+use crate::lesson::rng::Rng;
+use std::sync::Arc;
+
+/// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
+pub const MAX_RAY_DEPTH: u32 = 2;
+
+/// A hard limit on the depth of recursion that holds whatever `max_depth` says, even "no limit" (the
+/// slide's Reflection v0.1): between two facing mirrors a ray can bounce forever, and each bounce is a
+/// nested call of `raytrace`, so without it the program would die of a stack overflow. Rays stopped here
+/// return black and are counted in [`Counters::capped_rays`]. The renderer's worker threads get a stack
+/// large enough for this depth (see [`crate::lesson::render`]).
+pub const RECURSION_SAFETY_CAP: u32 = 1000;
+
+/// The smallest amount of linear light that moves an 8-bit sRGB value by a whole level: the linear value of
+/// the first code above black. The codes are closest together there (the sRGB curve starts with a straight
+/// segment and grows steeper after it), so any smaller change, added to any pixel, moves its code by at
+/// most one level. A ray whose weight is below this cannot change its pixel by more than one level when what
+/// it sees is no brighter than white, the default [`Scene::min_ray_weight`]. What a pruned ray would have
+/// seen may be brighter (the sun of an HDR sky), and a sample may prune several rays: the guarantee is a
+/// statistical one, which `tests/layered_fresnel.rs` checks on the examples (within one level of
+/// `--exhaustive` on at least 99.9% of pixels).
+pub fn srgb8_finest_step() -> f32 {
+    srgb_to_linear(1.0 / 255.0)
+}
+
+#[derive(Clone)]
+pub struct Scene {
+    pub camera: Camera,
+    pub nodes: Vec<Node>,
+    pub lights: Vec<PointLight>,
+    /// What rays that hit nothing see; black when `None`.
+    pub environment: Option<Arc<dyn Environment>>,
+    /// Ambient light added by the diffuse shaders (the course's `ambientLight`).
+    pub ambient: Color,
+    /// Rays deeper than this return black (the slide's `MAX_RAY_DEPTH`).
+    pub max_depth: u32,
+    /// Rays whose `weight` is below this return black without being traced (adaptive ray-tree depth
+    /// control). [`srgb8_finest_step`] by default; 0 traces every ray to `max_depth` (`--exhaustive`).
+    pub min_ray_weight: f32,
+    /// How the caustic photon map is made (no photons by default).
+    pub photons: PhotonSettings,
+    /// The caustic photon map, built before rendering (see [`crate::app::cli::Cli::prepare_scene`]); `None` renders
+    /// without caustics.
+    pub photon_map: Option<Arc<PhotonMap>>,
+    /// The BVH over the nodes, in the copy of the scene that the renderer and the photon tracer trace
+    /// (see [`Scene::with_node_tree`]); `None` tests the nodes one by one.
+    node_tree: Option<Arc<NodeTree>>,
+}
+
+impl Scene {
+    pub fn new(camera: Camera) -> Scene {
+        Scene {
+            camera,
+            nodes: Vec::new(),
+            lights: Vec::new(),
+            environment: None,
+            ambient: Color::BLACK,
+            max_depth: MAX_RAY_DEPTH,
+            min_ray_weight: srgb8_finest_step(),
+            photons: PhotonSettings::default(),
+            photon_map: None,
+            node_tree: None,
+        }
+    }
+
+    /// Adds a node and returns the scene, for building scenes in one expression.
+    pub fn add(&mut self, node: Node) -> &mut Scene {
+        self.nodes.push(node);
+        self
+    }
+
+    /// Moves the whole scene so that the camera stands at the origin, when that makes the scene's
+    /// coordinates smaller: when the camera is farther from the origin than every corner of every bounded
+    /// node is from the camera. Every node is then translated by minus the camera's position (after its
+    /// own transform), and so are the lights. The picture does not change, but the coordinates the renderer
+    /// computes with become distances from the camera, so a scene far from the origin keeps the precision
+    /// of one near it (pbrt-v4's "camera-world" space). A scene around the origin is left as it is, and
+    /// costs nothing. Environments depend on directions only and are unaffected. The examples do this
+    /// before building the photon map and rendering (see `cli::prepare_scene`).
+    ///
+    /// Deviation from the slides: the course always renders in world coordinates; in f32, a scene moved
+    /// 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
+    pub fn relative_to_camera(&mut self) {
+        let camera = self.camera.position;
+        let farthest = self
+            .nodes
+            .iter()
+            .filter_map(Node::bounds)
+            .flat_map(|b| b.corners())
+            .map(|c| max_abs(c - camera))
+            .fold(0.0, f32::max);
+        if max_abs(camera) <= farthest {
+            return;
+        }
+        for node in &mut self.nodes {
+            node.transform = Some(node.transform.unwrap_or_default().translate(-camera));
+        }
+        for light in &mut self.lights {
+            light.position -= camera;
+        }
+        self.camera.position = Vector::ZERO;
+    }
+
+    /// Checks what can only be checked once the scene is complete: every node's transform is invertible.
+    pub fn check(&self) -> Result<()> {
+        self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
+    }
+
+    /// Whether a photon map can add light to this scene: some node is a mirror or glass that casts caustics
+    /// ([`crate::lesson::shader::Shader::casts_caustics`]) and some light shines on it.
+    pub fn casts_caustics(&self) -> bool {
+        crate::lesson::photon_map::Emitter::new(self, 1, 0).is_some()
+    }
+
+    /// Whether some node's shader depends on the wavelength: only then does the renderer trace wavelengths.
+    pub fn is_dispersive(&self) -> bool {
+        self.nodes.iter().any(|n| n.shader.is_dispersive())
+    }
+
+    /// A copy of the scene with a [`NodeTree`] over its nodes (if it has enough of them), which the renderer and the photon tracer
+    /// trace instead of the scene itself: the tree is built once the scene is complete, and nothing changes
+    /// the copy's nodes after that, so the tree always describes them.
+    pub(crate) fn with_node_tree(&self) -> Scene {
+        Scene { node_tree: NodeTree::build(&self.nodes).map(Arc::new), ..self.clone() }
+    }
+
+    /// The name of a node of this scene: its own ([`Node::named`]), or its geometry and its position in
+    /// `nodes` ("Sphere #2").
+    pub fn node_name(&self, node: &Node) -> String {
+        if let Some(name) = &node.name {
+            return name.clone();
+        }
+        let index = self.nodes.iter().position(|n| std::ptr::eq(n, node));
+        format!("{} #{}", node.geometry.name(), index.map_or("?".to_string(), |i| i.to_string()))
+    }
+
+    /// The closest node hit by the ray, and where: the nearest hit is found first ([`Node::hit`]), and only
+    /// the winner's surface is described ([`Node::surface`]).
+    pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
+        match &self.node_tree {
+            Some(tree) => tree.closest_hit(&self.nodes, ray),
+            None => closest_hit_linear(&self.nodes, ray),
+        }
+    }
+
+    /// Whether anything is hit by the ray before `t_max`.
+    pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        match &self.node_tree {
+            Some(tree) => tree.intersects(&self.nodes, ray, t_max),
+            None => self.nodes.iter().any(|node| node.intersects(ray, t_max)),
+        }
+    }
+}
+
+/// Rays traced, for the summary line and for tests that count them.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// Rays passed to `raytrace`, by depth (the last entry counts every depth from there on).
+    pub rays_by_depth: [u64; 16],
+    /// Shadow rays.
+    pub shadow_rays: u64,
+    /// Rays not traced because they were deeper than [`RECURSION_SAFETY_CAP`].
+    pub capped_rays: u64,
+    /// Rays not traced because their weight was below `Scene::min_ray_weight` (not part of the total).
+    pub pruned_rays: u64,
+}
+
+impl Counters {
+    /// All rays traced: camera, secondary and shadow rays.
+    pub fn total(&self) -> u64 {
+        self.rays_by_depth.iter().sum::<u64>() + self.shadow_rays
+    }
+    pub fn add(&mut self, other: &Counters) {
+        for (a, b) in self.rays_by_depth.iter_mut().zip(&other.rays_by_depth) {
+            *a += b;
+        }
+        self.shadow_rays += other.shadow_rays;
+        self.capped_rays += other.capped_rays;
+        self.pruned_rays += other.pruned_rays;
+    }
+}
+
+/// Which of its pixel's camera samples is being traced: sample `index` of the `count` the pixel gets. A
+/// shader that takes many samples of its own (a glossy mirror's disc points) can spread them over the whole
+/// pixel with it, one well-distributed set for all the pixel's camera samples instead of one per camera ray
+/// (see [`crate::lesson::sampling::DiscSampler::Joint`]). Shaders that do not need it ignore it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelSample {
+    /// This camera sample's index, `0..count`.
+    pub index: u32,
+    /// How many camera samples the pixel gets in all: the `spp`, or, under the course's adaptive
+    /// anti-aliasing, the most a pixel may get ([`crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL`]): a pixel
+    /// that is never refined uses only sample 0 of them.
+    pub count: u32,
+    /// A random word of the pixel (and of the wavelength pass), the same for all its camera samples and
+    /// unrelated to its neighbours': what a sampler randomises its pixel-wide set with.
+    pub pixel_key: u64,
+}
+
+/// The state a shader sees while one pixel is being rendered.
+pub struct TraceContext<'a> {
+    pub scene: &'a Scene,
+    /// The random generator of the current pixel.
+    pub rng: Rng,
+    /// The camera sample being traced, when the context traces a pixel's samples: the renderer sets it
+    /// before each camera ray. `None` (the default) when the rays belong to no pixel (tests, benchmarks).
+    pub pixel_sample: Option<PixelSample>,
+    pub counters: Counters,
+    /// The ray tree being recorded (`--trace-pixel`), if any: see [`crate::instruments::ray_tree`].
+    pub recorder: Option<Box<RayTree>>,
+}
+
+impl<'a> TraceContext<'a> {
+    pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
+        TraceContext { scene, rng, pixel_sample: None, counters: Counters::default(), recorder: None }
+    }
+
+    /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
+    /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
+    /// environment when nothing is hit; otherwise whatever the hit node's shader says.
+    pub fn raytrace(&mut self, ray: &Ray) -> Color {
+        self.record(|tree| tree.begin(ray));
+        if ray.depth > self.scene.max_depth {
+            return self.stop(Stop::DepthLimit);
+        }
+        if ray.depth > RECURSION_SAFETY_CAP {
+            self.counters.capped_rays += 1;
+            return self.stop(Stop::SafetyCap);
+        }
+        if ray.weight < self.scene.min_ray_weight {
+            self.counters.pruned_rays += 1;
+            return self.stop(Stop::WeightCutoff);
+        }
+        self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
+        let scene = self.scene;
+        let (color, stop) = match scene.closest_hit(ray) {
+            Some((info, node)) => {
+                self.record(|tree| tree.hit(scene, node, &info));
+                (node.shader.shade(ray, &info, self), None)
+            }
+            None => (scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)), Some(Stop::Missed)),
+        };
+        self.record(|tree| tree.end(color, stop));
+        color
+    }
+
+    /// A ray not traced, for the reason `stop`: black.
+    fn stop(&mut self, stop: Stop) -> Color {
+        self.record(|tree| tree.end(Color::BLACK, Some(stop)));
+        Color::BLACK
+    }
+
+    /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
+    pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
+        self.counters.shadow_rays += 1;
+        let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
+        let to_light = to - start;
+        let t_max = to_light.length();
+        let ray = Ray::new(start, to_light / t_max);
+        !self.scene.intersects(&ray, t_max)
+    }
+}

@@ -1,0 +1,43 @@
+//! `Lambert`: a perfectly diffuse surface. Its colour is the diffuse colour times (the scene's ambient light
+//! plus, for each light that reaches the point, the light's irradiance times the cosine of its angle, plus the
+//! caustic light from the photon map, if the scene has one).
+
+use super::{ColorSource, Shader};
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::light::diffuse_light;
+use crate::lesson::math::faceforward;
+use crate::lesson::photon_map::PhotonScatter;
+use crate::lesson::ray::Ray;
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::TraceContext;
+
+#[derive(Clone)]
+pub struct Lambert {
+    pub color: ColorSource,
+}
+
+impl Lambert {
+    pub fn new(color: impl Into<ColorSource>) -> Lambert {
+        Lambert { color: color.into() }
+    }
+}
+
+impl Shader for Lambert {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let diffuse = self.color.get(ray, info);
+        let n = faceforward(info.normal, ray.dir);
+        let mark = ctx.record_mark();
+        let color = diffuse * diffuse_light(ctx, info, n);
+        ctx.record(|tree| tree.scale(mark, diffuse));
+        color
+    }
+
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Land { scale: 1.0 }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        false
+    }
+}

@@ -1,0 +1,187 @@
+//! `Layered` (slides "Комбиниране на шейдъри", "Layered Shader"): a surface made of layers, listed bottom to
+//! top, each with its own shader and a blend colour (per-channel opacity: 0 transparent, 1 opaque), optionally
+//! multiplied by a blend texture. The slide's loop is
+//!
+//! ```text
+//! res = 0;  for each layer, bottom to top:  res = res * (1 - blend) + layer_color * blend
+//! ```
+//!
+//! which gives layer i the weight `blend_i * (1 - blend_{i+1}) * ... * (1 - blend_top)`. This shader walks
+//! the layers from the top down instead, computing those weights as it goes, and shades only the layers whose
+//! weight is not zero: a layer with zero blend at this point costs nothing, and under an opaque layer nothing
+//! is shaded at all (not even its blend texture is looked up). The result is the slide's, without the work
+//! the picture cannot show. [`Layered::shade_every_layer`] switches back to the slide's loop, to compare.
+//!
+//! Each layer's shader sees the ray with its weight multiplied by the layer's weight (its largest channel),
+//! so reflection and refraction rays below a faint layer are as faint as they look, and adaptive depth
+//! control (see [`crate::lesson::scene`]) stops them early.
+//!
+//! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
+//! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
+
+use super::{IntoShader, Shader};
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::photon_map::{PhotonScatter, strength};
+use crate::lesson::ray::Ray;
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::TraceContext;
+use crate::lesson::texture::Texture;
+use glam::Vec3A;
+use std::sync::Arc;
+
+#[derive(Clone)]
+pub struct Layer {
+    pub shader: Arc<dyn Shader>,
+    pub blend: Color,
+    pub blend_tex: Option<Arc<dyn Texture>>,
+}
+
+impl Layer {
+    /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
+    fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        let blend = match &self.blend_tex {
+            Some(tex) => self.blend * tex.get_tex_color(ray, info),
+            None => self.blend,
+        };
+        Color(blend.0.clamp(Vec3A::ZERO, Vec3A::ONE))
+    }
+}
+
+/// The most layers a `Layered` may have (the slide's `MAX_LAYERS`).
+pub const MAX_LAYERS: usize = 32;
+
+#[derive(Clone, Default)]
+pub struct Layered {
+    layers: Vec<Layer>,
+    every_layer: bool,
+}
+
+impl Layered {
+    pub fn new() -> Layered {
+        Layered::default()
+    }
+
+    /// Adds a layer on top of the others (the slide's `addLayer`): `shader` seen with opacity `blend`, times
+    /// the texture `blend_tex` if there is one. Panics past `MAX_LAYERS` (32) layers.
+    pub fn add_layer(
+        &mut self,
+        shader: impl IntoShader,
+        blend: Color,
+        blend_tex: Option<Arc<dyn Texture>>,
+    ) -> &mut Layered {
+        assert!(self.layers.len() < MAX_LAYERS, "a Layered shader holds at most {MAX_LAYERS} layers");
+        self.layers.push(Layer { shader: shader.into_shader(), blend, blend_tex });
+        self
+    }
+
+    /// With `true`, shades every layer at every point, as the slide's loop does, even a layer of zero blend or
+    /// one hidden under an opaque layer. The picture is the same; only the time differs. (The layers are
+    /// still visited from the top down, so that nothing but the skipping differs between the two ways.)
+    pub fn shade_every_layer(&mut self, every_layer: bool) -> &mut Layered {
+        self.every_layer = every_layer;
+        self
+    }
+
+    pub fn layers(&self) -> &[Layer] {
+        &self.layers
+    }
+
+    /// How the ray tree names layer `i`, whose blend at the hit is `blend`: "layer 2 of 2 (Reflection, blend
+    /// Fresnel 0.0421)".
+    fn layer_label(&self, i: usize, blend: Color) -> String {
+        let layer = &self.layers[i];
+        let value = if blend.r() == blend.g() && blend.g() == blend.b() {
+            format!("{:.4}", blend.r())
+        } else {
+            format!("({:.4}, {:.4}, {:.4})", blend.r(), blend.g(), blend.b())
+        };
+        let source = layer.blend_tex.as_ref().map_or(String::new(), |tex| format!("{} ", tex.name()));
+        format!("layer {} of {} ({}, blend {source}{value})", i + 1, self.layers.len(), layer.shader.name())
+    }
+
+    /// The weight of each layer at this hit, computed from the top down as `shade` does, and the lowest
+    /// layer that can be seen (the first one, from the top, that covers everything below it); the layers
+    /// under it have no weight.
+    fn weights(&self, ray: &Ray, info: &IntersectionInfo) -> ([Color; MAX_LAYERS], usize) {
+        let mut weights = [Color::BLACK; MAX_LAYERS];
+        let mut uncovered = Color::WHITE;
+        let mut bottom = self.layers.len();
+        for (i, layer) in self.layers.iter().enumerate().rev() {
+            let blend = layer.blend_at(ray, info);
+            weights[i] = uncovered * blend;
+            uncovered *= Color::WHITE - blend;
+            bottom = i;
+            if uncovered.max_channel() <= 0.0 {
+                break;
+            }
+        }
+        (weights, bottom)
+    }
+}
+
+impl Shader for Layered {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        // From the top down: `uncovered` is how much of the layers seen so far lets through, so a layer's
+        // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
+        let mut res = Color::BLACK;
+        let mut uncovered = Color::WHITE;
+        for (i, layer) in self.layers.iter().enumerate().rev() {
+            let blend = layer.blend_at(ray, info);
+            let weight = uncovered * blend;
+            let strength = weight.max_channel();
+            if strength > 0.0 || self.every_layer {
+                let layer_ray = Ray { weight: ray.weight * strength, ..*ray };
+                let mark = ctx.record_mark();
+                ctx.record(|tree| tree.enter_layer(self.layer_label(i, blend)));
+                res += layer.shader.shade(&layer_ray, info, ctx) * weight;
+                ctx.record(|tree| {
+                    tree.scale(mark, weight);
+                    tree.leave_layer();
+                });
+            }
+            uncovered *= Color::WHITE - blend;
+            if uncovered.max_channel() <= 0.0 && !self.every_layer {
+                break;
+            }
+        }
+        res
+    }
+
+    fn is_dispersive(&self) -> bool {
+        self.layers.iter().any(|l| l.shader.is_dispersive() || l.blend_tex.as_ref().is_some_and(|t| t.is_dispersive()))
+    }
+
+    /// A photon follows one layer, chosen with probability proportional to the layer's weight (the mean of
+    /// its channels); its power is multiplied by the weight over that probability, so on average it carries
+    /// exactly what the blend lets through. Landing on a diffuse layer, it is stored with its power over the
+    /// probability alone: the map holds the light that arrives, and the diffuse layer's weight is applied
+    /// when the layer is shaded.
+    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter {
+        let (weights, bottom) = self.weights(ray, info);
+        let total: f32 = weights[bottom..self.layers.len()].iter().map(|&w| strength(w)).sum();
+        if total.is_nan() || total <= 0.0 {
+            return PhotonScatter::Absorb;
+        }
+        let mut pick = rng.next_f32() * total;
+        let last = (bottom..self.layers.len()).rev().find(|&i| strength(weights[i]) > 0.0).unwrap_or(bottom);
+        let chosen = (bottom..self.layers.len())
+            .find(|&i| {
+                pick -= strength(weights[i]);
+                pick < 0.0
+            })
+            .unwrap_or(last);
+        let probability = strength(weights[chosen]) / total;
+        match self.layers[chosen].shader.scatter_photon(ray, info, rng) {
+            PhotonScatter::Land { scale } => PhotonScatter::Land { scale: scale / probability },
+            PhotonScatter::Continue { dir, filter } => {
+                PhotonScatter::Continue { dir, filter: filter * weights[chosen] / probability }
+            }
+            PhotonScatter::Absorb => PhotonScatter::Absorb,
+        }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        self.layers.iter().any(|layer| layer.shader.casts_caustics())
+    }
+}

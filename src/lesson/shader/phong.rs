@@ -1,0 +1,57 @@
+//! `Phong`: Lambert's diffuse term plus a specular highlight `specular * irradiance * cos(gamma)^exponent`,
+//! where gamma is the angle between the light's mirror direction and the direction to the eye (as in the
+//! course's Phong shader). Caustic light from the photon map, if the scene has one, adds to the diffuse term.
+
+use super::{ColorSource, Shader};
+use crate::instruments::ray_tree::LightKind;
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::light::light_loop;
+use crate::lesson::math::{faceforward, reflect};
+use crate::lesson::photon_map::PhotonScatter;
+use crate::lesson::ray::Ray;
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::TraceContext;
+
+#[derive(Clone)]
+pub struct Phong {
+    pub color: ColorSource,
+    /// Strength of the highlight.
+    pub specular: f32,
+    /// Sharpness of the highlight: larger is smaller and sharper.
+    pub exponent: f32,
+}
+
+impl Phong {
+    pub fn new(color: impl Into<ColorSource>, specular: f32, exponent: f32) -> Phong {
+        Phong { color: color.into(), specular, exponent }
+    }
+}
+
+impl Shader for Phong {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let diffuse_color = self.color.get(ray, info);
+        let n = faceforward(info.normal, ray.dir);
+        let mut specular = Color::BLACK;
+        let mark = ctx.record_mark();
+        let diffuse = light_loop(ctx, info, n, |l, irradiance| {
+            let cos_gamma = (-ray.dir).dot(reflect(-l, n));
+            if cos_gamma > 0.0 {
+                specular += irradiance * (self.specular * cos_gamma.powf(self.exponent));
+            }
+        });
+        ctx.record(|tree| {
+            tree.scale(mark, diffuse_color);
+            tree.light(LightKind::Highlight, specular);
+        });
+        diffuse_color * diffuse + specular
+    }
+
+    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        PhotonScatter::Land { scale: 1.0 }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        false
+    }
+}

@@ -1,0 +1,83 @@
+//! `Refraction` (slides "Refract", "Refraction 0.2"): a transparent surface that bends rays by Snell's law.
+//! Whether the ray enters or leaves the object is decided from the normal *before* it is face-forwarded (so
+//! this shader needs outward normals and closed objects); entering, light goes from air into the material,
+//! so the ratio passed to `refract` is 1 / ior; leaving, it is ior. Under total internal reflection the
+//! shader returns black, as on the slide (a Fresnel-blended glass, built with `Layered`, sends that light
+//! into its reflection layer instead).
+//!
+//! Dispersion (slide "Хроматично пречупване"): the index may depend on the wavelength ([`Ior`]); the shader
+//! uses the index at the ray's wavelength, and white rays (no wavelength) see n_d.
+//!
+//! Deviation from the slides: the new ray starts at the hit point offset by its error bound to the side the
+//! refracted ray goes to ([`Ray::spawn`](crate::lesson::ray::Ray::spawn)), instead of `1e-6 * ray.dir`.
+
+use super::Shader;
+use crate::instruments::ray_tree::{LightKind, RayKind};
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::math::{Vector, faceforward, refract};
+use crate::lesson::photon_map::PhotonScatter;
+use crate::lesson::ray::Ray;
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::TraceContext;
+use crate::lesson::spectral::Ior;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Refraction {
+    /// Index of refraction of the material (glass about 1.5), possibly depending on the wavelength; the
+    /// outside is air (1.0).
+    pub ior: Ior,
+    /// Fraction of the light that passes.
+    pub multiplier: f32,
+}
+
+impl Refraction {
+    pub fn new(ior: f32, multiplier: f32) -> Refraction {
+        Refraction { ior: Ior::Constant(ior), multiplier }
+    }
+    /// A refraction whose index may depend on the wavelength (a dispersive glass).
+    pub fn with_ior(ior: Ior, multiplier: f32) -> Refraction {
+        Refraction { ior, multiplier }
+    }
+
+    /// The unit direction of the refracted ray (for the ray's wavelength), or `None` under total internal
+    /// reflection.
+    fn refracted(&self, ray: &Ray, info: &IntersectionInfo) -> Option<Vector> {
+        let entering = info.normal.dot(ray.dir) < 0.0;
+        let ior = self.ior.at(ray.wavelength);
+        let eta = if entering { 1.0 / ior } else { ior };
+        let n = faceforward(info.normal, ray.dir);
+        refract(ray.dir, n, eta).map(Vector::normalize)
+    }
+}
+
+impl Shader for Refraction {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let Some(dir) = self.refracted(ray, info) else {
+            ctx.record(|tree| tree.light(LightKind::TotalInternalReflection, Color::BLACK));
+            return Color::BLACK;
+        };
+        let new_ray = ray.spawn(info, dir, self.multiplier);
+        let mark = ctx.record_mark();
+        ctx.record(|tree| tree.next_ray(RayKind::Refraction));
+        let color = ctx.raytrace(&new_ray) * self.multiplier;
+        ctx.record(|tree| tree.scale(mark, Color::gray(self.multiplier)));
+        color
+    }
+
+    fn is_dispersive(&self) -> bool {
+        self.ior.is_dispersive()
+    }
+
+    /// A photon is refracted like a ray (and absorbed under total internal reflection, as the ray is).
+    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
+        match self.refracted(ray, info) {
+            Some(dir) => PhotonScatter::Continue { dir, filter: Color::gray(self.multiplier) },
+            None => PhotonScatter::Absorb,
+        }
+    }
+
+    fn casts_caustics(&self) -> bool {
+        true
+    }
+}

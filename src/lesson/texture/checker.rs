@@ -1,0 +1,25 @@
+//! `CheckerTexture`: two colours alternating in squares of 1 / `scaling` texture units (the course's first
+//! procedural texture, kept for comparison with bitmaps).
+
+use super::Texture;
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::math::floor;
+use crate::lesson::ray::Ray;
+
+#[derive(Clone, Copy, Debug)]
+pub struct CheckerTexture {
+    pub color1: Color,
+    pub color2: Color,
+    /// Squares per texture unit.
+    pub scaling: f32,
+}
+
+impl Texture for CheckerTexture {
+    fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
+        let (u, v) = info.uv();
+        let x = floor(u * self.scaling) as i64;
+        let y = floor(v * self.scaling) as i64;
+        if (x + y).rem_euclid(2) == 0 { self.color1 } else { self.color2 }
+    }
+}

@@ -1,0 +1,65 @@
+//! The `Fresnel` texture (slides "Fresnel", "Fresnel Texture"): the fraction of light a dielectric surface
+//! reflects at the angle the ray meets it, as a grey colour, meant to drive a `Layered` shader's reflection
+//! layer. Schlick's approximation is the slide's; the exact equations are a second mode for comparison.
+//! With a dispersive [`Ior`] the reflectance is that of the ray's wavelength.
+//! Both give 1 under total internal reflection, so a glass made of a refraction layer and a reflection layer
+//! blended by this texture loses no light there (the slide's formula, used as is when leaving the glass,
+//! would give less than 1 and let the refraction layer return black for the rest).
+
+use super::Texture;
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::math::{faceforward, fresnel, fresnel_exact};
+use crate::lesson::ray::Ray;
+use crate::lesson::spectral::Ior;
+
+/// Which formula the Fresnel texture uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum FresnelMode {
+    /// Schlick's approximation, as on the slide.
+    #[default]
+    Schlick,
+    /// The exact Fresnel equations for unpolarised light.
+    Exact,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Fresnel {
+    /// Index of refraction of the object (outside is air, 1.0), possibly depending on the wavelength.
+    pub ior: Ior,
+    pub mode: FresnelMode,
+}
+
+impl Fresnel {
+    pub fn new(ior: f32, mode: FresnelMode) -> Fresnel {
+        Fresnel { ior: Ior::Constant(ior), mode }
+    }
+    /// A Fresnel texture whose index may depend on the wavelength (a dispersive glass).
+    pub fn with_ior(ior: Ior, mode: FresnelMode) -> Fresnel {
+        Fresnel { ior, mode }
+    }
+    /// The reflectance for this ray and hit (the slide's `getTexColor`, as a number).
+    pub fn reflectance(&self, ray: &Ray, info: &IntersectionInfo) -> f32 {
+        // Entering, light goes from air (1) into the object (ior); leaving, the other way round: the slide's
+        // "eta flipped when inside". The test is the one `Refraction` makes, so the two always agree on which
+        // side the ray is (and on total internal reflection).
+        let ior = self.ior.at(ray.wavelength);
+        let entering = info.normal.dot(ray.dir) < 0.0;
+        let eta = if entering { 1.0 / ior } else { ior };
+        let n = faceforward(info.normal, ray.dir);
+        match self.mode {
+            FresnelMode::Schlick => fresnel(ray.dir, n, eta),
+            FresnelMode::Exact => fresnel_exact(ray.dir, n, eta),
+        }
+    }
+}
+
+impl Texture for Fresnel {
+    fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        Color::gray(self.reflectance(ray, info))
+    }
+
+    fn is_dispersive(&self) -> bool {
+        self.ior.is_dispersive()
+    }
+}

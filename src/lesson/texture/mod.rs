@@ -1,0 +1,32 @@
+//! Textures (slides "Bitmap текстури", "Текстури", "Fresnel Texture"): anything that gives a colour for a
+//! point of a surface. A texture can colour a surface (a diffuse texture) or drive any other property of a
+//! shader: a layer's blend, a reflection's colour, ... (slide "Примери за текстури").
+
+mod bitmap;
+mod checker;
+mod fresnel;
+
+pub use bitmap::BitmapTexture;
+pub use checker::CheckerTexture;
+pub use fresnel::{Fresnel, FresnelMode};
+
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::ray::Ray;
+
+/// The course's `Texture` interface.
+pub trait Texture: Send + Sync {
+    /// The texture's colour where `ray` hit the surface described by `info`.
+    fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
+
+    /// Whether the colour depends on the ray's wavelength (a dispersive Fresnel texture), so that the
+    /// renderer must trace wavelengths separately.
+    fn is_dispersive(&self) -> bool {
+        false
+    }
+
+    /// What the ray tree (`--trace-pixel`) calls this texture: its type's name.
+    fn name(&self) -> &'static str {
+        crate::instruments::ray_tree::type_label::<Self>()
+    }
+}
