@@ -16,7 +16,8 @@ mod examples;
 
 use examples::{bitmap_textures, dispersion};
 use lecture6::app::cli::{Cli, Example};
-use lecture6::lesson::render::{Frame, RenderStats};
+use lecture6::lesson::frame::Frame;
+use lecture6::lesson::render::RenderStats;
 use std::path::Path;
 
 fn render<E: Example>(args: &[&str]) -> (Frame, RenderStats) {

@@ -27,7 +27,8 @@ use common::cpu_time;
 use examples::{fresnel, layered};
 use lecture6::app::cli::{Cli, Example};
 use lecture6::instruments::compare::difference;
-use lecture6::lesson::render::{Frame, RenderStats};
+use lecture6::lesson::frame::Frame;
+use lecture6::lesson::render::RenderStats;
 use lecture6::lesson::scene::Counters;
 use std::time::Duration;
 

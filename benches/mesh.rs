@@ -238,7 +238,7 @@ fn main() -> std::process::ExitCode {
                 let write = |tmp: &Path| {
                     std::fs::write(tmp, lecture6::app::assets::teapot::obj(40)).map_err(image::ImageError::IoError)
                 };
-                if let Err(e) = lecture6::lesson::render::save_atomically(&fine, write) {
+                if let Err(e) = lecture6::lesson::frame::save_atomically(&fine, write) {
                     eprintln!("mesh: error: {e}");
                     return std::process::ExitCode::from(2);
                 }

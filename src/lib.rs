@@ -3,33 +3,40 @@
 //! Each module implements the slide it is named after; its documentation says which, and where the Rust
 //! differs from the slide's C++ and why.
 //!
+//! The crate is in three layers; each imports only from the layers above it in this list:
+//!
+//! - [`lesson`]: the slides' code, a leaf that imports nothing from the other two;
+//! - [`instruments`]: what makes the lesson visible (the ray tree, debug views, comparisons, the progressive
+//!   renderer, the study and the viewer); they watch the renderer through the one observation hook the lesson
+//!   owns;
+//! - [`app`]: the command line every example shares, the course's scene files and the workbook's files.
+//!
 //! | module | slides |
 //! |---|---|
-//! | [`math`] | faceforward, reflect, refract, Fresnel (Schlick and exact), orthonormal basis |
-//! | [`color`], [`ray`], [`camera`], [`rng`] | the course's basic types |
-//! | [`geometry`], [`transform`], [`node`] | geometry in canonical form; model transform; nodes and instancing |
-//! | [`bitmap`], [`texture`] | bitmap textures; textures that drive shader properties; the Fresnel texture |
-//! | [`environment`] | what rays that hit nothing see: constant, spherical (equirectangular) and cube-map environments |
-//! | [`shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
-//! | [`light`], [`scene`] | point lights and shadow rays; the scene and `raytrace()` |
-//! | [`render`], [`adaptive_aa`] | the parallel, deterministic renderer; the course's adaptive anti-aliasing |
-//! | [`debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
-//! | [`side_by_side`] | two renders and their difference in one captioned picture (`--side-by-side`) |
-//! | [`ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
-//! | [`tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
-//! | [`progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
-//! | [`spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
-//! | [`photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
-//! | [`sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
-//! | [`study`] | run time versus error: renders at rising sample counts against a converged reference |
-//! | `viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
-//! | [`cli`] | the command line every example shares, and the `run` that is every example's `main` |
-//! | [`workbook`] | what the examples share that is not a slide's lesson: bundled textures, the sky, studios |
-//! | [`scene_file`] | the course's `.qdmg` scene files |
-//! | [`compare`], [`assets`], [`teapot`] | image differences; the generated textures; the Utah teapot |
+//! | [`lesson::math`] | faceforward, reflect, refract, Fresnel (Schlick and exact), orthonormal basis |
+//! | [`lesson::color`], [`lesson::ray`], [`lesson::camera`], [`lesson::rng`] | the course's basic types |
+//! | [`lesson::geometry`], [`lesson::transform`], [`lesson::node`] | geometry in canonical form; model transform; nodes and instancing |
+//! | [`lesson::bitmap`], [`lesson::texture`] | bitmap textures; textures that drive shader properties; the Fresnel texture |
+//! | [`lesson::environment`] | what rays that hit nothing see: constant, spherical (equirectangular) and cube-map environments |
+//! | [`lesson::shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
+//! | [`lesson::light`], [`lesson::scene`] | point lights and shadow rays; the scene and `raytrace()` |
+//! | [`lesson::render`], [`lesson::frame`], [`lesson::adaptive_aa`] | the parallel, deterministic renderer and the picture it makes; the course's adaptive anti-aliasing |
+//! | [`lesson::tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
+//! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
+//! | [`lesson::photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
+//! | [`lesson::sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
+//! | [`instruments::ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
+//! | [`instruments::debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
+//! | [`instruments::side_by_side`], [`instruments::compare`] | two renders and their difference in one captioned picture (`--side-by-side`); image differences (`--compare`) |
+//! | [`instruments::progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
+//! | [`instruments::study`] | run time versus error: renders at rising sample counts against a converged reference |
+//! | `instruments::viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
+//! | [`app::cli`] | the command line every example shares, and the `run` that is every example's `main` |
+//! | [`app::workbook`], [`app::assets`] | the bundled textures and the sky; the generated textures and the Utah teapot |
+//! | [`app::scene_file`] | the course's `.qdmg` scene files |
 //!
 //! An example, or a homework, starts with `use lecture6::prelude::*;`, which brings in everything it needs to
-//! build a scene and run it (see [`cli::Example`] for a whole example in 25 lines).
+//! build a scene and run it (see [`app::cli::Example`] for a whole example in 25 lines).
 
 pub mod app;
 pub mod instruments;
@@ -54,13 +61,13 @@ pub mod prelude {
     pub use crate::lesson::light::{PointLight, diffuse_light, light_loop};
     pub use crate::lesson::math::{Vector, faceforward, reflect, refract};
     pub use crate::lesson::node::Node;
-    pub use crate::lesson::photon_map::{PhotonScatter, PhotonSettings};
+    pub use crate::lesson::photon_map::PhotonSettings;
     pub use crate::lesson::ray::Ray;
     pub use crate::lesson::rng::Rng;
     pub use crate::lesson::sampling::DiscSampler;
     pub use crate::lesson::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
     pub use crate::lesson::shader::{
-        ColorSource, Lambert, Layered, Phong, Reflection, Refraction, Shader, fresnel_glass,
+        ColorSource, Lambert, Layered, Phong, PhotonScatter, Reflection, Refraction, Shader, fresnel_glass,
     };
     pub use crate::lesson::spectral::Ior;
     pub use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};

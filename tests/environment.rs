@@ -14,8 +14,8 @@ use lecture6::lesson::environment::{
     self, CubeFace, CubemapEnvironment, Environment, SphericalEnvironment, cube_face_direction, cube_face_uv,
     equirect_direction, equirect_uv,
 };
+use lecture6::lesson::frame::Frame;
 use lecture6::lesson::math::Vector;
-use lecture6::lesson::render::Frame;
 use lecture6::lesson::rng::Rng;
 use std::path::PathBuf;
 use std::sync::Arc;

@@ -182,10 +182,10 @@ fn side_by_side_of_an_example_writes_three_panels_of_its_size() {
     let _ = std::fs::remove_file(&path);
     let args: Vec<std::ffi::OsString> =
         ["--width", "64", "--height", "48", "--quiet", "-o", path.to_str().unwrap()].map(Into::into).to_vec();
-    lecture6::instruments::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--fresnel exact").unwrap();
+    lecture6::app::cli::commands::side_by_side::<fresnel::Options>("fresnel", &args, "--fresnel exact").unwrap();
     let out = image::open(&path).unwrap().to_rgb8();
     assert_eq!(out.width(), 3 * 64);
     assert!(out.height() > 48);
-    let bad = lecture6::instruments::side_by_side::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
+    let bad = lecture6::app::cli::commands::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
     assert!(bad.is_err(), "A and B of different sizes cannot be compared");
 }

@@ -8,7 +8,7 @@
 use crate::instruments::side_by_side::{Panel, compose};
 use crate::lesson::color::srgb8_to_linear_table;
 use crate::lesson::error::{Error, Result};
-use crate::lesson::render::Frame;
+use crate::lesson::frame::Frame;
 use std::path::Path;
 
 /// How two images of the same size differ.
@@ -176,7 +176,7 @@ impl Reference {
     /// Reads a reference picture: `.exr` and `.hdr` as linear floats, anything else as 8-bit sRGB.
     pub fn load(path: &Path) -> Result<Reference> {
         let image = image::open(path).map_err(|e| Error::file("cannot read reference image", path, e))?;
-        Ok(if crate::lesson::render::keeps_linear_light(path) {
+        Ok(if crate::lesson::frame::keeps_linear_light(path) {
             let img = image.into_rgb32f();
             let pixels = img.pixels().map(|p| crate::lesson::color::Color::new(p[0], p[1], p[2])).collect();
             Reference::Linear(Frame { width: img.width(), height: img.height(), pixels })

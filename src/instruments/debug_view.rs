@@ -10,15 +10,11 @@
 //!
 //! Each view comes with its scale, in words, which the example prints.
 
-use crate::app::cli::{Cli, Example};
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
-use crate::lesson::render::{RenderSettings, render_row, save_atomically, thread_pool};
+use crate::lesson::render::{RenderSettings, render_row, thread_pool};
 use crate::lesson::scene::{Counters, Scene};
-use clap::ValueEnum;
 use rayon::prelude::*;
-use std::path::Path;
-use std::time::Instant;
 
 /// Which debug view to draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -163,27 +159,4 @@ pub fn heat(t: f32) -> [u8; 3] {
     let f = x - i as f32;
     let c = STOPS[i] * (1.0 - f) + STOPS[i + 1] * f;
     c.to_array().map(unit_to_u8)
-}
-
-/// `--view`: draws the example's debug view and writes it to `--output`, or `out/NAME-VIEW.png`; returns
-/// the line to print (where it went, and its scale).
-pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
-    let settings = RenderSettings { progress: false, ..args.settings() };
-    let scene = args.prepare_scene()?;
-    let start = Instant::now();
-    let picture = render_view(&scene, &settings, view)?;
-    let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
-    let path = match &args.common.output {
-        Some(path) => path.clone(),
-        None => Path::new("out").join(format!("{name}-{label}.png")),
-    };
-    save_atomically(&path, |tmp| picture.image.save_with_format(tmp, image::ImageFormat::Png))?;
-    Ok(format!(
-        "{name}: view {label}, {}x{}, {:.3} s -> {}\n{name}: scale: {}\n",
-        settings.width,
-        settings.height,
-        start.elapsed().as_secs_f64(),
-        path.display(),
-        picture.scale
-    ))
 }

@@ -19,7 +19,8 @@
 
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
-use crate::lesson::render::{Frame, RenderSettings, RenderStats, render_rect};
+use crate::lesson::frame::Frame;
+use crate::lesson::render::{RenderSettings, RenderStats, render_rect};
 use crate::lesson::scene::{Counters, Scene};
 use crate::lesson::spectral::SpectralPlan;
 use rayon::prelude::*;

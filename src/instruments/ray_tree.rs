@@ -14,7 +14,6 @@
 //! factors on the path from the camera (its *throughput*) times its colour; the shares of all the light
 //! terms and of the environment seen by rays that missed add up to the pixel's colour (what the tests check).
 
-use crate::app::cli::{Cli, Example};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
@@ -518,13 +517,9 @@ pub enum TraceFormat {
     Json,
 }
 
-/// `--trace-pixel`: renders only `pixel` of the example's picture, recording its rays, and prints the tree of
-/// camera ray `sample` of it (the pixel's colour is the mean of its samples' colours).
-pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Result<String> {
-    let settings = RenderSettings { progress: false, ..args.settings() };
-    let scene = args.prepare_scene()?;
-    let trace = render_pixel(&scene, &settings, pixel.x, pixel.y, true)?;
-    describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)
+/// Renders pixel `pixel` of the picture `settings` describe, as the render would, recording its ray tree.
+pub fn trace(scene: &Scene, settings: &RenderSettings, pixel: PixelPos) -> Result<PixelTrace> {
+    render_pixel(scene, settings, pixel.x, pixel.y, true)
 }
 
 /// The report of pixel `pixel`, traced with its ray tree recorded (`trace`, from [`render_pixel`]): the

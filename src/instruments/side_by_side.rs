@@ -5,16 +5,11 @@
 //!
 //! The captions are drawn with the DejaVu Sans Mono font the workbook bundles ([`crate::instruments::font`]), through `ab_glyph`, so nothing depends on the fonts of the machine.
 
-use crate::app::cli::{Cli, Example};
 use crate::instruments::compare;
 use crate::instruments::font::DEJAVU_SANS_MONO;
 use crate::lesson::error::{Error, Result};
-use crate::lesson::render::save_atomically;
 use ab_glyph::{Font, FontRef, PxScale, PxScaleFont, ScaleFont, point};
-use std::ffi::OsString;
-use std::path::Path;
 
-/// The bundled font of the captions.
 /// The captions' font size in pixels.
 const CAPTION_SIZE: f32 = 14.0;
 /// Space around a caption's text, in pixels.
@@ -111,66 +106,14 @@ fn draw_text<F: Font>(out: &mut image::RgbImage, font: &PxScaleFont<F>, text: &s
     }
 }
 
-/// The example's options `args` (without the program name) with `--side-by-side` and its value taken out.
-fn without_side_by_side(args: &[OsString]) -> Vec<OsString> {
-    let mut out = Vec::new();
-    let mut skip_value = false;
-    for arg in args {
-        if std::mem::take(&mut skip_value) {
-            continue;
-        }
-        match arg.to_str() {
-            Some("--side-by-side") => skip_value = true,
-            Some(a) if a.starts_with("--side-by-side=") => {}
-            _ => out.push(arg.clone()),
-        }
-    }
-    out
-}
-
-/// `--side-by-side`: renders the example `name` with its options `args` (as given on the command line,
-/// without the program name) and again with the options `alternative` (split at white space) added after
-/// them, where they win; writes A | B | difference to `--output` or `out/NAME-side-by-side.png` and returns
-/// the lines to print.
-pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str) -> Result<String> {
-    let base = without_side_by_side(args);
-    let alt: Vec<OsString> = alternative.split_whitespace().map(OsString::from).collect();
-    let parse = |extra: &[OsString]| -> Result<Cli<E>> {
-        let argv = std::iter::once(OsString::from(name)).chain(base.iter().cloned()).chain(extra.iter().cloned());
-        let matches = Cli::<E>::command_named(name)
-            .args_override_self(true)
-            .try_get_matches_from(argv)
-            .and_then(|m| <Cli<E> as clap::FromArgMatches>::from_arg_matches(&m));
-        matches.map_err(|e| Error::parameter("--side-by-side", alternative, e.to_string().lines().next().unwrap_or("")))
-    };
-    let (a, b) = (parse(&[])?, parse(&alt)?);
-    let words = |args: &[OsString]| args.iter().map(|a| a.to_string_lossy()).collect::<Vec<_>>().join(" ");
-    let base_text = if base.is_empty() { "(its defaults)".to_string() } else { words(&base) };
-    let mut panels = Vec::new();
-    for (label, args, options) in [("A", &a, base_text.clone()), ("B", &b, format!("{base_text} + {alternative}"))] {
-        let (frame, stats) = args.render()?;
-        let secs = stats.elapsed.as_secs_f64();
-        let rays = stats.counters.total() as f64 * 1e-6;
-        panels.push(Panel {
-            image: frame.to_rgb8(),
-            caption: format!("{label}: {name} {options}\n{secs:.2} s, {rays:.2} M rays"),
-        });
-    }
-    let (pa, pb) = (&panels[0].image, &panels[1].image);
-    let diff = compare::difference(pa, pb).map_err(|_| {
-        Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
-    })?;
-    let heat = compare::heat_map(pa, pb)?;
-    panels.push(Panel { caption: format!("difference A-B (black: equal, white: 64+ levels)\n{diff}"), image: heat });
-    let picture = compose(&panels)?;
-    let path = a.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}-side-by-side.png")));
-    save_atomically(&path, |tmp| picture.save_with_format(tmp, image::ImageFormat::Png))?;
-    Ok(format!(
-        "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",
-        picture.width(),
-        picture.height(),
-        path.display()
-    ))
+/// A | B | difference: the two renders `a` and `b`, each with its caption, and the heat map of their
+/// difference, as one picture; and the difference in words. Fails when the two are not of the same size.
+pub fn a_b_difference(a: Panel, b: Panel) -> Result<(image::RgbImage, compare::Difference)> {
+    let diff = compare::difference(&a.image, &b.image)?;
+    let heat = compare::heat_map(&a.image, &b.image)?;
+    let caption = format!("difference A-B (black: equal, white: 64+ levels)\n{diff}");
+    let picture = compose(&[a, b, Panel { caption, image: heat }])?;
+    Ok((picture, diff))
 }
 
 #[cfg(test)]

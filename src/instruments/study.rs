@@ -15,7 +15,7 @@
 
 use crate::app::cli::{Cli, Example};
 use crate::lesson::error::{Error, Result};
-use crate::lesson::render::Frame;
+use crate::lesson::frame::Frame;
 use crate::lesson::rng::mix64;
 use std::path::{Path, PathBuf};
 use std::time::Duration;

@@ -15,7 +15,8 @@
 //! five samples of an ordinary render would.
 
 use crate::lesson::camera::CameraFrame;
-use crate::lesson::render::{Frame, RenderSettings, pixel_key};
+use crate::lesson::frame::Frame;
+use crate::lesson::render::{RenderSettings, pixel_key};
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{Counters, PixelSample, Scene, TraceContext};
 use rayon::prelude::*;

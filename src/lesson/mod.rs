@@ -6,6 +6,7 @@ pub mod camera;
 pub mod color;
 pub mod environment;
 pub mod error;
+pub mod frame;
 pub mod geometry;
 pub mod light;
 pub mod math;

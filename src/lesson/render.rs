@@ -16,8 +16,9 @@
 
 use crate::instruments::ray_tree::RayTree;
 use crate::lesson::camera::CameraFrame;
-use crate::lesson::color::{Color, to_srgb8};
+use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
+use crate::lesson::frame::Frame;
 use crate::lesson::photon_map::PhotonStats;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::{Rng, key_of, mix64, shuffled_index};
@@ -27,7 +28,6 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
 use std::ops::Range;
-use std::path::Path;
 use std::time::{Duration, Instant};
 
 /// The largest frame the renderer accepts, in pixels (64 Mpx, 1 GiB of linear colour).
@@ -142,91 +142,6 @@ impl RenderSettings {
         }
         Ok(())
     }
-}
-
-/// A rendered picture in linear light, rows from the top.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Frame {
-    pub width: u32,
-    pub height: u32,
-    pub pixels: Vec<Color>,
-}
-
-impl Frame {
-    /// A black frame. Its pixels are written in parallel (on the current rayon pool), so that the memory of a
-    /// large frame is first touched, page by page, by every thread rather than by one.
-    pub fn new(width: u32, height: u32) -> Frame {
-        let mut pixels = Vec::new();
-        pixels.par_extend(rayon::iter::repeat_n(Color::BLACK, width as usize * height as usize));
-        Frame { width, height, pixels }
-    }
-    pub fn get(&self, x: u32, y: u32) -> Color {
-        self.pixels[(y * self.width + x) as usize]
-    }
-    /// The frame encoded as 8-bit sRGB, row by row in parallel (on the current rayon pool): the encoding's
-    /// `powf` per channel would otherwise be a serial step after the parallel render.
-    pub fn to_rgb8(&self) -> image::RgbImage {
-        let w = self.width as usize;
-        let mut bytes = vec![0u8; self.pixels.len() * 3];
-        bytes.par_chunks_mut(3 * w).zip(self.pixels.par_chunks(w)).for_each(|(out, row)| {
-            for (rgb, &c) in out.chunks_exact_mut(3).zip(row) {
-                rgb.copy_from_slice(&to_srgb8(c));
-            }
-        });
-        image::RgbImage::from_raw(self.width, self.height, bytes).expect("frame size matches its pixels")
-    }
-    /// The frame as linear floats.
-    pub fn to_rgb32f(&self) -> image::Rgb32FImage {
-        let values = self.pixels.iter().flat_map(|c| c.to_array()).collect();
-        image::Rgb32FImage::from_raw(self.width, self.height, values).expect("frame size matches its pixels")
-    }
-    /// A frame from an 8-bit sRGB image (decoded to linear light).
-    pub fn from_rgb8(img: &image::RgbImage) -> Frame {
-        let table = crate::lesson::color::srgb8_to_linear_table();
-        let pixels = img.pixels().map(|p| Color::new(table[p[0] as usize], table[p[1] as usize], table[p[2] as usize]));
-        Frame { width: img.width(), height: img.height(), pixels: pixels.collect() }
-    }
-
-    /// Writes the frame: `.png` as 8-bit sRGB, `.exr` and `.hdr` as linear floats. The image goes to a
-    /// temporary file beside the target first and is renamed over it only when complete, so a failure never
-    /// destroys an earlier picture.
-    pub fn save(&self, path: &Path) -> Result<()> {
-        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-        let format = match ext.as_deref() {
-            Some("png") => image::ImageFormat::Png,
-            Some("exr") => image::ImageFormat::OpenExr,
-            Some("hdr") => image::ImageFormat::Hdr,
-            _ => return Err(Error::file("cannot write image", path, "the name must end in .png, .exr or .hdr")),
-        };
-        save_atomically(path, |tmp| match format {
-            image::ImageFormat::Png => self.to_rgb8().save_with_format(tmp, format),
-            _ => self.to_rgb32f().save_with_format(tmp, format),
-        })
-    }
-}
-
-/// True for the files that keep linear light, floats above 1 included (`.exr`, `.hdr`); PNG and the other
-/// 8-bit formats hold sRGB-encoded values from 0 to 1.
-pub fn keeps_linear_light(path: &Path) -> bool {
-    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-    matches!(ext.as_deref(), Some("exr" | "hdr"))
-}
-
-/// Writes a file through `write`, which is given a temporary path beside `path`; the temporary file is
-/// renamed over `path` only when it is complete, so a failure never destroys an earlier file.
-pub fn save_atomically(path: &Path, write: impl FnOnce(&Path) -> image::ImageResult<()>) -> Result<()> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| Error::file("cannot create the folder for", path, e))?;
-    }
-    let name = path.file_name().map(|n| n.to_string_lossy()).unwrap_or_default();
-    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    let result = write(&tmp)
-        .map_err(|e| Error::file("cannot write image", path, e))
-        .and_then(|()| std::fs::rename(&tmp, path).map_err(|e| Error::file("cannot write image", path, e)));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }
 
 /// What a render produced besides the picture.

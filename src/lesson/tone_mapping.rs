@@ -15,7 +15,7 @@
 
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
-use crate::lesson::render::Frame;
+use crate::lesson::frame::Frame;
 use rayon::prelude::*;
 
 /// How linear light above 1 is fitted into an 8-bit picture.

@@ -10,7 +10,7 @@ use lecture6::app::cli::{Cli, Example};
 pub mod examples;
 
 use lecture6::instruments::compare::{difference, heat_map};
-use lecture6::lesson::render::Frame;
+use lecture6::lesson::frame::Frame;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

@@ -14,7 +14,8 @@ use crate::instruments::compare::{self, Reference};
 use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::lesson::camera::Camera;
 use crate::lesson::error::Result;
-use crate::lesson::render::{RenderSettings, keeps_linear_light, render_pixel, thread_pool};
+use crate::lesson::frame::keeps_linear_light;
+use crate::lesson::render::{RenderSettings, render_pixel, thread_pool};
 use eframe::egui;
 use std::ffi::OsString;
 use std::sync::Arc;
@@ -272,7 +273,7 @@ impl<E: Example> Viewer<E> {
     /// Shows the heat map of the difference from the reference (`--compare`'s, or `expected/<name>.png`)
     /// instead of the picture, or the picture again. The comparison is `--compare`'s: the same figures, the
     /// same heat map with its colour bar.
-    fn toggle_compare(&mut self, ctx: &egui::Context, frame: &crate::lesson::render::Frame) {
+    fn toggle_compare(&mut self, ctx: &egui::Context, frame: &crate::lesson::frame::Frame) {
         if self.heat_map.take().is_some() {
             return;
         }

@@ -6,7 +6,8 @@ use crate::instruments::progressive::{Outcome, Update, preview_settings, quick_f
 use crate::lesson::camera::Camera;
 use crate::lesson::color::to_srgb8;
 use crate::lesson::error::Result;
-use crate::lesson::render::{Frame, RenderSettings, RenderStats, thread_pool};
+use crate::lesson::frame::Frame;
+use crate::lesson::render::{RenderSettings, RenderStats, thread_pool};
 use crate::lesson::scene::Scene;
 use crate::lesson::tone_mapping::Film;
 use std::collections::VecDeque;

@@ -7,10 +7,10 @@ use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::diffuse_light;
 use crate::lesson::math::faceforward;
-use crate::lesson::photon_map::PhotonScatter;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
+use crate::lesson::shader::PhotonScatter;
 
 #[derive(Clone)]
 pub struct Lambert {

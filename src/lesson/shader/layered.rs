@@ -22,10 +22,11 @@
 use super::{IntoShader, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
-use crate::lesson::photon_map::{PhotonScatter, strength};
+use crate::lesson::photon_map::strength;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
+use crate::lesson::shader::PhotonScatter;
 use crate::lesson::texture::Texture;
 use glam::Vec3A;
 use std::sync::Arc;

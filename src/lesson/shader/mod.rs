@@ -18,12 +18,25 @@ pub use refraction::Refraction;
 
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
-use crate::lesson::photon_map::PhotonScatter;
+use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::texture::Texture;
 use std::sync::Arc;
+
+/// What a photon does where it hits a surface (see [`Shader::scatter_photon`] and [`crate::lesson::photon_map`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PhotonScatter {
+    /// The surface is diffuse and the photon ends here. It is stored, its power multiplied by `scale`, if it
+    /// was reflected or refracted on its way. `scale` is 1 except where a `Layered` shader chose this layer
+    /// at random: then it is one over the probability of that choice.
+    Land { scale: f32 },
+    /// The photon goes on in the unit direction `dir`, its power multiplied by `filter`.
+    Continue { dir: Vector, filter: Color },
+    /// The photon is absorbed.
+    Absorb,
+}
 
 /// The course's `Shader` interface.
 ///

@@ -34,11 +34,11 @@ use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{OrthonormalBasis, Vector, faceforward, reflect};
-use crate::lesson::photon_map::PhotonScatter;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use crate::lesson::scene::TraceContext;
+use crate::lesson::shader::PhotonScatter;
 use std::f32::consts::FRAC_PI_2;
 
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course

@@ -16,10 +16,10 @@ use crate::instruments::ray_tree::{LightKind, RayKind};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, faceforward, refract};
-use crate::lesson::photon_map::PhotonScatter;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
+use crate::lesson::shader::PhotonScatter;
 use crate::lesson::spectral::Ior;
 
 #[derive(Clone, Copy, Debug)]

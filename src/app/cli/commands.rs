@@ -1,0 +1,104 @@
+//! The instruments as commands of an example: `--trace-pixel`, `--view` and `--side-by-side`. Each takes the
+//! example's scene and render settings exactly as the render itself would ([`Cli::prepare`]: a scene file's
+//! own frame size and anti-aliasing included), hands them to its instrument, writes what it makes and returns
+//! the lines to print.
+
+use super::example::{Cli, Example};
+use crate::instruments::debug_view::{DebugView, render_view};
+use crate::instruments::ray_tree::{self, PixelPos};
+use crate::instruments::side_by_side::{Panel, a_b_difference};
+use crate::lesson::error::{Error, Result};
+use crate::lesson::frame::save_atomically;
+use clap::ValueEnum;
+use std::ffi::OsString;
+use std::path::Path;
+use std::time::Instant;
+
+/// `--trace-pixel`: renders only `pixel` of the example's picture, recording its rays, and describes the
+/// tree of the camera ray `--trace-sample` of it (the pixel's colour is the mean of its samples' colours).
+pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Result<String> {
+    let (scene, settings) = args.prepare()?;
+    let trace = ray_tree::trace(&scene, &settings, pixel)?;
+    ray_tree::describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)
+}
+
+/// `--view`: draws the example's debug view and writes it to `--output`, or `out/NAME-VIEW.png`; returns
+/// the line to print (where it went, and its scale).
+pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
+    let (scene, settings) = args.prepare()?;
+    let start = Instant::now();
+    let picture = render_view(&scene, &settings, view)?;
+    let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
+    let path = match &args.common.output {
+        Some(path) => path.clone(),
+        None => Path::new("out").join(format!("{name}-{label}.png")),
+    };
+    save_atomically(&path, |tmp| picture.image.save_with_format(tmp, image::ImageFormat::Png))?;
+    Ok(format!(
+        "{name}: view {label}, {}x{}, {:.3} s -> {}\n{name}: scale: {}\n",
+        settings.width,
+        settings.height,
+        start.elapsed().as_secs_f64(),
+        path.display(),
+        picture.scale
+    ))
+}
+
+/// The example's options `args` (without the program name) with `--side-by-side` and its value taken out.
+fn without_side_by_side(args: &[OsString]) -> Vec<OsString> {
+    let mut out = Vec::new();
+    let mut skip_value = false;
+    for arg in args {
+        if std::mem::take(&mut skip_value) {
+            continue;
+        }
+        match arg.to_str() {
+            Some("--side-by-side") => skip_value = true,
+            Some(a) if a.starts_with("--side-by-side=") => {}
+            _ => out.push(arg.clone()),
+        }
+    }
+    out
+}
+
+/// `--side-by-side`: renders the example `name` with its options `args` (as given on the command line,
+/// without the program name) and again with the options `alternative` (split at white space) added after
+/// them, where they win; writes A | B | difference to `--output` or `out/NAME-side-by-side.png` and returns
+/// the lines to print.
+pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str) -> Result<String> {
+    let base = without_side_by_side(args);
+    let alt: Vec<OsString> = alternative.split_whitespace().map(OsString::from).collect();
+    let parse = |extra: &[OsString]| -> Result<Cli<E>> {
+        let argv = std::iter::once(OsString::from(name)).chain(base.iter().cloned()).chain(extra.iter().cloned());
+        let matches = Cli::<E>::command_named(name)
+            .args_override_self(true)
+            .try_get_matches_from(argv)
+            .and_then(|m| <Cli<E> as clap::FromArgMatches>::from_arg_matches(&m));
+        matches.map_err(|e| Error::parameter("--side-by-side", alternative, e.to_string().lines().next().unwrap_or("")))
+    };
+    let (a, b) = (parse(&[])?, parse(&alt)?);
+    let words = |args: &[OsString]| args.iter().map(|a| a.to_string_lossy()).collect::<Vec<_>>().join(" ");
+    let base_text = if base.is_empty() { "(its defaults)".to_string() } else { words(&base) };
+    let panel = |label: &str, args: &Cli<E>, options: &str| -> Result<Panel> {
+        let (frame, stats) = args.render()?;
+        let secs = stats.elapsed.as_secs_f64();
+        let rays = stats.counters.total() as f64 * 1e-6;
+        Ok(Panel {
+            image: frame.to_rgb8(),
+            caption: format!("{label}: {name} {options}\n{secs:.2} s, {rays:.2} M rays"),
+        })
+    };
+    let pa = panel("A", &a, &base_text)?;
+    let pb = panel("B", &b, &format!("{base_text} + {alternative}"))?;
+    let (picture, diff) = a_b_difference(pa, pb).map_err(|_| {
+        Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
+    })?;
+    let path = a.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}-side-by-side.png")));
+    save_atomically(&path, |tmp| picture.save_with_format(tmp, image::ImageFormat::Png))?;
+    Ok(format!(
+        "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",
+        picture.width(),
+        picture.height(),
+        path.display()
+    ))
+}

@@ -1,0 +1,250 @@
+//! An example: its own options and how they become a scene ([`Example`]), and the whole command line of
+//! one ([`Cli`]): parsing, the render settings, the scene prepared as the options say, and the render.
+
+use super::options::CommonArgs;
+use crate::lesson::environment;
+use crate::lesson::error::Result;
+use crate::lesson::frame::Frame;
+use crate::lesson::photon_map::PhotonMap;
+use crate::lesson::render::{RenderSettings, RenderStats, render, thread_pool};
+use crate::lesson::scene::Scene;
+use crate::lesson::spectral::SpectralMode;
+use crate::lesson::tone_mapping::Film;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// An example: its own options (a `clap::Args` struct) and how they turn into a scene. The options every
+/// example shares ([`CommonArgs`]) and the command itself come from [`Cli`]; an example states only what is
+/// its own:
+///
+/// ```no_run
+/// use lecture6::prelude::*;
+///
+/// /// A red ball.
+/// #[derive(clap::Args, Clone, Debug)]
+/// pub struct Options {
+///     /// The ball's radius.
+///     #[arg(long, default_value_t = 10.0)]
+///     radius: f32,
+/// }
+///
+/// impl Example for Options {
+///     const DEFAULT_SPP: u32 = 4;
+///
+///     fn scene(&self) -> Result<Scene> {
+///         let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 10.0, -50.0), Vector::ZERO, 60.0));
+///         scene.lights.push(PointLight::new(Vector::new(-30.0, 60.0, -40.0), Color::WHITE, 5000.0));
+///         scene.add(Node::new(Sphere::new(Vector::ZERO, self.radius), Lambert::new(Color::new(0.8, 0.1, 0.1))));
+///         Ok(scene)
+///     }
+/// }
+///
+/// fn main() -> ExitCode {
+///     run::<Options>()
+/// }
+/// ```
+pub trait Example: clap::Args + Clone + Send + Sync + 'static {
+    /// Samples per pixel when `--spp` is not given.
+    const DEFAULT_SPP: u32;
+    /// Builds the scene the options describe. Bad files or values are errors, not panics.
+    fn scene(&self) -> Result<Scene>;
+    /// Builds the scene as [`Example::scene`] does, and sets the render settings that the scene decides
+    /// where the common options leave them open (a scene file's frame size and anti-aliasing). By default
+    /// the settings are the options'.
+    fn scene_and_settings(&self, _common: &CommonArgs, _settings: &mut RenderSettings) -> Result<Scene> {
+        self.scene()
+    }
+}
+
+// The whole command line of an example: its own options, then the ones every example shares. (A plain
+// comment: a doc comment here would be every example's `--help` description; each example's own is its
+// `Options` doc comment.)
+#[derive(clap::Parser, Clone, Debug)]
+#[command(version)]
+pub struct Cli<E: Example> {
+    #[command(flatten)]
+    pub example: E,
+    #[command(flatten)]
+    pub common: CommonArgs,
+}
+
+impl<E: Example> Cli<E> {
+    /// The example's command, named `name` (its binary), its `--help` showing the example's own `--spp`
+    /// default. Every option that takes a value takes a negative number too (`--ior -1` reaches the
+    /// example's own check, which says why it is wrong, instead of being taken for an unknown option).
+    pub fn command_named(name: &str) -> clap::Command {
+        let spp_help = |arg: clap::Arg| {
+            let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
+            arg.help(format!("{help} [default: {}]", E::DEFAULT_SPP))
+        };
+        <Cli<E> as clap::CommandFactory>::command()
+            .name(name.to_string())
+            .bin_name(name.to_string())
+            .mut_arg("spp", spp_help)
+            .mut_args(|arg| {
+                let takes_value = arg.get_action().takes_values();
+                arg.allow_negative_numbers(takes_value)
+            })
+    }
+
+    /// Parses the options `args` (without the program name) as the example's binary would.
+    pub fn parse_args<I, T>(name: &str, args: I) -> std::result::Result<Cli<E>, clap::Error>
+    where
+        I: IntoIterator<Item = T>,
+        T: Into<std::ffi::OsString> + Clone,
+    {
+        let argv = std::iter::once(std::ffi::OsString::from(name)).chain(args.into_iter().map(Into::into));
+        let matches = Self::command_named(name).try_get_matches_from(argv)?;
+        <Cli<E> as clap::FromArgMatches>::from_arg_matches(&matches)
+    }
+
+    /// The render settings the options ask for.
+    pub fn settings(&self) -> RenderSettings {
+        let c = &self.common;
+        RenderSettings {
+            width: c.width.unwrap_or(640),
+            height: c.height.unwrap_or(480),
+            spp: c.spp.unwrap_or(E::DEFAULT_SPP),
+            threads: c.threads,
+            seed: c.seed,
+            progress: !c.quiet,
+            wavelengths: c.wavelengths.unwrap_or(RenderSettings::default().wavelengths),
+            spectral: c.spectral.unwrap_or_default(),
+            adaptive_aa: c.adaptive_aa,
+            max_sample: c.clamp_sample,
+        }
+    }
+
+    /// The scene and the render settings exactly as the render uses them: the options' settings, with what
+    /// the scene decides where they leave it open (a scene file's frame size and anti-aliasing), the photon
+    /// map built, and no progress bar. The instruments (`--trace-pixel`, `--view`, the viewer) start here.
+    pub fn prepare(&self) -> Result<(Scene, RenderSettings)> {
+        let mut settings = RenderSettings { progress: false, ..self.settings() };
+        settings.check()?;
+        let scene = self.prepare_scene_and_settings(&mut settings)?;
+        settings.check()?;
+        Ok((scene, settings))
+    }
+
+    /// Builds the example's scene as the options say, ready to render: the scene's own settings overridden
+    /// by the common options, and its caustic photon map built (in parallel, on `--threads` threads) if it
+    /// needs one.
+    pub fn prepare_scene(&self) -> Result<Scene> {
+        self.prepare_scene_and_settings(&mut self.settings())
+    }
+
+    /// [`Cli::prepare_scene`], letting the scene set what the options leave open in `settings` (see
+    /// [`Example::scene_and_settings`]).
+    pub fn prepare_scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
+        let mut scene = self.scene_and_settings(settings)?;
+        self.build_photon_map(&mut scene)?;
+        Ok(scene)
+    }
+
+    /// The example's scene with the common options applied and checked, and the settings it decides; the
+    /// photon map is not built yet.
+    pub(super) fn scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
+        let common = &self.common;
+        let mut scene = self.example.scene_and_settings(common, settings)?;
+        if let Some(depth) = common.max_depth {
+            scene.max_depth = depth;
+        }
+        if let Some(path) = &common.env {
+            scene.environment = Some(environment::load_with_layout(path, common.env_layout)?);
+        }
+        if common.exhaustive {
+            scene.min_ray_weight = 0.0;
+        }
+        if let Some(axis) = common.fov_axis {
+            let default = RenderSettings::default();
+            scene.camera = scene.camera.with_fov_axis(axis, default.width as f32 / default.height as f32);
+        }
+        scene.check()?;
+        scene.relative_to_camera();
+        common.photons.apply(&mut scene.photons);
+        scene.photons.check()?;
+        Ok(scene)
+    }
+
+    /// Builds the scene's caustic photon map, if it asks for one.
+    fn build_photon_map(&self, scene: &mut Scene) -> Result<()> {
+        if scene.photons.count > 0 {
+            let map = thread_pool(self.common.threads)?.install(|| PhotonMap::build(scene, self.common.seed))?;
+            scene.photon_map = map.map(Arc::new);
+        }
+        Ok(())
+    }
+
+    /// Builds and renders the example's scene as the options say (the path both `main` and the tests use).
+    pub fn render(&self) -> Result<(Frame, RenderStats)> {
+        self.render_checked(|_, _| Ok(())).map(|(frame, stats, _)| (frame, stats))
+    }
+
+    /// [`Cli::render`], calling `check` with the scene and the settings once they are known and before any
+    /// tracing (the photon map included): `run` checks there that the reference fits and says which
+    /// options change nothing. Returns the settings it rendered with too.
+    pub(super) fn render_checked(
+        &self,
+        check: impl FnOnce(&Scene, &RenderSettings) -> Result<()>,
+    ) -> Result<(Frame, RenderStats, RenderSettings)> {
+        let mut settings = self.settings();
+        settings.check()?;
+        self.film().check()?;
+        let mut scene = self.scene_and_settings(&mut settings)?;
+        settings.check()?;
+        check(&scene, &settings)?;
+        self.build_photon_map(&mut scene)?;
+        let (frame, stats) = render(&scene, &settings)?;
+        Ok((frame, stats, settings))
+    }
+
+    /// The options given on the command line that change nothing in `scene`: caustic options in a scene
+    /// without a photon map, dispersion options in a scene without dispersive materials. Each as one note.
+    pub fn options_without_effect(&self, scene: &Scene) -> Vec<String> {
+        let (c, p) = (&self.common, &self.common.photons);
+        let mut notes = Vec::new();
+        let photon_options = given(&[
+            ("--photons", p.photons.is_some()),
+            ("--k", p.k.is_some()),
+            ("--radius", p.radius.is_some()),
+            ("--show-photons", p.show_photons),
+        ]);
+        if !photon_options.is_empty() && !scene.casts_caustics() {
+            notes.push(no_effect(&photon_options, "no mirror or glass in this scene casts caustics from a light"));
+        } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
+            notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());
+        }
+        let dispersion_options =
+            given(&[("--wavelengths", c.wavelengths.is_some()), ("--spectral", c.spectral.is_some())]);
+        if !dispersion_options.is_empty() && !scene.is_dispersive() {
+            notes.push(no_effect(
+                &dispersion_options,
+                "nothing in this scene is dispersive, so it is traced once in white light",
+            ));
+        } else if c.wavelengths.is_some() && c.spectral == Some(SpectralMode::Sampled) {
+            notes.push("--wavelengths changes nothing with --spectral sampled: every sample has its own band".into());
+        }
+        notes
+    }
+
+    /// What happens to the rendered light before it is written: `--exposure` and `--tonemap`.
+    pub fn film(&self) -> Film {
+        Film { exposure: self.common.exposure, tone_map: self.common.tonemap }
+    }
+
+    /// Where the picture of the example called `name` goes.
+    pub fn output_path(&self, name: &str) -> PathBuf {
+        self.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}.png")))
+    }
+}
+
+/// The names of the options that were given, from (name, given) pairs.
+fn given<'a>(options: &[(&'a str, bool)]) -> Vec<&'a str> {
+    options.iter().filter(|(_, given)| *given).map(|(name, _)| *name).collect()
+}
+
+/// The note that `options` change nothing, and why.
+fn no_effect(options: &[&str], why: &str) -> String {
+    let verb = if options.len() == 1 { "changes" } else { "change" };
+    format!("{} {verb} nothing here: {why}", options.join(", "))
+}

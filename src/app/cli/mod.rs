@@ -1,0 +1,16 @@
+//! The command line every example shares, and the one function that runs an example end to end:
+//! parse the options, build the scene, render, write the picture, compare it with a reference if asked,
+//! and print one summary line. The regression tests go through [`Cli::render`], the same path.
+//!
+//! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
+//! unknown options, whose message is put on one line too), never a panic.
+
+pub mod commands;
+mod example;
+mod help;
+mod options;
+mod run;
+
+pub use example::{Cli, Example};
+pub use options::{CommonArgs, PhotonArgs, whole_number};
+pub use run::{one_line, run};

@@ -1,0 +1,177 @@
+//! The options every example shares (`--width`, `--spp`, `--output`, `--compare`, ...) and the caustic
+//! options, as clap reads them; an example's own options come first in its `--help`, these after them.
+
+use crate::instruments::debug_view::DebugView;
+use crate::instruments::ray_tree::{PixelPos, TraceFormat};
+use crate::lesson::camera::FovAxis;
+use crate::lesson::environment::CubemapLayout;
+use crate::lesson::photon_map::PhotonSettings;
+use crate::lesson::render::{MAX_SPP, MAX_THREADS};
+use crate::lesson::spectral::{MAX_WAVELENGTHS, SpectralMode};
+use crate::lesson::tone_mapping::ToneMap;
+use clap::builder::RangedI64ValueParser;
+use std::path::PathBuf;
+
+/// The help heading of the options every example shares (set on each option, so that an example's own
+/// options, listed after them, keep the plain "Options" heading).
+const COMMON: &str = "Common options";
+
+/// The help heading of the options that change only scenes with dispersive materials.
+pub(super) const DISPERSION: &str = "Dispersion (scenes with dispersive glass only)";
+/// The heading of the options that change how the picture is exposed and framed.
+const PICTURE: &str = "Exposure and framing";
+
+/// What the help of an option whose default the scene sets says until the scene is known (see
+/// [`help_command`], which puts the example's own default there).
+pub(super) const SCENE_DEFAULT: &str = "[default: the scene's own]";
+
+/// A parser for a whole number in `range`, whose error names the range: `--spp -1` says "-1 is not in
+/// 1..=65536" (with every option allowed to take negative numbers, see [`super::Cli::command_named`]).
+pub fn whole_number<T>(range: std::ops::RangeInclusive<i64>) -> RangedI64ValueParser<T>
+where
+    T: TryFrom<i64> + Clone + Send + Sync + 'static,
+    <T as TryFrom<i64>>::Error: std::error::Error + Send + Sync + 'static,
+{
+    RangedI64ValueParser::<T>::new().range(range)
+}
+
+// Options every example accepts. (A plain comment: a doc comment here would become every example's `--help`
+// description, which is its `Options` doc comment.)
+#[derive(clap::Args, Clone, Debug)]
+pub struct CommonArgs {
+    /// Image width in pixels. [default: 640, or a scene file's own]
+    #[arg(long, value_parser = whole_number::<u32>(1..=u32::MAX as i64), help_heading = COMMON)]
+    pub width: Option<u32>,
+    /// Image height in pixels. [default: 480, or a scene file's own]
+    #[arg(long, value_parser = whole_number::<u32>(1..=u32::MAX as i64), help_heading = COMMON)]
+    pub height: Option<u32>,
+    /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
+    /// grid, any other count N-rooks stratification.
+    #[arg(long, value_parser = whole_number::<u32>(1..=MAX_SPP as i64), help_heading = COMMON)]
+    pub spp: Option<u32>,
+    /// The course's adaptive anti-aliasing: one sample through each pixel's centre, then four more in every
+    /// pixel that differs from a neighbour by more than 0.1 (needs --spp 1).
+    #[arg(long, help_heading = COMMON)]
+    pub adaptive_aa: bool,
+    /// Worker threads [default: all cores]. The picture is the same for any count.
+    #[arg(long, value_parser = whole_number::<usize>(1..=MAX_THREADS as i64), help_heading = COMMON)]
+    pub threads: Option<usize>,
+    /// Maximum ray depth (the slides' MAX_RAY_DEPTH): deeper rays return black. [default: the scene's own]
+    #[arg(long, value_parser = whole_number::<u32>(0..=u32::MAX as i64), help_heading = COMMON)]
+    pub max_depth: Option<u32>,
+    /// Trace every ray down to the maximum depth. By default a ray too weak to change its pixel by a whole
+    /// 8-bit level (its weight, the product of the multipliers, blends and Fresnel factors along its path, is
+    /// below the finest sRGB step) is not traced: adaptive ray-tree depth control.
+    #[arg(long, help_heading = COMMON)]
+    pub exhaustive: bool,
+    /// Seed of every random choice; the same seed gives the same picture, byte for byte.
+    #[arg(long, default_value_t = 1, help_heading = COMMON)]
+    pub seed: u64,
+    /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
+    /// [default: out/EXAMPLE.png]
+    #[arg(long, short, help_heading = COMMON)]
+    pub output: Option<PathBuf>,
+    /// Print nothing but errors: no progress bar, no summary.
+    #[arg(long, short, help_heading = COMMON)]
+    pub quiet: bool,
+    /// Compare the picture with a reference (checked before the render): print RMSE, PSNR, the largest
+    /// difference and whether it is within the regression tests' tolerance, and write a heat map of the
+    /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). An 8-bit reference
+    /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too.
+    #[arg(long, value_name = "REFERENCE", help_heading = COMMON)]
+    pub compare: Option<PathBuf>,
+    /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
+    /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
+    /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
+    #[arg(long, value_name = "FILE|FOLDER", help_heading = COMMON)]
+    pub env: Option<PathBuf>,
+    /// How the faces of an `--env` cube-map folder are oriented: `opengl`, the default, is the layout of
+    /// skyboxes made for OpenGL and Direct3D and of the workbook's own `textures/sky_cubemap`; `course` is the
+    /// course's cube maps, whose negz face is turned by 180°.
+    #[arg(long, value_enum, default_value_t = CubemapLayout::OpenGl, help_heading = COMMON)]
+    pub env_layout: CubemapLayout,
+    /// Wavelength passes K (the slide's method): the frame is traced K times, once per band of the
+    /// spectrum, and the passes are added with the bands' colours. [default: 8]
+    #[arg(long, value_parser = whole_number::<u32>(1..=MAX_WAVELENGTHS as i64), help_heading = DISPERSION)]
+    pub wavelengths: Option<u32>,
+    /// How the wavelengths are traced: `passes` (K wavelength passes, the slide's method) or `sampled` (one
+    /// pass; every anti-aliasing sample carries its own band of the spectrum). [default: passes]
+    #[arg(long, value_enum, help_heading = DISPERSION)]
+    pub spectral: Option<SpectralMode>,
+    #[command(flatten)]
+    pub photons: PhotonArgs,
+    /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
+    /// start, direction, what it hits, the shader and layer that sent it, its weight, its colour and why it
+    /// stopped, and how the colours add up to the pixel's.
+    #[arg(long, value_name = "X,Y", help_heading = COMMON)]
+    pub trace_pixel: Option<PixelPos>,
+    /// Which camera ray of the pixel --trace-pixel shows (numbered from 0).
+    #[arg(long, default_value_t = 0, value_name = "N", help_heading = COMMON)]
+    pub trace_sample: u32,
+    /// How --trace-pixel prints the tree: `text` (indented) or `json`.
+    #[arg(long, value_enum, default_value_t = TraceFormat::Text, help_heading = COMMON)]
+    pub trace_format: TraceFormat,
+    /// Write a false-colour debug view instead of the shaded picture (to --output, or out/EXAMPLE-VIEW.png)
+    /// and print its scale: the normals, u/v or distance of what each pixel sees, or a heat map of the rays,
+    /// the shadow rays or the deepest ray traced per pixel.
+    #[arg(long, value_enum, help_heading = COMMON)]
+    pub view: Option<DebugView>,
+    /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
+    /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
+    #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
+    pub side_by_side: Option<String>,
+    /// Open a window that shows the picture building up, with the options as controls and a camera that
+    /// moves (needs `--features viewer`).
+    #[arg(long, help_heading = COMMON)]
+    pub window: bool,
+    /// Exposure in stops: the picture is multiplied by 2^EV before it is written (-1 halves the light). For
+    /// HDR skies that come out white.
+    #[arg(long, value_name = "EV", default_value_t = 0.0, help_heading = PICTURE)]
+    pub exposure: f32,
+    /// How light above 1 fits a PNG: clamp (the course's: white above 1) or reinhard (compresses highlights,
+    /// darker overall). EXR and HDR output keep linear light.
+    #[arg(long, value_enum, default_value_t = ToneMap::Clamp, help_heading = PICTURE)]
+    pub tonemap: ToneMap,
+    /// Scale down every sample brighter than MAX in any channel to MAX: tames fireflies (a glossy sphere
+    /// under a bright sun), at the price of bias: the clamped light is lost.
+    #[arg(long, value_name = "MAX", help_heading = PICTURE)]
+    pub clamp_sample: Option<f32>,
+    /// Which extent of the picture stays when the aspect ratio changes: diagonal (the course's: a wider
+    /// picture shows less at the top), vertical or horizontal. The picture at 640 x 480 is the same for all
+    /// three. [default: the scene's own]
+    #[arg(long, value_enum, help_heading = PICTURE)]
+    pub fov_axis: Option<FovAxis>,
+}
+
+/// The `--help` heading of the photon-mapping options (set per option: a heading set on the whole struct
+/// would also cover the options that follow it in an example's own list).
+const HEADING: &str = "Caustics (photon mapping)";
+
+// The photon-mapping options every example accepts. (A plain comment, as on `cli::CommonArgs`: a doc comment
+// here would become every example's `--help` description.)
+#[derive(clap::Args, Clone, Debug, Default)]
+pub struct PhotonArgs {
+    /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.
+    /// [default: the scene's own]
+    #[arg(long, value_name = "N", help_heading = HEADING)]
+    pub photons: Option<u32>,
+    /// How many nearest photons each caustic estimate gathers. [default: the scene's own]
+    #[arg(long, value_name = "K", help_heading = HEADING)]
+    pub k: Option<u32>,
+    /// The largest distance from a shaded point at which photons count. [default: the scene's own]
+    #[arg(long, value_name = "R", help_heading = HEADING)]
+    pub radius: Option<f32>,
+    /// Draw each stored photon as a dot instead of estimating the caustic light from them.
+    #[arg(long, help_heading = HEADING)]
+    pub show_photons: bool,
+}
+
+impl PhotonArgs {
+    /// The scene's photon settings with the options given on the command line.
+    pub fn apply(&self, settings: &mut PhotonSettings) {
+        settings.count = self.photons.unwrap_or(settings.count);
+        settings.k = self.k.unwrap_or(settings.k);
+        settings.max_radius = self.radius.or(settings.max_radius);
+        settings.show |= self.show_photons;
+    }
+}

@@ -1,0 +1,205 @@
+//! `run`, every example's `main`: parse the options, then render and write the picture (comparing it with a
+//! reference if asked) and print one summary line, or run one of the instruments the options ask for.
+
+use super::commands;
+use super::example::{Cli, Example};
+use super::help::help_command;
+use crate::instruments::compare::{self, Reference};
+use crate::lesson::error::{Error, Result};
+use crate::lesson::frame::{keeps_linear_light, save_atomically};
+use crate::lesson::render::thread_pool;
+use crate::lesson::scene::RECURSION_SAFETY_CAP;
+use crate::lesson::spectral::SpectralPlan;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// The name of the running example: its binary's file name (`fresnel`, or `hw1` for a student's copy).
+fn program_name() -> String {
+    std::env::args_os()
+        .next()
+        .and_then(|arg0| Path::new(&arg0).file_stem().map(|s| s.to_string_lossy().into_owned()))
+        .unwrap_or_else(|| "example".to_string())
+}
+
+/// Runs an example end to end (parse the options, build the scene, render, write the picture, compare it
+/// with a reference if asked, print one summary line): the whole `main` of every example. The example's
+/// name, which names its default output `out/<name>.png`, is its binary's.
+pub fn run<E: Example>() -> ExitCode {
+    let name = program_name();
+    let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
+        Ok(args) => args,
+        // --help shows the defaults the example's scene sets; --help and --version print to stdout and succeed.
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelp => {
+            let argv = std::iter::once(std::ffi::OsString::from(&name)).chain(argv);
+            match help_command::<E>(&name).try_get_matches_from(argv) {
+                Err(help) => help.exit(),
+                Ok(_) => e.exit(),
+            }
+        }
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            eprintln!("{name}: {}", one_line(&e.to_string()));
+            return ExitCode::from(2);
+        }
+    };
+    if args.common.window {
+        return open_window(&name, args, argv);
+    }
+    // Everything runs on `--threads` threads: the scene's loading and the picture's encoding are parallel
+    // too (the render builds its own pool of the same size).
+    match thread_pool(args.common.threads).and_then(|pool| pool.install(|| run_parsed(&name, &args))) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("{name}: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// `--window`: the live viewer, with the options as given on the command line.
+#[cfg(feature = "viewer")]
+fn open_window<E: Example>(name: &str, args: Cli<E>, argv: Vec<std::ffi::OsString>) -> ExitCode {
+    crate::instruments::viewer::run(name, args, argv)
+}
+
+/// `--window` in a build without the viewer: say how to get it.
+#[cfg(not(feature = "viewer"))]
+fn open_window<E: Example>(name: &str, _args: Cli<E>, _argv: Vec<std::ffi::OsString>) -> ExitCode {
+    eprintln!("{name}: --window needs the viewer: cargo run --release --features viewer --example {name} -- --window");
+    ExitCode::from(2)
+}
+
+/// A clap error message on one line: its lines joined, without the usage and the pointer to --help.
+pub fn one_line(message: &str) -> String {
+    let keep = |l: &&str| !(l.is_empty() || l.starts_with("Usage:") || l.starts_with("For more information"));
+    message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
+}
+
+/// Fails unless writing the picture to `output` (and its heat map to `heat_map`) leaves the reference
+/// `reference` as it is: `-o REF.png --compare REF.png` would overwrite the reference with the render and
+/// report a perfect match.
+fn check_not_the_reference(reference: &Path, output: &Path, heat_map: &Path) -> Result<()> {
+    let same_file = |a: &Path, b: &Path| matches!((resolved(a), resolved(b)), (Some(a), Some(b)) if a == b);
+    for (what, path) in [("the picture", output), ("the heat map", heat_map)] {
+        if same_file(reference, path) {
+            return Err(Error::file(
+                "refusing to write over the reference",
+                reference,
+                format!("{what} would go to {}; write the render elsewhere with -o", path.display()),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The absolute path a file would have once written, links followed: each component of the path that
+/// exists is resolved as the file system has it, the rest (a folder `save` would create) as written.
+fn resolved(path: &Path) -> Option<PathBuf> {
+    let mut resolved = PathBuf::new();
+    for component in std::path::absolute(path).ok()?.components() {
+        match component {
+            std::path::Component::ParentDir => {
+                resolved.pop();
+            }
+            std::path::Component::CurDir => {}
+            part => {
+                resolved.push(part);
+                if let Ok(real) = std::fs::canonicalize(&resolved) {
+                    resolved = real;
+                }
+            }
+        }
+    }
+    Some(resolved)
+}
+
+fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
+    if let Some(pixel) = args.common.trace_pixel {
+        print!("{}", commands::trace_pixel(name, args, pixel)?);
+        return Ok(());
+    }
+    if let Some(alternative) = &args.common.side_by_side {
+        let given: Vec<_> = std::env::args_os().skip(1).collect();
+        print!("{}", commands::side_by_side::<E>(name, &given, alternative)?);
+        return Ok(());
+    }
+    if let Some(view) = args.common.view {
+        print!("{}", commands::write_view(name, args, view)?);
+        return Ok(());
+    }
+    let output = args.output_path(name);
+    let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
+    let heat_path = output.with_file_name(format!("{stem}-diff.png"));
+    // The reference is read, and checked against the output paths, before anything is rendered.
+    let reference = match &args.common.compare {
+        Some(path) => {
+            check_not_the_reference(path, &output, &heat_path)?;
+            Some((path, Reference::load(path)?))
+        }
+        None => None,
+    };
+    let quiet = args.common.quiet;
+    let (frame, stats, settings) = args.render_checked(|scene, settings| {
+        if let Some((path, reference)) = &reference {
+            reference.check_size(path, settings.width, settings.height)?;
+        }
+        if !quiet {
+            for note in args.options_without_effect(scene) {
+                eprintln!("{name}: note: {note}");
+            }
+        }
+        Ok(())
+    })?;
+    // The picture as written: exposed, and tone mapped for an 8-bit file; the comparison sees the same.
+    let frame = args.film().develop(frame, keeps_linear_light(&output));
+    frame.save(&output)?;
+    if !args.common.quiet {
+        let rays = stats.counters.total();
+        let secs = stats.elapsed.as_secs_f64();
+        let spectral = match &stats.spectral {
+            SpectralPlan::White => String::new(),
+            plan => format!(" ({plan})"),
+        };
+        println!(
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
+            name,
+            settings.width,
+            settings.height,
+            settings.spp,
+            if settings.adaptive_aa { " + adaptive AA" } else { "" },
+            spectral,
+            secs,
+            stats.threads,
+            rays as f64 * 1e-6,
+            rays as f64 * 1e-6 / secs.max(1e-9),
+            output.display()
+        );
+        if stats.counters.capped_rays > 0 {
+            println!(
+                "{}: {} ray(s) bounced past the safety cap of {} and returned black: without a depth limit, facing \
+                 mirrors recurse until the stack overflows; that is why Reflection v0.2 adds MAX_RAY_DEPTH",
+                name, stats.counters.capped_rays, RECURSION_SAFETY_CAP
+            );
+        }
+        if let Some(p) = &stats.photons {
+            let trace = p.trace_time.as_secs_f64();
+            println!(
+                "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), grid \
+                 built in {:.3} s",
+                name,
+                p.emitted,
+                p.stored,
+                trace,
+                p.emitted as f64 * 1e-6 / trace.max(1e-9),
+                p.build_time.as_secs_f64()
+            );
+        }
+    }
+    if let Some((path, reference)) = &reference {
+        let comparison = compare::compare(&frame, reference)?;
+        save_atomically(&heat_path, |tmp| comparison.heat_map.save_with_format(tmp, image::ImageFormat::Png))?;
+        println!("compared with {}: {comparison}; heat map -> {}", path.display(), heat_path.display());
+    }
+    Ok(())
+}
