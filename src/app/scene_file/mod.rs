@@ -43,6 +43,7 @@ mod reader;
 pub mod values;
 
 use crate::lesson::error::{Error, Result};
+use crate::lesson::input;
 use crate::lesson::scene::Scene;
 use loader::Loader;
 use std::path::Path;
@@ -66,8 +67,17 @@ pub struct SceneFile {
     pub warnings: Vec<String>,
 }
 
+/// The largest scene file read: 16 MiB, thousands of times the course's largest. It is read whole, so a
+/// larger file (a sparse file of gigabytes, say) is refused from its size before anything is read.
+pub const MAX_SCENE_BYTES: u64 = 16 << 20;
+
 /// The course keeps at most 32 layers of a Layered shader (and so does the workbook's).
 pub(super) const COURSE_MAX_LAYERS: usize = 32;
+
+/// How deep Layered shaders may nest (a Layered among the layers of a Layered, and so on). Loading and
+/// shading both recurse once per level, so a chain of thousands would overflow the stack; no scene needs
+/// more than a few levels.
+pub(super) const MAX_LAYERED_NESTING: usize = 32;
 
 /// The elements of later lectures, which the workbook does not render, and what they are.
 pub(super) const UNSUPPORTED: [(&str, &str); 8] = [
@@ -130,7 +140,7 @@ pub(super) fn fill_group(class: &str) -> usize {
 /// Loads the scene file at `path`. Errors are one line naming the file and the line; warnings go to
 /// [`SceneFile::warnings`].
 pub fn load(path: &Path, options: &LoadOptions) -> Result<SceneFile> {
-    let bytes = std::fs::read(path).map_err(|e| Error::file("cannot read scene", path, e))?;
+    let bytes = input::read_capped(path, "cannot read scene", "a scene file", MAX_SCENE_BYTES)?;
     let text = String::from_utf8_lossy(&bytes);
     let mut loader = Loader::new(path, options);
     let mut syntax_warnings = Vec::new();

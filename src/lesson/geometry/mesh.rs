@@ -2,10 +2,10 @@
 //! mesh read from a Wavefront OBJ file, in its canonical form; a node's transform places it anywhere, and
 //! several nodes can share one mesh (instancing).
 //!
-//! - Loading: tobj; polygons are cut into triangles in their own plane by ear clipping (see
-//!   [`polygon`]), so non-convex faces keep their shape. Triangles with a zero area or a non-finite vertex are dropped
-//!   (they cannot be hit and have no normal), so an empty or degenerate file gives an empty mesh, never a
-//!   NaN.
+//! - Loading: tobj, from a regular file of at most [`MAX_OBJ_BYTES`]; polygons are cut into triangles in
+//!   their own plane by ear clipping (see [`polygon`]), so non-convex faces keep their shape. Triangles
+//!   with a zero area or a non-finite vertex are dropped (they cannot be hit and have no normal), so an
+//!   empty or degenerate file gives an empty mesh, never a NaN.
 //! - Shading: smooth with the file's vertex normals; a file without normals is faceted, as the course renders
 //!   it, unless it is loaded with `auto_smooth` (the course's `autoSmooth`, the examples' `--smooth`), which
 //!   sums the area-weighted face normals around each vertex (the course sums unit face normals, unweighted:
@@ -25,6 +25,7 @@ pub use super::triangle4::intersect_triangle;
 use super::triangle4::{LANES, ShearedRay, Triangle4};
 use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::lesson::error::{Error, Result};
+use crate::lesson::input;
 use crate::lesson::math::{Vector, gamma};
 use crate::lesson::ray::Ray;
 use std::path::Path;
@@ -48,6 +49,11 @@ pub struct Mesh {
     /// lists them) faces away from the ray, for every ray: the course's `backfaceCulling`.
     pub backface_culling: bool,
 }
+
+/// The largest OBJ file read: 128 MiB, over two million triangles. The file is read whole and the mesh
+/// built from it takes several times its size in memory, so a larger file is refused from its size before
+/// anything is read.
+pub const MAX_OBJ_BYTES: u64 = 128 << 20;
 
 /// Extensions of image files, which are refused as meshes with a message saying so.
 const IMAGE_EXTENSIONS: [&str; 8] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr", "tga", "gif"];
@@ -183,14 +189,11 @@ impl Mesh {
     /// course's `autoSmooth`, the examples' `--smooth`), smooth vertex normals are computed for it.
     pub fn load_auto_smooth(path: &Path, auto_smooth: bool) -> Result<Mesh> {
         let fail = |reason: String| Error::file("cannot read mesh", path, reason);
-        if path.is_dir() {
-            return Err(fail("it is a folder, not an OBJ file".into()));
-        }
         let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
         if IMAGE_EXTENSIONS.contains(&ext.as_str()) {
             return Err(fail(format!("it is an image (.{ext}), not an OBJ file")));
         }
-        let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
+        let bytes = input::read_capped(path, "cannot read mesh", "an OBJ file", MAX_OBJ_BYTES)?;
         let options =
             tobj::LoadOptions { triangulate: false, single_index: false, ignore_points: true, ignore_lines: true };
         let mut rest: &[u8] = &bytes;
