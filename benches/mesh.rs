@@ -235,8 +235,9 @@ fn main() -> std::process::ExitCode {
             let root = Path::new(env!("CARGO_MANIFEST_DIR"));
             let fine = root.join("target").join("teapot-100k.obj");
             if !fine.exists() {
-                let write = |tmp: &Path| {
-                    std::fs::write(tmp, lecture6::app::assets::teapot::obj(40)).map_err(image::ImageError::IoError)
+                let write = |file: &mut std::io::BufWriter<_>| {
+                    std::io::Write::write_all(file, lecture6::app::assets::teapot::obj(40).as_bytes())
+                        .map_err(image::ImageError::IoError)
                 };
                 if let Err(e) = lecture6::lesson::frame::save_atomically(&fine, write) {
                     eprintln!("mesh: error: {e}");

@@ -174,7 +174,9 @@ fn main() -> ExitCode {
     let entries = every_example!(render_all)(&extra, &dir);
     let index = dir.join("index.html");
     let html = page(&entries, &extra);
-    match save_atomically(&index, |tmp| std::fs::write(tmp, &html).map_err(image::ImageError::IoError)) {
+    match save_atomically(&index, |file| {
+        std::io::Write::write_all(file, html.as_bytes()).map_err(image::ImageError::IoError)
+    }) {
         Ok(()) => {
             println!("gallery -> {}", index.display());
             ExitCode::SUCCESS

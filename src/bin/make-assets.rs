@@ -21,19 +21,21 @@ fn write_all(dir: &Path) -> Result<()> {
     for asset in ASSETS {
         let path = dir.join(asset.name);
         let img = (asset.draw)();
-        save_atomically(&path, |tmp| img.save_with_format(tmp, image::ImageFormat::Png))?;
+        save_atomically(&path, |file| img.write_to(file, image::ImageFormat::Png))?;
         println!("{} ({}x{})", path.display(), img.width(), img.height());
     }
     for asset in HDR_ASSETS {
         let path = dir.join(asset.name);
         let img = (asset.draw)();
-        save_atomically(&path, |tmp| img.save_with_format(tmp, image::ImageFormat::Hdr))?;
+        save_atomically(&path, |file| img.write_to(file, image::ImageFormat::Hdr))?;
         println!("{} ({}x{}, linear HDR)", path.display(), img.width(), img.height());
     }
     for mesh in MESHES {
         let path = dir.join(mesh.name);
         let text = (mesh.write)();
-        save_atomically(&path, |tmp| std::fs::write(tmp, &text).map_err(image::ImageError::IoError))?;
+        save_atomically(&path, |file| {
+            std::io::Write::write_all(file, text.as_bytes()).map_err(image::ImageError::IoError)
+        })?;
         println!("{} ({} bytes)", path.display(), text.len());
     }
     Ok(())

@@ -6,6 +6,7 @@
 //! and, for the pass/fail rule and the heat map, as the 8-bit sRGB picture it would have been written as.
 
 use crate::instruments::side_by_side::{Panel, compose};
+use crate::lesson::bitmap::{ImageFile, PixelCharge};
 use crate::lesson::color::srgb8_to_linear_table;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
@@ -175,14 +176,21 @@ pub enum Reference {
 impl Reference {
     /// Reads a reference picture: `.exr` and `.hdr` as linear floats, anything else as 8-bit sRGB.
     pub fn load(path: &Path) -> Result<Reference> {
-        let image = image::open(path).map_err(|e| Error::file("cannot read reference image", path, e))?;
-        Ok(if crate::lesson::frame::keeps_linear_light(path) {
+        Ok(Reference::decode(ImageFile::open(path)?, path)?.0)
+    }
+
+    /// Decodes the reference picture at `path`, whose header has been read (see [`Reference::load`]): the
+    /// reference and its share of the pixel budget, to be held as long as the reference is.
+    pub fn decode(file: ImageFile, path: &Path) -> Result<(Reference, PixelCharge)> {
+        let (image, charge) = file.decode()?;
+        let reference = if crate::lesson::frame::keeps_linear_light(path) {
             let img = image.into_rgb32f();
             let pixels = img.pixels().map(|p| crate::lesson::color::Color::new(p[0], p[1], p[2])).collect();
             Reference::Linear(Frame { width: img.width(), height: img.height(), pixels })
         } else {
             Reference::Srgb8(image.into_rgb8())
-        })
+        };
+        Ok((reference, charge))
     }
 
     /// Width and height in pixels.
@@ -203,16 +211,21 @@ impl Reference {
 
     /// Fails, naming the reference file, unless a picture of `width` x `height` can be compared with it.
     pub fn check_size(&self, path: &Path, width: u32, height: u32) -> Result<()> {
-        let (w, h) = self.size();
-        if (w, h) != (width, height) {
-            return Err(Error::file(
-                "cannot compare with",
-                path,
-                format!("it is {w}x{h} and the render would be {width}x{height} (set --width {w} --height {h})"),
-            ));
-        }
-        Ok(())
+        check_reference_size(path, self.size(), width, height)
     }
+}
+
+/// Fails, naming the reference file at `path` whose picture is `size`, unless a picture of `width` x
+/// `height` can be compared with it (checked from the header, before the reference is decoded).
+pub fn check_reference_size(path: &Path, (w, h): (u32, u32), width: u32, height: u32) -> Result<()> {
+    if (w, h) != (width, height) {
+        return Err(Error::file(
+            "cannot compare with",
+            path,
+            format!("it is {w}x{h} and the render would be {width}x{height} (set --width {w} --height {h})"),
+        ));
+    }
+    Ok(())
 }
 
 /// How a linear frame differs from a linear reference, in linear light.

@@ -45,7 +45,7 @@
 //! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
 //! matters), and a degenerate direction returns a colour of the image rather than failing.
 
-use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
+use crate::lesson::bitmap::{Bitmap, Filter, ImageFile, Wrap};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::math::Vector;
@@ -112,18 +112,19 @@ impl SphericalEnvironment {
         SphericalEnvironment { bitmap, filter: Filter::Bilinear }
     }
 
-    /// Loads an equirectangular image file; one that is not twice as wide as high is refused.
+    /// Loads an equirectangular image file; one that is not twice as wide as high is refused (from its
+    /// header, before it is decoded).
     pub fn load(path: &Path) -> Result<SphericalEnvironment> {
-        let bitmap = Bitmap::load(path)?;
-        let (w, h) = (bitmap.width(), bitmap.height());
-        if w != 2 * h {
+        let file = ImageFile::open(path)?;
+        let (w, h) = file.dimensions();
+        if w as u64 != 2 * h as u64 {
             return Err(Error::file(
                 "cannot use environment",
                 path,
                 format!("an equirectangular image must be twice as wide as high (2:1), this one is {w}x{h}"),
             ));
         }
-        Ok(SphericalEnvironment::new(Arc::new(bitmap)))
+        Ok(SphericalEnvironment::new(Arc::new(Bitmap::from_file(file)?)))
     }
 
     pub fn with_filter(self, filter: Filter) -> SphericalEnvironment {
@@ -240,12 +241,12 @@ impl CubemapEnvironment {
     }
 
     /// Loads the six faces from the folder `dir`, in `layout`. A missing or unreadable face is an error
-    /// naming its file; so are faces that are not square or not all of one size.
+    /// naming its file (a face that is a folder or a FIFO is reported as such); so are faces that are not
+    /// square or not all of one size, which is checked from the six headers before any face is decoded.
     pub fn load_layout(dir: &Path, layout: CubemapLayout) -> Result<CubemapEnvironment> {
         let entries: Vec<std::path::PathBuf> = std::fs::read_dir(dir)
             .map_err(|e| Error::file("cannot read cube map folder", dir, e))?
             .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.is_file())
             .collect();
         let find = |face: CubeFace| {
             let named = |ext: &str| {
@@ -262,18 +263,13 @@ impl CubemapEnvironment {
                 )
             })
         };
-        let load_face = |face: CubeFace| {
-            let path = find(face)?;
-            let bitmap = Bitmap::load(path)?;
-            let turned = layout == CubemapLayout::Course && face == CubeFace::NegZ;
-            Ok::<_, Error>((path.clone(), if turned { half_turn(&bitmap) } else { bitmap }))
-        };
-        // The six files are decoded in parallel; an error names the first failing face in the order of `ALL`.
-        let loaded: Vec<_> = CubeFace::ALL.par_iter().map(|&face| load_face(face)).collect();
-        let faces: [_; 6] = loaded.into_iter().collect::<Result<Vec<_>>>()?.try_into().expect("six faces");
-        let size = faces[0].1.width();
-        for (path, bitmap) in &faces {
-            let (w, h) = (bitmap.width(), bitmap.height());
+        // The headers are read one face after the other, in the order of `ALL`, so that an error (a face
+        // over the pixel budget) always names the same face.
+        let paths: Vec<&std::path::PathBuf> = CubeFace::ALL.into_iter().map(find).collect::<Result<_>>()?;
+        let files: Vec<ImageFile> = paths.iter().map(|path| ImageFile::open(path)).collect::<Result<_>>()?;
+        let (size, _) = files[0].dimensions();
+        for (path, file) in paths.iter().zip(&files) {
+            let (w, h) = file.dimensions();
             if w != h || w != size {
                 return Err(Error::file(
                     "cannot use cube face",
@@ -284,7 +280,16 @@ impl CubemapEnvironment {
                 ));
             }
         }
-        Ok(CubemapEnvironment::new(faces.map(|(_, bitmap)| Arc::new(bitmap))))
+        // The six files are decoded in parallel; an error names the first failing face in the order of `ALL`.
+        let decode = |(face, file): (CubeFace, ImageFile)| {
+            let bitmap = Bitmap::from_file(file)?;
+            let turned = layout == CubemapLayout::Course && face == CubeFace::NegZ;
+            Ok::<_, Error>(Arc::new(if turned { half_turn(&bitmap) } else { bitmap }))
+        };
+        let faces: Vec<(CubeFace, ImageFile)> = CubeFace::ALL.into_iter().zip(files).collect();
+        let decoded: Vec<Result<Arc<Bitmap>>> = faces.into_par_iter().map(decode).collect();
+        let faces: [_; 6] = decoded.into_iter().collect::<Result<Vec<_>>>()?.try_into().expect("six faces");
+        Ok(CubemapEnvironment::new(faces))
     }
 
     pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {

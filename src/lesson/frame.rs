@@ -4,7 +4,9 @@
 use crate::lesson::color::{Color, to_srgb8};
 use crate::lesson::error::{Error, Result};
 use rayon::prelude::*;
+use std::io::BufWriter;
 use std::path::Path;
+use tempfile::NamedTempFile;
 
 /// A rendered picture in linear light, rows from the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -51,7 +53,7 @@ impl Frame {
 
     /// Writes the frame: `.png` as 8-bit sRGB, `.exr` and `.hdr` as linear floats. The image goes to a
     /// temporary file beside the target first and is renamed over it only when complete, so a failure never
-    /// destroys an earlier picture.
+    /// destroys an earlier picture (see [`save_atomically`]).
     pub fn save(&self, path: &Path) -> Result<()> {
         let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
         let format = match ext.as_deref() {
@@ -60,9 +62,9 @@ impl Frame {
             Some("hdr") => image::ImageFormat::Hdr,
             _ => return Err(Error::file("cannot write image", path, "the name must end in .png, .exr or .hdr")),
         };
-        save_atomically(path, |tmp| match format {
-            image::ImageFormat::Png => self.to_rgb8().save_with_format(tmp, format),
-            _ => self.to_rgb32f().save_with_format(tmp, format),
+        save_atomically(path, |file| match format {
+            image::ImageFormat::Png => self.to_rgb8().write_to(file, format),
+            _ => self.to_rgb32f().write_to(file, format),
         })
     }
 }
@@ -74,19 +76,32 @@ pub fn keeps_linear_light(path: &Path) -> bool {
     matches!(ext.as_deref(), Some("exr" | "hdr"))
 }
 
-/// Writes a file through `write`, which is given a temporary path beside `path`; the temporary file is
-/// renamed over `path` only when it is complete, so a failure never destroys an earlier file.
-pub fn save_atomically(path: &Path, write: impl FnOnce(&Path) -> image::ImageResult<()>) -> Result<()> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| Error::file("cannot create the folder for", path, e))?;
-    }
+/// Writes a file through `write`, which is given a temporary file in the folder of `path` (made if needed):
+/// a new file with a random name, created exclusively, so that it is never a file that exists already nor a
+/// link planted at a name someone could guess. It is renamed over `path` only when it is complete, so a
+/// failure never destroys an earlier file (the temporary file is removed).
+pub fn save_atomically(
+    path: &Path,
+    write: impl FnOnce(&mut BufWriter<NamedTempFile>) -> image::ImageResult<()>,
+) -> Result<()> {
+    let fail = |e: &dyn std::fmt::Display| Error::file("cannot write image", path, e);
+    let dir = match path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).map_err(|e| Error::file("cannot create the folder for", path, e))?;
+            dir
+        }
+        None => Path::new("."),
+    };
     let name = path.file_name().map(|n| n.to_string_lossy()).unwrap_or_default();
-    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    let result = write(&tmp)
-        .map_err(|e| Error::file("cannot write image", path, e))
-        .and_then(|()| std::fs::rename(&tmp, path).map_err(|e| Error::file("cannot write image", path, e)));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    // Readable as any new file is (0o666 less the umask), not only by its owner as temporary files are.
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let mut file = BufWriter::new(builder.tempfile_in(dir).map_err(|e| fail(&e))?);
+    write(&mut file).map_err(|e| fail(&e))?;
+    let file = file.into_inner().map_err(|e| fail(e.error()))?;
+    file.persist(path).map_err(|e| fail(&e.error))?;
+    Ok(())
 }

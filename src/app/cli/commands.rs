@@ -9,6 +9,7 @@ use crate::instruments::ray_tree::{self, PixelPos};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::save_atomically;
+use crate::lesson::input;
 use clap::ValueEnum;
 use std::ffi::OsString;
 use std::path::Path;
@@ -26,14 +27,16 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
 /// the line to print (where it went, and its scale).
 pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
     let (scene, settings) = args.prepare()?;
-    let start = Instant::now();
-    let picture = render_view(&scene, &settings, view)?;
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
     let path = match &args.common.output {
         Some(path) => path.clone(),
         None => Path::new("out").join(format!("{name}-{label}.png")),
     };
-    save_atomically(&path, |tmp| picture.image.save_with_format(tmp, image::ImageFormat::Png))?;
+    // The scene's files have been read: the view may not replace one of them.
+    input::check_not_an_input(&path, "the debug view")?;
+    let start = Instant::now();
+    let picture = render_view(&scene, &settings, view)?;
+    save_atomically(&path, |file| picture.image.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: view {label}, {}x{}, {:.3} s -> {}\n{name}: scale: {}\n",
         settings.width,
@@ -94,7 +97,8 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
         Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
     })?;
     let path = a.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}-side-by-side.png")));
-    save_atomically(&path, |tmp| picture.save_with_format(tmp, image::ImageFormat::Png))?;
+    input::check_not_an_input(&path, "the side-by-side picture")?;
+    save_atomically(&path, |file| picture.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",
         picture.width(),

@@ -5,8 +5,10 @@ use super::commands;
 use super::example::{Cli, Example};
 use super::help::help_command;
 use crate::instruments::compare::{self, Reference};
-use crate::lesson::error::{Error, Result};
+use crate::lesson::bitmap::ImageFile;
+use crate::lesson::error::{Error, Result, printable};
 use crate::lesson::frame::{keeps_linear_light, save_atomically};
+use crate::lesson::input;
 use crate::lesson::render::thread_pool;
 use crate::lesson::scene::RECURSION_SAFETY_CAP;
 use crate::lesson::spectral::SpectralPlan;
@@ -70,10 +72,11 @@ fn open_window<E: Example>(name: &str, _args: Cli<E>, _argv: Vec<std::ffi::OsStr
     ExitCode::from(2)
 }
 
-/// A clap error message on one line: its lines joined, without the usage and the pointer to --help.
+/// A clap error message on one line: its lines joined, without the usage and the pointer to --help, and
+/// what it echoes of the arguments [`printable`].
 pub fn one_line(message: &str) -> String {
     let keep = |l: &&str| !(l.is_empty() || l.starts_with("Usage:") || l.starts_with("For more information"));
-    message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" ")
+    printable(&message.lines().map(str::trim).filter(keep).collect::<Vec<_>>().join(" "))
 }
 
 /// Fails unless writing the picture to `output` (and its heat map to `heat_map`) leaves the reference
@@ -131,18 +134,24 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     let output = args.output_path(name);
     let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
     let heat_path = output.with_file_name(format!("{stem}-diff.png"));
-    // The reference is read, and checked against the output paths, before anything is rendered.
-    let reference = match &args.common.compare {
+    // The reference's header is read, and its path checked against the outputs', before anything is
+    // rendered; it is decoded once the render's size is known to match it, before anything is traced.
+    let reference_file = match &args.common.compare {
         Some(path) => {
             check_not_the_reference(path, &output, &heat_path)?;
-            Some((path, Reference::load(path)?))
+            Some((path, ImageFile::open(path)?))
         }
         None => None,
     };
+    let mut reference = None;
     let quiet = args.common.quiet;
     let (frame, stats, settings) = args.render_checked(|scene, settings| {
-        if let Some((path, reference)) = &reference {
-            reference.check_size(path, settings.width, settings.height)?;
+        // Every input has been read by now (the scene's files, the reference): no output may replace one.
+        input::check_not_an_input(&output, "the picture")?;
+        if let Some((path, file)) = reference_file {
+            compare::check_reference_size(path, file.dimensions(), settings.width, settings.height)?;
+            input::check_not_an_input(&heat_path, "the heat map")?;
+            reference = Some((path, Reference::decode(file, path)?));
         }
         if !quiet {
             for note in args.options_without_effect(scene) {
@@ -196,9 +205,9 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             );
         }
     }
-    if let Some((path, reference)) = &reference {
+    if let Some((path, (reference, _charge))) = &reference {
         let comparison = compare::compare(&frame, reference)?;
-        save_atomically(&heat_path, |tmp| comparison.heat_map.save_with_format(tmp, image::ImageFormat::Png))?;
+        save_atomically(&heat_path, |file| comparison.heat_map.write_to(file, image::ImageFormat::Png))?;
         println!("compared with {}: {comparison}; heat map -> {}", path.display(), heat_path.display());
     }
     Ok(())
