@@ -51,7 +51,7 @@ const CELLS_PER_PHOTON: f32 = 2.0;
 
 /// Cells across the maximum radius: the smallest ball an estimate searches (see [`SEARCH_FRACTIONS`]) is
 /// then a cell wide, and larger balls read few photons outside them.
-const CELLS_PER_RADIUS: f32 = 4.0;
+pub(super) const CELLS_PER_RADIUS: f32 = 4.0;
 
 impl PhotonGrid {
     pub(super) fn new(photons: &[StoredPhoton], max_radius: f32) -> PhotonGrid {
@@ -61,7 +61,8 @@ impl PhotonGrid {
         // A zero radius finds only photons at the point itself, with cells of any width.
         let mut cell = if max_radius > 0.0 { max_radius / CELLS_PER_RADIUS } else { f32::MIN_POSITIVE };
         let dims = loop {
-            let dims = [0, 1, 2].map(|k| (extent[k] / cell) as usize + 1);
+            // At most `max_cells` along an axis before the cast, so that no count overflows.
+            let dims = [0, 1, 2].map(|k| (extent[k] / cell).min(max_cells) as usize + 1);
             let cells = dims.iter().map(|&d| d as f32).product::<f32>();
             if cells <= max_cells {
                 break dims;

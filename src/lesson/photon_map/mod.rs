@@ -62,7 +62,7 @@ use crate::lesson::geometry::Aabb;
 use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
 use crate::lesson::spectral::fit_to_gamut;
-use grid::{Found, PhotonGrid, SEARCH_FRACTIONS};
+use grid::{CELLS_PER_RADIUS, Found, PhotonGrid, SEARCH_FRACTIONS};
 use std::cell::RefCell;
 use std::f32::consts::PI;
 use std::num::NonZeroUsize;
@@ -186,7 +186,24 @@ impl PhotonMap {
         let start = Instant::now();
         let photons = trace_photons(&scene.with_node_tree(), &emitter, seed);
         let trace_time = start.elapsed();
-        let max_radius = settings.max_radius.unwrap_or_else(|| default_radius(scene, &photons));
+        // A radius below the scene's floor cannot tell photons apart: refused when asked for, and the default
+        // raised to it (only in a tiny scene far from the camera).
+        let floor = min_radius(scene, &photons);
+        let max_radius = match settings.max_radius {
+            Some(r) if r < floor => {
+                return Err(Error::parameter(
+                    "photon radius",
+                    format!("{r:e}"),
+                    format!(
+                        "below {floor:.3e}, the smallest this scene can resolve: its coordinates are 32-bit \
+                         floats spaced about {:.1e} apart at its size",
+                        floor / CELLS_PER_RADIUS
+                    ),
+                ));
+            }
+            Some(r) => r,
+            None => default_radius(scene, &photons).max(floor),
+        };
         let mut map = PhotonMap::new(photons, settings.k, max_radius, settings.show)?;
         map.stats.emitted = settings.count;
         map.stats.trace_time = trace_time;
@@ -269,15 +286,26 @@ impl PhotonMap {
     }
 }
 
+/// The box around the scene's bounded objects (or, if none is bounded, around the photons).
+fn scene_box(scene: &Scene, photons: &[StoredPhoton]) -> Aabb {
+    let corners: Vec<Vector> = scene.nodes.iter().filter_map(|n| n.bounds()).flat_map(|b| [b.min, b.max]).collect();
+    if corners.is_empty() { Aabb::from_points(photons.iter().map(|p| p.position)) } else { Aabb::from_points(corners) }
+}
+
+/// The smallest maximum radius a scene can use: four times (the grid's cells per radius) the spacing of
+/// 32-bit floats at the scene's largest coordinate (its box's, see [`default_radius`]), so that a cell of the
+/// photon grid is at least as wide as the rounding of the positions it sorts. A smaller radius could not
+/// tell photons apart; `--radius 1e-20` is refused instead of building a grid of no use.
+pub fn min_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
+    let bounds = scene_box(scene, photons);
+    let largest = bounds.min.abs().max(bounds.max.abs()).max_element();
+    if largest.is_finite() { CELLS_PER_RADIUS * largest * f32::EPSILON } else { 0.0 }
+}
+
 /// The default maximum radius: 1/100 of the diagonal of the box around the scene's bounded objects (or, if
 /// none is bounded, around the photons).
 pub fn default_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
-    let corners: Vec<Vector> = scene.nodes.iter().filter_map(|n| n.bounds()).flat_map(|b| [b.min, b.max]).collect();
-    let bounds = if corners.is_empty() {
-        Aabb::from_points(photons.iter().map(|p| p.position))
-    } else {
-        Aabb::from_points(corners)
-    };
+    let bounds = scene_box(scene, photons);
     let diagonal = (bounds.max - bounds.min).length();
     // A box of no size holds at most one point: any radius finds it.
     if diagonal.is_finite() && diagonal > 0.0 { diagonal / 100.0 } else { 1.0 }
