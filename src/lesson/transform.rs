@@ -81,10 +81,12 @@ impl Transform {
         if !(det.is_finite() && scale.is_finite() && self.forward.translation.is_finite())
             || det.abs() <= gamma(3) * scale * scale * scale
         {
+            let m = &self.forward.matrix3;
+            let [x, y, z] = [0, 1, 2].map(|i| m.row(i));
             return Err(Error::parameter(
                 "transform",
-                format!("{:?}", self.forward),
-                "it is singular (a zero scale?) or not finite",
+                format!("(rows {x}, {y}, {z}; translation {})", self.forward.translation),
+                "it cannot be undone (a zero scale?) or holds a number too large for 32-bit floats",
             ));
         }
         Ok(())

@@ -3,7 +3,8 @@
 
 use super::loader::{Loader, Settings};
 use super::parse::{Block, Property};
-use super::reader::Reader;
+use super::reader::{MAX_COORDINATE, Reader, checked_triple};
+use super::values::is_space;
 use super::*;
 use crate::lesson::camera::{Camera, FovAxis};
 use crate::lesson::color::{Color, linear_to_srgb, srgb_to_linear};
@@ -104,18 +105,19 @@ impl Loader<'_> {
     pub(super) fn geometry(&mut self, r: &mut Reader) -> Result<Arc<dyn Geometry>> {
         Ok(match r.block.class.as_str() {
             "Plane" => {
-                let y = r.float(self, "y", 0.0, -1e120, 1e120)?;
-                let limit = r.float(self, "limit", 1e99, -1e120, 1e120)?;
+                let y = r.length(self, "y", 0.0)?;
+                // A limit beyond the 32-bit floats (the default 1e99) becomes infinity: no limit.
+                let limit = r.number(self, "limit", 1e99, -1e120, 1e120)?;
                 Arc::new(Plane::new(y as f32, limit as f32))
             }
             "Sphere" => {
                 let center = r.vector(self, "O")?.unwrap_or(Vector::ZERO);
-                let radius = r.float(self, "R", 1.0, -1e120, 1e120)?;
+                let radius = r.length(self, "R", 1.0)?;
                 Arc::new(Sphere::new(center, radius as f32))
             }
             "Cube" => {
                 let center = r.vector(self, "O")?.unwrap_or(Vector::ZERO);
-                let half_side = r.float(self, "halfSide", 0.5, -1e120, 1e120)?;
+                let half_side = r.length(self, "halfSide", 0.5)?;
                 Arc::new(Cube::new(center, half_side as f32))
             }
             _ => {
@@ -126,6 +128,16 @@ impl Loader<'_> {
                 let auto_smooth = r.boolean(self, "autoSmooth", false);
                 r.boolean(self, "useKDTree", true); // the acceleration structure: no effect on the picture
                 let mesh = Mesh::load_auto_smooth(&path, auto_smooth).map_err(|e| self.file_error(p, e))?;
+                if mesh.triangle_count() == 0 {
+                    return Err(self.error(
+                        p.line,
+                        format!(
+                            "the mesh '{}' has no triangles to render (no faces, or only faces of no area or with \
+                             a vertex that is not a finite number)",
+                            path.display()
+                        ),
+                    ));
+                }
                 let mesh = if faceted { mesh.with_faceted(true) } else { mesh };
                 Arc::new(mesh.with_backface_culling(culling))
             }
@@ -174,6 +186,20 @@ impl Loader<'_> {
                 self.error(b.line, format!("the Layered shader `{}` contains itself", b.name.as_deref().unwrap_or("")))
             );
         }
+        if self.building.len() == MAX_LAYERED_NESTING {
+            let outer = &blocks[self.building[0]];
+            return Err(self.error(
+                b.line,
+                format!(
+                    "`{}` would be level {} of shaders nested in the Layered shader `{}` (line {}): Layered \
+                     shaders nest at most {MAX_LAYERED_NESTING} deep",
+                    b.name.as_deref().unwrap_or(""),
+                    MAX_LAYERED_NESTING + 1,
+                    outer.name.as_deref().unwrap_or(""),
+                    outer.line
+                ),
+            ));
+        }
         self.building.push(i);
         let mut r = Reader::new(b);
         let shader: Arc<dyn Shader> = match b.class.as_str() {
@@ -191,12 +217,7 @@ impl Loader<'_> {
                 let multiplier = r.float(self, "multiplier", 0.99, -1e120, 1e120)? as f32;
                 let glossiness = r.float(self, "glossiness", 1.0, 0.0, 1.0)?;
                 let samples = r.int(self, "numSamples", 32, 1, i32::MAX as i64)?;
-                if glossiness == 0.0 {
-                    return Err(self.error(
-                        r.line_of("glossiness"),
-                        "Refl `glossiness` 0 is degenerate (an infinitely wide cone)",
-                    ));
-                }
+                // Glossiness 0 (an unbounded cone) is refused by `Reflection::glossy`, as on the command line.
                 if glossiness == 1.0 {
                     Arc::new(Reflection::new(multiplier))
                 } else {
@@ -242,21 +263,23 @@ impl Loader<'_> {
         let mut layered = Layered::new();
         let syntax = "expected `layer SHADER (r, g, b) [TEXTURE]`";
         for p in b.properties.iter().filter(|p| p.name == "layer") {
-            let (first, rest) = p.value.split_once(|c: char| c.is_ascii_whitespace()).unwrap_or((&p.value, ""));
+            let (first, rest) = p.value.split_once(is_space).unwrap_or((&p.value, ""));
             let shader_name = first.replace(',', "");
-            let mut rest = rest.trim_matches(|c: char| c.is_ascii_whitespace());
+            let mut rest = rest.trim_matches(is_space);
             if rest.is_empty() {
                 return Err(self.error(p.line, syntax));
             }
             let mut texture_name = None;
             if !rest.ends_with(')') {
-                let (before, last) = rest.rsplit_once(|c: char| c.is_ascii_whitespace()).unwrap_or(("", rest));
+                let (before, last) = rest.rsplit_once(is_space).unwrap_or(("", rest));
                 texture_name = Some(last.replace(',', ""));
                 rest = before;
             }
             let blend = values::triple(rest)
                 .ok_or_else(|| self.error(p.line, format!("{syntax}: the colour is not three numbers")))?;
-            let blend = Color::new(blend[0] as f32, blend[1] as f32, blend[2] as f32);
+            let [r, g, b] = checked_triple(blend, None)
+                .map_err(|reason| self.error(p.line, format!("the layer's colour `{rest}`: {reason}")))?;
+            let blend = Color::new(r, g, b);
             let index = *self
                 .names
                 .get(&(Namespace::Shader, shader_name.clone()))
@@ -339,7 +362,12 @@ impl Loader<'_> {
             any = true;
             let v = values::triple(&p.value)
                 .ok_or_else(|| self.error(p.line, format!("`{}`: expected three double values", p.name)))?;
-            let v = Vector::new(v[0] as f32, v[1] as f32, v[2] as f32);
+            // A translation is a position; scales and angles need only be finite (the product of the scales
+            // is checked with the whole transform below).
+            let bound = (p.name == "translate").then_some(MAX_COORDINATE);
+            let v = checked_triple(v, bound)
+                .map_err(|reason| self.error(p.line, format!("`{} {}`: {reason}", p.name, p.value)))?;
+            let v = Vector::from_array(v);
             match p.name.as_str() {
                 "scale" => {
                     if v.x == 0.0 || v.y == 0.0 || v.z == 0.0 || !v.is_finite() {

@@ -8,7 +8,7 @@ use super::*;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::Color;
 use crate::lesson::environment::Environment;
-use crate::lesson::error::{Error, Result};
+use crate::lesson::error::{Error, Result, printable};
 use crate::lesson::geometry::Geometry;
 use crate::lesson::light::PointLight;
 use crate::lesson::math::Vector;
@@ -69,11 +69,11 @@ impl<'a> Loader<'a> {
     }
 
     pub(super) fn warn(&mut self, line: usize, message: impl std::fmt::Display) {
-        self.warnings.push(format!("{}:{line}: warning: {message}", self.path.display()));
+        self.warnings.push(printable(&format!("{}:{line}: warning: {message}", self.path.display())));
     }
 
     pub(super) fn note(&mut self, line: usize, message: impl std::fmt::Display) {
-        self.warnings.push(format!("{}:{line}: note: {message}", self.path.display()));
+        self.warnings.push(printable(&format!("{}:{line}: note: {message}", self.path.display())));
     }
 
     pub(super) fn run(mut self, blocks: &[Block]) -> Result<SceneFile> {

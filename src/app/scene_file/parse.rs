@@ -1,6 +1,8 @@
 //! The lexical layer of `.qdmg` files (format spec, section 1): lines, comments, blocks and property lines,
 //! each kept with its line number.
 
+use super::values::is_space;
+
 /// The course's 25 element classes (spec 3.0).
 pub const CLASSES: [&str; 25] = [
     "GlobalSettings",
@@ -87,7 +89,7 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
             continue;
         }
         let cut = [raw.find("//"), raw.find('#')].into_iter().flatten().min().unwrap_or(raw.len());
-        let content = raw[..cut].trim_matches(|c: char| c.is_ascii_whitespace() || c == '\u{b}');
+        let content = raw[..cut].trim_matches(is_space);
         if content.is_empty() {
             continue;
         }
@@ -98,7 +100,7 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
         if content.contains("randfloat(") || content.contains("randint(") {
             return err(line, "the random-number macros randfloat() and randint() are not supported".into());
         }
-        let tokens: Vec<&str> = content.split_ascii_whitespace().collect();
+        let tokens: Vec<&str> = content.split(is_space).filter(|t| !t.is_empty()).collect();
         match &mut open {
             None => {
                 let (class, name) = match tokens[..] {
@@ -135,7 +137,7 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
                     return err(line, format!("`{}` has no value (a property line needs one)", tokens[0]));
                 }
                 let name = tokens[0];
-                let rest = content[name.len()..].trim_start_matches(|c: char| c.is_ascii_whitespace());
+                let rest = content[name.len()..].trim_start_matches(is_space);
                 let value = match rest.strip_prefix('"').and_then(|r| r.strip_suffix('"')) {
                     Some(inner) if rest.len() >= 2 => inner,
                     _ => rest,

@@ -3,10 +3,16 @@
 //! colours and vectors are three numbers with `(`, `)` and `,` read as spaces, and a bool is false only
 //! when it is exactly `off`, `false` or `0`.
 
+/// White space as the course reads it: C's `isspace`, which is Rust's ASCII white space and the vertical
+/// tab `\v` (spec 1.1).
+pub fn is_space(c: char) -> bool {
+    c.is_ascii_whitespace() || c == '\u{b}'
+}
+
 /// The leading C floating-point number of `s` and what follows it, if `s` starts with one (after white
 /// space): `5.`, `.5`, `1e-3`, `-2`, `inf`, `nan`. Hexadecimal floats are not read (no course file has one).
 pub fn leading_float(s: &str) -> Option<(f64, &str)> {
-    let t = s.trim_start_matches(|c: char| c.is_ascii_whitespace());
+    let t = s.trim_start_matches(is_space);
     let b = t.as_bytes();
     let mut i = usize::from(matches!(b.first(), Some(b'+' | b'-')));
     let lower = t[i..].to_ascii_lowercase();
@@ -42,7 +48,7 @@ pub fn leading_float(s: &str) -> Option<(f64, &str)> {
 
 /// The leading decimal integer of `s` (`12abc` is 12, `1.9` is 1, `0x10` is 0).
 pub fn leading_int(s: &str) -> Option<i64> {
-    let t = s.trim_start_matches(|c: char| c.is_ascii_whitespace());
+    let t = s.trim_start_matches(is_space);
     let b = t.as_bytes();
     let sign = usize::from(matches!(b.first(), Some(b'+' | b'-')));
     let end = sign + b[sign..].iter().take_while(|c| c.is_ascii_digit()).count();
