@@ -26,7 +26,8 @@ pub const SLIDE_GLOSSINESS: [f32; 3] = [0.95, 0.80, 0.50];
 /// Glossy reflections: spheres of glossiness 0.95, 0.80 and 0.50 on a tiled floor.
 #[derive(clap::Args, Clone, Debug)]
 pub struct Options {
-    /// Give all three spheres this glossiness (0 matte .. 1 perfect mirror) instead of 0.95, 0.80, 0.50.
+    /// Give all three spheres this glossiness instead of 0.95, 0.80, 0.50: above 0 (matte) to 1 (a perfect
+    /// mirror); 0 itself, an unbounded cone, is refused.
     #[arg(long)]
     pub glossiness: Option<f32>,
     /// Reflected rays averaged per camera ray on a glossy sphere (the slide's num_samples).

@@ -50,7 +50,7 @@ impl Environment for Recorder {
 #[test]
 fn no_glossy_ray_goes_under_the_surface() {
     for (glossiness, sampler) in
-        [(0.8, DiscSampler::Stratified), (0.3, DiscSampler::Random), (0.0, DiscSampler::Stratified)]
+        [(0.8, DiscSampler::Stratified), (0.3, DiscSampler::Random), (0.02, DiscSampler::Stratified)]
     {
         // A glossy floor seen from just above it, every camera ray going down to it: a ray that reaches the
         // sky going down can only be a reflection that went under the floor.
@@ -68,9 +68,9 @@ fn no_glossy_ray_goes_under_the_surface() {
         let [camera_rays, reflected, ..] = stats.counters.rays_by_depth;
         assert_eq!(dirs.len() as u64, reflected, "every camera ray must hit the floor");
         assert!(reflected > 0, "glossiness {glossiness}: no reflected ray at all");
-        if glossiness == 0.0 {
+        if glossiness < 0.1 {
             // Most normals tilted this far send the ray under the floor: those samples are dropped.
-            assert!(reflected < camera_rays * num_samples as u64 / 2, "glossiness 0: too few samples rejected");
+            assert!(reflected < camera_rays * num_samples as u64 / 2, "glossiness {glossiness}: too few rejected");
         }
     }
 }

@@ -67,7 +67,7 @@ fn tetrahedron() -> Mesh {
 }
 
 /// A scene with every shader: a Fresnel glass holding a second glass (nested dielectrics), a mirror box
-/// touching the floor, a glossy sphere resting on it and a fully rough one (glossiness 0), a Phong sphere, a
+/// touching the floor, a glossy sphere resting on it and an almost fully rough one (glossiness 0.02), a Phong sphere, a
 /// checkered Lambert floor, a transformed (non-uniformly scaled) glass ellipsoid, and a turned prism of
 /// dispersive flint glass.
 fn all_shaders_scene() -> Scene {
@@ -95,7 +95,7 @@ fn all_shaders_scene() -> Scene {
         ))
         .add(Node::new(
             Arc::new(Sphere::new(Vector::new(-25.0, 22.0, 20.0), 4.0)),
-            Arc::new(Reflection::glossy(Color::gray(0.8), 0.0, 2).expect("valid glossiness")),
+            Arc::new(Reflection::glossy(Color::gray(0.8), 0.02, 2).expect("valid glossiness")),
         ))
         .add(Node::new(
             Arc::new(Sphere::new(Vector::new(-25.0, 8.0, 20.0), 8.0)),

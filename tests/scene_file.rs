@@ -389,7 +389,11 @@ fn every_error_row_of_the_format_is_one_line_with_its_line_number() {
             format!("{CAMERA}BitmapTexture t {{\n file ../../textures/wood.png\n scaling 0\n}}\n"),
             "line 6: BitmapTexture `scaling` must not be 0",
         ),
-        ("zero-glossiness", format!("{CAMERA}Refl r {{\n glossiness 0\n}}\n"), "line 5: Refl `glossiness` 0"),
+        (
+            "zero-glossiness",
+            format!("{CAMERA}Refl r {{\n glossiness 0\n}}\n"),
+            "line 5: invalid glossiness 0: must be above 0",
+        ),
         ("long-value", long, "line 5: the value of `color` is longer than 255"),
         ("long-line", format!("{CAMERA}# {}\n", "x".repeat(1100)), "line 4: the line is longer than 1023"),
         ("long-name", format!("{CAMERA}Lambert {} {{\n}}\n", "n".repeat(64)), "line 4: the name is longer than 63"),

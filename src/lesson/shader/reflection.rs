@@ -73,10 +73,16 @@ impl Reflection {
     }
 
     /// A glossy mirror of colour `multiplier`, averaging `num_samples` rays per shading point. Fails on a
-    /// glossiness outside [0, 1] or a sample count of zero.
+    /// glossiness outside (0, 1] or a sample count of zero. Glossiness 0, the slide's "fully matte" end,
+    /// is refused: its cone, `tan(pi/2)`, is unbounded, so nearly every sample would go under the surface
+    /// and the surface would show the mirror ray instead.
     pub fn glossy(multiplier: impl Into<ColorSource>, glossiness: f32, num_samples: u32) -> Result<Reflection> {
-        if !(0.0..=1.0).contains(&glossiness) {
-            return Err(Error::parameter("glossiness", glossiness, "must be between 0 and 1"));
+        if !(glossiness > 0.0 && glossiness <= 1.0) {
+            return Err(Error::parameter(
+                "glossiness",
+                glossiness,
+                "must be above 0 and at most 1 (at 0 the cone, tan(pi/2), is unbounded)",
+            ));
         }
         if !(1..=MAX_GLOSSY_SAMPLES).contains(&num_samples) {
             return Err(Error::parameter(
