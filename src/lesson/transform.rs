@@ -81,11 +81,13 @@ impl Transform {
         if !(det.is_finite() && scale.is_finite() && self.forward.translation.is_finite())
             || det.abs() <= gamma(3) * scale * scale * scale
         {
+            // Numbers as `{:?}` writes them: 1e20, not twenty-one digits.
+            let v = |v: glam::Vec3A| format!("[{:?}, {:?}, {:?}]", v.x, v.y, v.z);
             let m = &self.forward.matrix3;
-            let [x, y, z] = [0, 1, 2].map(|i| m.row(i));
+            let [x, y, z] = [0, 1, 2].map(|i| v(m.row(i)));
             return Err(Error::parameter(
                 "transform",
-                format!("(rows {x}, {y}, {z}; translation {})", self.forward.translation),
+                format!("(rows {x}, {y}, {z}; translation {})", v(self.forward.translation)),
                 "it cannot be undone (a zero scale?) or holds a number too large for 32-bit floats",
             ));
         }

@@ -186,13 +186,13 @@ impl Loader<'_> {
                 self.error(b.line, format!("the Layered shader `{}` contains itself", b.name.as_deref().unwrap_or("")))
             );
         }
-        if self.building.len() == MAX_LAYERED_NESTING {
+        if b.class == "Layered" && self.building.len() == MAX_LAYERED_NESTING {
             let outer = &blocks[self.building[0]];
             return Err(self.error(
                 b.line,
                 format!(
-                    "`{}` would be level {} of shaders nested in the Layered shader `{}` (line {}): Layered \
-                     shaders nest at most {MAX_LAYERED_NESTING} deep",
+                    "`{}` would be level {} of Layered shaders nested in `{}` (line {}): Layered shaders \
+                     nest at most {MAX_LAYERED_NESTING} deep",
                     b.name.as_deref().unwrap_or(""),
                     MAX_LAYERED_NESTING + 1,
                     outer.name.as_deref().unwrap_or(""),

@@ -74,9 +74,9 @@ pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 /// The course keeps at most 32 layers of a Layered shader (and so does the workbook's).
 pub(super) const COURSE_MAX_LAYERS: usize = 32;
 
-/// How deep Layered shaders may nest (a Layered among the layers of a Layered, and so on). Loading and
-/// shading both recurse once per level, so a chain of thousands would overflow the stack; no scene needs
-/// more than a few levels.
+/// How deep Layered shaders may nest (a Layered among the layers of a Layered, and so on, 32 Layered
+/// shaders in a chain at most). Loading and shading both recurse once per level, so a chain of thousands
+/// would overflow the stack; no scene needs more than a few levels.
 pub(super) const MAX_LAYERED_NESTING: usize = 32;
 
 /// The elements of later lectures, which the workbook does not render, and what they are.
