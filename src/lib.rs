@@ -24,6 +24,7 @@
 //! | [`lesson::tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
 //! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
 //! | [`lesson::photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
+//! | [`lesson::input`], [`lesson::image_file`] | not a slide: the files a scene is read from, refused unless regular and within their caps; the pixel budget of the images a run holds |
 //! | [`lesson::sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
 //! | [`instruments::ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
 //! | [`instruments::debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |

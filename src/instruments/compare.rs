@@ -6,10 +6,10 @@
 //! and, for the pass/fail rule and the heat map, as the 8-bit sRGB picture it would have been written as.
 
 use crate::instruments::side_by_side::{Panel, compose};
-use crate::lesson::bitmap::{ImageFile, PixelCharge};
 use crate::lesson::color::srgb8_to_linear_table;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
+use crate::lesson::image_file::{ImageFile, PixelCharge};
 use std::path::Path;
 
 /// How two images of the same size differ.

@@ -45,9 +45,10 @@
 //! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
 //! matters), and a degenerate direction returns a colour of the image rather than failing.
 
-use crate::lesson::bitmap::{Bitmap, Filter, ImageFile, Wrap};
+use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
+use crate::lesson::image_file::ImageFile;
 use crate::lesson::math::Vector;
 use rayon::prelude::*;
 use std::f32::consts::{FRAC_1_PI, PI};

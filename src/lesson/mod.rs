@@ -8,6 +8,7 @@ pub mod environment;
 pub mod error;
 pub mod frame;
 pub mod geometry;
+pub mod image_file;
 pub mod input;
 pub mod light;
 pub mod math;

@@ -1,0 +1,151 @@
+//! Image files as the renderer opens them (not a slide's lesson, but what keeps a hostile image from filling
+//! the memory): the pixel budget of the images a run holds, and [`ImageFile`], a file whose size has been
+//! read from its header and taken from the budget before anything is decoded.
+//!
+//! The images held in memory at once, all of them together (textures, environments, the `--compare`
+//! reference), may have at most [`MAX_IMAGE_PIXELS`] pixels. A small file that claims a huge picture (a
+//! 250 KB PNG of 16000 x 16000 pixels) is refused at once instead of being decoded into gigabytes; a
+//! decoder that finds more than its header said is stopped by `image::Limits`. Each image in memory holds a
+//! [`PixelCharge`], given back to the budget when it is dropped. The count is kept for the whole process: a
+//! run is one process.
+
+use crate::lesson::error::{Error, Result};
+use crate::lesson::input;
+use std::fs::File;
+use std::io::{BufReader, Seek};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// The most pixels the images held in memory at once may have together: 2^26 = 67,108,864, an 8192 x 8192
+/// picture, or an 8192 x 4096 panorama with room to spare for textures. At 4 bytes a pixel for 8-bit files
+/// and 16 for floating-point ones that is 256 MiB to 1 GiB.
+pub const MAX_IMAGE_PIXELS: u64 = 1 << 26;
+
+/// The most bytes a decoder may allocate (its output included): a floating-point RGBA picture of the whole
+/// budget. A second guard, behind the header check, for a file whose decoder finds more than its header said.
+const MAX_DECODER_BYTES: u64 = MAX_IMAGE_PIXELS * 16;
+
+/// Pixels of the images held in memory now, in this process (see [`PixelCharge`]).
+static HELD_PIXELS: AtomicU64 = AtomicU64::new(0);
+
+/// A share of the pixel budget, held by an image in memory and given back when it is dropped.
+#[derive(Debug)]
+pub struct PixelCharge(u64);
+
+impl PixelCharge {
+    /// Takes `pixels` from the budget, unless that would take it past [`MAX_IMAGE_PIXELS`].
+    fn reserve(pixels: u64) -> Option<PixelCharge> {
+        let fits = |held: u64| held.checked_add(pixels).filter(|&total| total <= MAX_IMAGE_PIXELS);
+        HELD_PIXELS.fetch_update(Ordering::SeqCst, Ordering::SeqCst, fits).ok().map(|_| PixelCharge(pixels))
+    }
+
+    /// Counts `pixels` made in memory rather than read from a file: they count against the files read
+    /// after them, but are never refused.
+    pub(crate) fn count(pixels: u64) -> PixelCharge {
+        HELD_PIXELS.fetch_add(pixels, Ordering::SeqCst);
+        PixelCharge(pixels)
+    }
+}
+
+impl Clone for PixelCharge {
+    /// A copy of an image holds as many pixels again.
+    fn clone(&self) -> PixelCharge {
+        PixelCharge::count(self.0)
+    }
+}
+
+impl Drop for PixelCharge {
+    fn drop(&mut self) {
+        HELD_PIXELS.fetch_sub(self.0, Ordering::SeqCst);
+    }
+}
+
+/// The width and height a BMP file's header states, if `format` is BMP and the header can be read.
+fn bmp_header_size(mut file: &File, format: image::ImageFormat) -> Option<(i64, i64)> {
+    use std::io::Read;
+    if format != image::ImageFormat::Bmp {
+        return None;
+    }
+    let mut head = [0u8; 26];
+    file.rewind().ok()?;
+    file.read_exact(&mut head).ok()?;
+    let u16_at = |i: usize| u16::from_le_bytes([head[i], head[i + 1]]) as i64;
+    let i32_at = |i: usize| i32::from_le_bytes([head[i], head[i + 1], head[i + 2], head[i + 3]]) as i64;
+    // After the 14-byte file header: the DIB header's size, then the width and height (16-bit in the
+    // 12-byte OS/2 header, 32-bit in the others; a negative height is a picture stored top down).
+    Some(if i32_at(14) == 12 { (u16_at(18), u16_at(20)) } else { (i32_at(18), i32_at(22).abs()) })
+}
+
+/// An image file whose header has been read: its size is known and its pixels are taken from the budget
+/// ([`MAX_IMAGE_PIXELS`]), but nothing is decoded yet. [`ImageFile::decode`] reads the picture.
+#[derive(Debug)]
+pub struct ImageFile {
+    path: PathBuf,
+    file: File,
+    format: image::ImageFormat,
+    width: u32,
+    height: u32,
+    charge: PixelCharge,
+}
+
+impl ImageFile {
+    /// Opens the image file at `path` (a regular file, see [`input::open`]) and reads the size from its
+    /// header; the format is detected from its contents, or else its extension. A picture of no pixels,
+    /// or one that does not fit in what is left of the budget, is refused here.
+    pub fn open(path: &Path) -> Result<ImageFile> {
+        let (file, _) = input::open(path, "cannot open image")?;
+        let fail = |e: image::ImageError| Error::file("cannot read image", path, e);
+        let mut reader = image::ImageReader::new(BufReader::new(&file));
+        if let Ok(format) = image::ImageFormat::from_path(path) {
+            reader.set_format(format);
+        }
+        let reader = reader.with_guessed_format().map_err(|e| fail(e.into()))?;
+        let format = reader.format().ok_or_else(|| {
+            Error::file("cannot read image", path, "not an image format the renderer reads (PNG, JPEG, BMP, HDR, EXR)")
+        })?;
+        let (width, height) = reader.into_dimensions().map_err(|e| match bmp_header_size(&file, format) {
+            // The BMP decoder calls a size of zero "too large".
+            Some((w, h)) if w == 0 || h == 0 => {
+                Error::file("cannot use image", path, format!("it has no pixels ({w}x{h})"))
+            }
+            _ => fail(e),
+        })?;
+        if width == 0 || height == 0 {
+            return Err(Error::file("cannot use image", path, format!("it has no pixels ({width}x{height})")));
+        }
+        let pixels = width as u64 * height as u64;
+        let charge = PixelCharge::reserve(pixels).ok_or_else(|| {
+            let held = HELD_PIXELS.load(Ordering::SeqCst);
+            Error::file(
+                "cannot load image",
+                path,
+                format!(
+                    "it is {width}x{height} = {pixels} pixels; the images of a run may hold at most {MAX_IMAGE_PIXELS} \
+                     pixels together, and {held} are held already"
+                ),
+            )
+        })?;
+        Ok(ImageFile { path: path.to_path_buf(), file, format, width, height, charge })
+    }
+
+    /// Width and height in pixels, as the header says.
+    pub fn dimensions(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// Decodes the picture; its share of the budget comes with it, to be held as long as the picture is.
+    /// The decoder may not make a picture of another size than the header's.
+    pub fn decode(mut self) -> Result<(image::DynamicImage, PixelCharge)> {
+        let path = &self.path;
+        let fail = |e: image::ImageError| Error::file("cannot decode image", path, e);
+        self.file.rewind().map_err(|e| fail(e.into()))?;
+        let mut reader = image::ImageReader::with_format(BufReader::new(&self.file), self.format);
+        let mut limits = image::Limits::default();
+        limits.max_image_width = Some(self.width);
+        limits.max_image_height = Some(self.height);
+        limits.max_alloc = Some(MAX_DECODER_BYTES);
+        reader.limits(limits);
+        let image = reader.decode().map_err(fail)?;
+        Ok((image, self.charge))
+    }
+}
