@@ -23,7 +23,8 @@ pub struct Options {
     /// How texture coordinates outside [0, 1) wrap (both directions).
     #[arg(long, value_enum, default_value_t = Wrap::Repeat)]
     pub wrap: Wrap,
-    /// An image of your own (PNG, JPEG, BMP, HDR, EXR) to put on the spheres and the cube.
+    /// An image of your own (PNG, JPEG, BMP, HDR, EXR) to put on the spheres and the cube (the images of a
+    /// run may have 67108864 pixels together, see --env).
     #[arg(long, value_name = "FILE")]
     pub texture: Option<PathBuf>,
 }

@@ -103,7 +103,10 @@ fn bomb() -> PathBuf {
 #[test]
 fn case_2_a_decompression_bomb_is_refused_from_its_header() {
     let bomb = bomb();
-    let budget = "67108864";
+    let budget = &lecture6::lesson::image_file::MAX_IMAGE_PIXELS.to_string();
+    // The budget is stated where the images are given.
+    let help = run_bounded("bitmap_textures", &["--help"]);
+    assert!(help.stdout.matches(budget.as_str()).count() >= 3, "--texture, --env and --compare: {}", help.stdout);
     // It aborted the process as a scene file's texture, and took 3.76 GB as --texture.
     refused("bitmap_textures", &["--texture", s(&bomb)], &[s(&bomb), budget]);
     let scene = scene_with(FLOOR_TEXTURE, s(&bomb));

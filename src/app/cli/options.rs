@@ -77,12 +77,15 @@ pub struct CommonArgs {
     /// Compare the picture with a reference (checked before the render): print RMSE, PSNR, the largest
     /// difference and whether it is within the regression tests' tolerance, and write a heat map of the
     /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). An 8-bit reference
-    /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too.
+    /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too. Its size is checked
+    /// from its header; it counts towards the images' budget of 67108864 pixels (see --env).
     #[arg(long, value_name = "REFERENCE", help_heading = COMMON)]
     pub compare: Option<PathBuf>,
     /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
     /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
-    /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr).
+    /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr). The images of a run (textures, environment,
+    /// reference) may have 67108864 pixels together, 2^26 (an 8192 x 8192 picture): a file over that budget
+    /// is refused from its header, before it is decoded.
     #[arg(long, value_name = "FILE|FOLDER", help_heading = COMMON)]
     pub env: Option<PathBuf>,
     /// How the faces of an `--env` cube-map folder are oriented: `opengl`, the default, is the layout of

@@ -33,7 +33,15 @@
 //!   workbook's own extension property `layout opengl` reads an OpenGL-layout folder instead.
 //! - A missing Node `shader` skips the node with a warning; missing Node `geometry`, PointLight `pos` and
 //!   Camera `position` are errors; so are the degenerate values the course does not check (zero scales,
-//!   `glossiness 0`, BitmapTexture `scaling 0`), and a file that cannot be decoded.
+//!   `glossiness 0`, BitmapTexture `scaling 0`), a file that cannot be decoded, and a Mesh with no
+//!   triangle to render.
+//! - Numbers must be finite as the renderer's 32-bit floats, not only within the course's bounds (1e39 is
+//!   within ±1e120 and would become infinity), colours and layer blends included; positions and lengths
+//!   (positions, `O`, `R`, `halfSide`, a Plane's `y`, `translate`) stay within ±1e18, so that the renderer
+//!   can square them. A Plane's `limit` beyond the 32-bit floats means no limit, as its default 1e99 does.
+//! - Hostile files are refused: a scene file larger than [`MAX_SCENE_BYTES`], anything but a regular file
+//!   (a FIFO, `/dev/zero`) where a file is named, images over the pixel budget
+//!   ([`crate::lesson::image_file::MAX_IMAGE_PIXELS`]), Layered shaders nested more than 32 deep.
 //! - Paths are resolved against the scene file's folder; an absolute path is used as it is (an extension).
 
 mod elements;
