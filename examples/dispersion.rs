@@ -20,7 +20,7 @@
 //! Homework ideas: draw the spectrum on a diffuse wall with photons that carry a wavelength; make the
 //! sphere a brilliant-cut gem from planes; weight the passes by the Planck spectrum of a warm light.
 
-use lecture6::app::workbook::SlitEnvironment;
+use lecture6::app::scenes::dispersion::SlitEnvironment;
 use lecture6::prelude::*;
 
 /// Which glass the prism and the sphere are made of.
