@@ -8,7 +8,7 @@
 //! - [`lesson`]: the slides' code, a leaf that imports nothing from the other two;
 //! - [`instruments`]: what makes the lesson visible (the ray tree, debug views, comparisons, the progressive
 //!   renderer, the study and the viewer); they watch the renderer through the one observation hook the lesson
-//!   owns;
+//!   owns ([`lesson::observer`]);
 //! - [`app`]: the command line every example shares, the course's scene files and the workbook's files.
 //!
 //! | module | slides |
@@ -32,6 +32,7 @@
 //! | [`instruments::study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | `instruments::viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
 //! | [`app::cli`] | the command line every example shares, and the `run` that is every example's `main` |
+//! | [`app::scenes`] | the scenes examples share: the mirror room of the reflection slides, the dispersion studio |
 //! | [`app::workbook`], [`app::assets`] | the bundled textures and the sky; the generated textures and the Utah teapot |
 //! | [`app::scene_file`] | the course's `.qdmg` scene files |
 //!
@@ -49,6 +50,7 @@ pub use lesson::math::Vector;
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
     pub use crate::app::cli::{Example, run};
+    pub use crate::app::scenes;
     pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
     pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
     pub use crate::lesson::camera::{Camera, FovAxis};
@@ -67,7 +69,8 @@ pub mod prelude {
     pub use crate::lesson::sampling::DiscSampler;
     pub use crate::lesson::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
     pub use crate::lesson::shader::{
-        ColorSource, Lambert, Layered, Phong, PhotonScatter, Reflection, Refraction, Shader, fresnel_glass,
+        CausticCaster, ColorSource, Lambert, Layered, Phong, PhotonScatter, Reflection, Refraction, Shader,
+        fresnel_glass,
     };
     pub use crate::lesson::spectral::Ior;
     pub use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};

@@ -15,7 +15,6 @@ use lecture6::lesson::ray::Ray;
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::lesson::rng::Rng;
 use lecture6::lesson::scene::{Scene, TraceContext};
-use lecture6::lesson::shader::PhotonScatter;
 use lecture6::lesson::shader::{Layered, Shader, fresnel_glass};
 use lecture6::lesson::texture::{FresnelMode, Texture};
 use proptest::prelude::*;
@@ -179,14 +178,6 @@ impl Shader for Counting {
     fn shade(&self, _ray: &Ray, _info: &IntersectionInfo, _ctx: &mut TraceContext) -> Color {
         self.calls.fetch_add(1, Ordering::Relaxed);
         self.color
-    }
-
-    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
-        PhotonScatter::Absorb
-    }
-
-    fn casts_caustics(&self) -> bool {
-        false
     }
 }
 

@@ -84,8 +84,7 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
         if geometric {
             return Ok(pixels.par_iter().map(measure).collect());
         }
-        let rows =
-            (0..h).into_par_iter().map(|y| render_row(scene, settings, y, 0..w, None)).collect::<Result<Vec<_>>>()?;
+        let rows = (0..h).into_par_iter().map(|y| render_row(scene, settings, y, 0..w)).collect::<Result<Vec<_>>>()?;
         Ok(rows.iter().flatten().map(|p| Sample::Number(cost(view, &p.counters))).collect())
     })?;
     let (lo, hi) = samples.iter().fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), s| match s {

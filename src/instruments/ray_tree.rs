@@ -2,126 +2,66 @@
 //! Shader", "Fresnel" and "Glossy", made visible): every ray traced for the pixel, what it hit, which shader
 //! and layer sent it, what it brought back and why it stopped, as `--trace-pixel X,Y` prints it.
 //!
-//! Recording is switched on by putting a [`RayTree`] in [`TraceContext::recorder`]; the renderer, the light
-//! loop and the shaders report to it through [`TraceContext::record`], which does nothing (one test of an
-//! `Option`) when no tree is being recorded. A shader written by a student that reports nothing still
-//! renders and still appears in the tree, with what it returned; its colour is then shown as not broken
-//! down.
+//! A [`RayTree`] is an [`Observer`]: the renderer's core tells it every ray `raytrace` traces, the light the
+//! light loop finds and the layers a `Layered` shader shades (see [`crate::lesson::observer`]). No shader
+//! reports anything, so a student's own shader is broken down exactly as the shipped ones are.
 //!
-//! How the colours add up: a shader's colour is a sum of *terms*, each a factor times either the colour a
-//! ray it traced brought back, or light it found at the surface (ambient light, a lamp reached by a shadow
-//! ray, the photon map's caustic estimate, a highlight). A ray's share of the pixel is the product of the
-//! factors on the path from the camera (its *throughput*) times its colour; the shares of all the light
-//! terms and of the environment seen by rays that missed add up to the pixel's colour (what the tests check).
+//! How the colours add up: a shader's colour is made of *terms*, each a factor times what it gathered: the
+//! colour a ray it traced brought back, or light found at the surface (ambient light, a lamp reached by a
+//! shadow ray, the photon map's caustic estimate). The tree does not see the arithmetic a shader does with
+//! them, only what it gathered and what it returned, so it works the factors out when the shader is done:
+//!
+//! - a layer's terms count the layer's weight times (the weight is handed to `shade_layer`), and a highlight
+//!   counts as it is (the light loop adds it as it is);
+//! - every other term (rays and irradiance) takes one common factor per channel, the shader's colour less
+//!   the known terms over what those terms brought: the mirror's colour for a mirror, the diffuse colour for
+//!   a diffuse surface, a glossy mirror's colour over its sample count. For a shader that scales what it
+//!   gathers, this is exactly what it did; for one that does more (a toon shader that bands its light), it
+//!   is how its colour shares out among what it gathered;
+//! - what is left (a channel in which the shader gathered nothing but shows colour) is the shader's own
+//!   colour, a term of its own.
+//!
+//! So the shares of all the light terms and of the environment seen by rays that missed add up to the
+//! pixel's colour, whatever the shader (what the tests check).
 
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
+use crate::lesson::observer::{Light, Observer, Stop};
 use crate::lesson::ray::Ray;
-use crate::lesson::render::{PixelTrace, RenderSettings, render_pixel};
-use crate::lesson::scene::{Scene, TraceContext};
+use crate::lesson::render::{RenderSettings, render_pixel};
+use crate::lesson::scene::{Counters, Scene};
+use crate::lesson::shader::Layer;
 use std::fmt::Write;
 
-/// The last segment of a type's path, without generic arguments: `Reflection` for
-/// `lecture6::lesson::shader::reflection::Reflection`. Names shaders, textures and geometry in the ray tree.
-pub fn type_label<T: ?Sized>() -> &'static str {
-    let name = std::any::type_name::<T>();
-    let name = name.split('<').next().unwrap_or(name);
-    name.rsplit("::").next().unwrap_or(name)
-}
-
-/// What kind of ray a record is, as the shader that traced it says.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// What kind of ray a record is, seen from the surface that sent it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RayKind {
     Camera,
+    /// Sent back to the side of the surface the ray came from (a mirror's ray, a glossy sample).
     Reflection,
+    /// Sent through the surface (a refraction).
     Refraction,
-    /// Sample `index` (from 0) of the `count` rays of a glossy reflection.
-    GlossySample {
-        index: u32,
-        count: u32,
-    },
-    /// A ray from a shader that did not say what kind it is.
-    Secondary,
 }
 
 impl std::fmt::Display for RayKind {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        match self {
-            RayKind::Camera => write!(f, "camera ray"),
-            RayKind::Reflection => write!(f, "reflection"),
-            RayKind::Refraction => write!(f, "refraction"),
-            RayKind::GlossySample { index, count } => write!(f, "glossy sample {} of {count}", index + 1),
-            RayKind::Secondary => write!(f, "secondary ray"),
-        }
-    }
-}
-
-/// Why a ray was not followed further.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Stop {
-    /// It hit nothing: its colour is the environment's.
-    Missed,
-    /// It was deeper than the scene's `max_depth` (the slide's `MAX_RAY_DEPTH`): black.
-    DepthLimit,
-    /// Its weight was below the adaptive cut-off (`Scene::min_ray_weight`): black.
-    WeightCutoff,
-    /// It was deeper than the recursion safety cap: black.
-    SafetyCap,
-}
-
-impl std::fmt::Display for Stop {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
         f.write_str(match self {
-            Stop::Missed => "missed: environment colour",
-            Stop::DepthLimit => "depth limit: black",
-            Stop::WeightCutoff => "weight below the adaptive cut-off: black",
-            Stop::SafetyCap => "recursion safety cap: black",
+            RayKind::Camera => "camera ray",
+            RayKind::Reflection => "reflection",
+            RayKind::Refraction => "refraction",
         })
     }
 }
 
-/// Light a shader found at its hit point, without tracing a ray for it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum LightKind {
-    /// The scene's ambient light.
-    Ambient,
-    /// Lamp `index`, asked by a shadow ray that starts at `from` towards the lamp (`dir`); `visible` says
-    /// whether it got there.
-    Lamp { index: usize, from: Vector, dir: Vector, visible: bool },
-    /// The caustic light of the photon map.
-    Photons,
-    /// A specular highlight (Phong's) of the lamps that reach the point.
-    Highlight,
-    /// Total internal reflection in a refraction without a reflection layer: no ray, black.
-    TotalInternalReflection,
-}
-
-impl std::fmt::Display for LightKind {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        match self {
-            LightKind::Ambient => write!(f, "ambient light"),
-            LightKind::Lamp { index, from, dir, visible } => write!(
-                f,
-                "shadow ray to light {index} from {} dir {}: {}",
-                vec3(*from),
-                vec3(*dir),
-                if *visible { "reaches it" } else { "blocked" }
-            ),
-            LightKind::Photons => write!(f, "photon estimate (caustic light)"),
-            LightKind::Highlight => write!(f, "specular highlight"),
-            LightKind::TotalInternalReflection => write!(f, "total internal reflection: no refracted ray, black"),
-        }
-    }
-}
-
-/// One part of a shader's colour: `factor` times a traced ray's colour or times light found at the surface.
+/// One part of a shader's colour: `factor` times what a traced ray brought back, or times light found at the
+/// surface, or the shader's own colour.
 #[derive(Clone, Debug)]
 pub struct Term {
     pub factor: Color,
-    /// The layer of a `Layered` shader (if any) that produced the term.
+    /// The layers of `Layered` shaders (if any) that produced the term, outermost first, joined by " / ".
     pub layer: String,
     pub what: TermKind,
 }
@@ -130,10 +70,10 @@ pub struct Term {
 pub enum TermKind {
     /// The ray with this index in [`RayTree::rays`].
     Ray(usize),
-    Light {
-        kind: LightKind,
-        color: Color,
-    },
+    /// Light the light loop found.
+    Light { kind: Light, color: Color },
+    /// Colour the shader returned beyond everything it gathered, in the channels where it gathered nothing.
+    Own { color: Color },
 }
 
 /// Where a ray hit.
@@ -144,6 +84,8 @@ pub struct Hit {
     pub distance: f32,
     /// The type of the node's shader.
     pub shader: &'static str,
+    /// The surface's geometric normal there: which side a ray the shader sends goes to.
+    normal: Vector,
 }
 
 /// One traced ray.
@@ -160,8 +102,17 @@ pub struct RayRecord {
     pub stop: Option<Stop>,
     /// The colour it brought back.
     pub color: Color,
-    /// The parts of the colour of the surface it hit, as its shader reported them.
+    /// The parts of the colour of the surface it hit.
     pub terms: Vec<Term>,
+}
+
+/// The terms of one shader being run (a hit's shader, or one layer of a `Layered` one) that are still open.
+#[derive(Clone, Debug)]
+struct Scope {
+    /// The layer's label; empty for the hit's own shader.
+    label: String,
+    /// Its terms are `terms[first..]` of the ray being shaded.
+    first: usize,
 }
 
 /// The rays traced for one pixel: one tree per camera ray, in the order they were traced.
@@ -171,14 +122,10 @@ pub struct RayTree {
     /// The camera rays: sample s of the pixel is `roots[s]` (for a dispersive scene traced in K passes,
     /// sample s of pass k is `roots[k * spp + s]`).
     pub roots: Vec<usize>,
-    /// The rays being traced, innermost last.
-    open: Vec<usize>,
-    /// What the next ray traced is, as its shader announced.
-    next_kind: Option<RayKind>,
-    /// The layers of `Layered` shaders being shaded at the hit of the innermost open ray, innermost last.
-    layers: Vec<String>,
-    /// The layers being shaded at the hits of the other open rays (each ray's shader has its own).
-    outer_layers: Vec<Vec<String>>,
+    /// The rays being traced, innermost last, each with the shaders (and layers) running at its hit.
+    open: Vec<(usize, Vec<Scope>)>,
+    /// Which terms of each open ray already have their factor: `fixed[i]` for the ray `open[i]`.
+    fixed: Vec<Vec<bool>>,
 }
 
 impl RayTree {
@@ -186,119 +133,81 @@ impl RayTree {
         RayTree::default()
     }
 
+    /// The labels of the layers being shaded at the innermost open ray's hit.
     fn layer_label(&self) -> String {
-        self.layers.join(" / ")
+        let scopes = self.open.last().map_or(&[][..], |(_, scopes)| &scopes[..]);
+        scopes.iter().filter(|s| !s.label.is_empty()).map(|s| s.label.as_str()).collect::<Vec<_>>().join(" / ")
     }
 
-    fn current(&mut self) -> Option<&mut RayRecord> {
-        self.open.last().map(|&i| &mut self.rays[i])
-    }
-
-    /// `raytrace` starts tracing `ray`.
-    pub fn begin(&mut self, ray: &Ray) {
-        let id = self.rays.len();
-        let kind =
-            self.next_kind.take().unwrap_or(if self.open.is_empty() { RayKind::Camera } else { RayKind::Secondary });
+    /// Adds a term to the innermost open ray, its factor already known (`fixed`) or still to be worked out.
+    fn push_term(&mut self, what: TermKind, fixed: bool) {
         let layer = self.layer_label();
-        let sent_by = match self.current() {
-            None => String::new(),
-            Some(parent) => {
-                let shader = parent.hit.as_ref().map_or("", |h| h.shader);
-                if layer.is_empty() { shader.to_string() } else { format!("{shader}, {layer}") }
-            }
+        if let (Some(&(id, _)), Some(flags)) = (self.open.last(), self.fixed.last_mut()) {
+            self.rays[id].terms.push(Term { factor: Color::WHITE, layer, what });
+            flags.push(fixed);
+        }
+    }
+
+    /// What term `term` brought, before its factor.
+    fn value(&self, term: &Term) -> Color {
+        match term.what {
+            TermKind::Ray(child) => self.rays[child].color,
+            TermKind::Light { color, .. } | TermKind::Own { color } => color,
+        }
+    }
+
+    /// The shader whose terms are `terms[first..]` of the innermost open ray returned `color`: works out the
+    /// factor of the terms that have none yet (see the module documentation), adds the shader's own colour
+    /// if some is left, and marks them all as known.
+    fn settle(&mut self, first: usize, color: Color) {
+        let (Some(&(id, _)), Some(fixed)) = (self.open.last(), self.fixed.last()) else {
+            return;
         };
-        match self.current() {
-            None => self.roots.push(id),
-            Some(parent) => parent.terms.push(Term { factor: Color::WHITE, layer, what: TermKind::Ray(id) }),
-        }
-        self.rays.push(RayRecord {
-            depth: ray.depth,
-            kind,
-            start: ray.start,
-            dir: ray.dir,
-            weight: ray.weight,
-            sent_by,
-            hit: None,
-            stop: None,
-            color: Color::BLACK,
-            terms: Vec::new(),
-        });
-        self.open.push(id);
-        self.outer_layers.push(std::mem::take(&mut self.layers));
-    }
-
-    /// The ray being traced hit `node` of `scene`; its shader is about to run.
-    pub fn hit(&mut self, scene: &Scene, node: &Node, info: &IntersectionInfo) {
-        let name = scene.node_name(node);
-        if let Some(ray) = self.current() {
-            ray.hit = Some(Hit { node: name, distance: info.distance, shader: node.shader.name() });
-        }
-    }
-
-    /// The ray being traced is finished: it brought back `color` (and stopped for `stop`, if it did).
-    pub fn end(&mut self, color: Color, stop: Option<Stop>) {
-        if let Some(id) = self.open.pop() {
-            self.rays[id].color = color;
-            self.rays[id].stop = stop;
-            self.layers = self.outer_layers.pop().unwrap_or_default();
-        }
-    }
-
-    /// The next ray the shader traces is of this kind.
-    pub fn next_ray(&mut self, kind: RayKind) {
-        self.next_kind = Some(kind);
-    }
-
-    /// The shader found light `color` of this kind at its hit point.
-    pub fn light(&mut self, kind: LightKind, color: Color) {
-        let layer = self.layer_label();
-        if let Some(ray) = self.current() {
-            ray.terms.push(Term { factor: Color::WHITE, layer, what: TermKind::Light { kind, color } });
-        }
-    }
-
-    /// How many terms the shader of the ray being traced has reported so far: a mark for [`RayTree::scale`].
-    pub fn mark(&self) -> usize {
-        self.open.last().map_or(0, |&i| self.rays[i].terms.len())
-    }
-
-    /// The shader multiplies everything it reported since `mark` by `factor`.
-    pub fn scale(&mut self, mark: usize, factor: Color) {
-        if let Some(ray) = self.current() {
-            for term in ray.terms.iter_mut().skip(mark) {
-                term.factor *= factor;
+        let terms = &self.rays[id].terms[first..];
+        let (mut known, mut gathered, mut magnitude) = (Color::BLACK, Color::BLACK, color.0.abs());
+        for (term, &is_fixed) in terms.iter().zip(&fixed[first..]) {
+            let part = self.value(term);
+            if is_fixed {
+                known += term.factor * part;
+                magnitude += (term.factor * part).0.abs();
+            } else {
+                gathered += part;
+                magnitude += part.0.abs();
             }
         }
-    }
-
-    /// A `Layered` shader starts shading one of its layers (described by `label`).
-    pub fn enter_layer(&mut self, label: String) {
-        self.layers.push(label);
-    }
-
-    /// ... and is done with it.
-    pub fn leave_layer(&mut self) {
-        self.layers.pop();
-    }
-
-    /// What the terms of ray `id` add up to (its colour, when its shader reported every part of it).
-    pub fn terms_sum(&self, id: usize) -> Color {
-        let mut sum = Color::BLACK;
-        for term in &self.rays[id].terms {
-            sum += term.factor
-                * match term.what {
-                    TermKind::Ray(child) => self.rays[child].color,
-                    TermKind::Light { color, .. } => color,
-                };
+        // Per channel: the common factor of the open terms, and what is left where they brought nothing.
+        let rest = color - known;
+        let factor =
+            Color::new(ratio(rest.r(), gathered.r()), ratio(rest.g(), gathered.g()), ratio(rest.b(), gathered.b()));
+        let own = rest - factor * gathered;
+        let count = terms.len();
+        let terms = &mut self.rays[id].terms[first..];
+        for (term, &is_fixed) in terms.iter_mut().zip(&fixed[first..]) {
+            if !is_fixed {
+                term.factor = factor;
+            }
         }
-        sum
+        // What is left beyond the rounding of the shader's own sums is colour of its own.
+        let rounding = magnitude * ((count + 4) as f32 * f32::EPSILON);
+        if (own.0.abs() - rounding).max_element() > 0.0 {
+            self.push_term(TermKind::Own { color: own }, true);
+        }
+        if let Some(flags) = self.fixed.last_mut() {
+            flags[first..].iter_mut().for_each(|f| *f = true);
+        }
+    }
+
+    /// What the terms of ray `id` add up to: its colour.
+    pub fn terms_sum(&self, id: usize) -> Color {
+        self.rays[id].terms.iter().fold(Color::BLACK, |sum, term| sum + term.factor * self.value(term))
     }
 
     /// The pixel colour the tree of ray `id` explains, starting from throughput `throughput`: the sum, over
-    /// every light term and every ray that missed, of its light times the product of the factors on its way.
+    /// every light term, every shader's own colour and every ray that missed, of its light times the product
+    /// of the factors on its way.
     pub fn explained(&self, id: usize, throughput: Color) -> Color {
         let ray = &self.rays[id];
-        if ray.stop == Some(Stop::Missed) {
+        if ray.hit.is_none() {
             return throughput * ray.color;
         }
         let mut sum = Color::BLACK;
@@ -306,7 +215,7 @@ impl RayTree {
             let t = throughput * term.factor;
             sum += match term.what {
                 TermKind::Ray(child) => self.explained(child, t),
-                TermKind::Light { color, .. } => t * color,
+                TermKind::Light { color, .. } | TermKind::Own { color } => t * color,
             };
         }
         sum
@@ -316,18 +225,38 @@ impl RayTree {
     pub fn to_text(&self, sample: usize) -> String {
         let mut out = String::new();
         if let Some(&root) = self.roots.get(sample) {
-            self.write_ray(&mut out, root, Color::WHITE, 0);
+            self.write_ray(&mut out, root, Color::WHITE, 0, "");
         }
         out
     }
 
-    fn write_ray(&self, out: &mut String, id: usize, throughput: Color, indent: usize) {
+    /// "reflection 3 of 16" for the third of the sixteen reflections the same shader sent from one hit.
+    fn ray_label(&self, parent: Option<usize>, id: usize) -> String {
+        let kind = self.rays[id].kind;
+        let Some(parent) = parent else {
+            return kind.to_string();
+        };
+        let siblings: Vec<usize> = self.rays[parent]
+            .terms
+            .iter()
+            .filter_map(|t| match t.what {
+                TermKind::Ray(child) if self.rays[child].kind == kind => Some(child),
+                _ => None,
+            })
+            .collect();
+        match siblings.iter().position(|&c| c == id) {
+            Some(i) if siblings.len() > 1 => format!("{kind} {} of {}", i + 1, siblings.len()),
+            _ => kind.to_string(),
+        }
+    }
+
+    fn write_ray(&self, out: &mut String, id: usize, throughput: Color, indent: usize, label: &str) {
         let ray = &self.rays[id];
         let pad = "  ".repeat(indent);
+        let label = if label.is_empty() { ray.kind.to_string() } else { label.to_string() };
         let _ = writeln!(
             out,
-            "{pad}{} (depth {}) from {} dir {}, weight {:.4}",
-            ray.kind,
+            "{pad}{label} (depth {}) from {} dir {}, weight {:.4}",
             ray.depth,
             vec3(ray.start),
             vec3(ray.dir),
@@ -341,28 +270,35 @@ impl RayTree {
         }
         let _ =
             writeln!(out, "{pad}  returns {}; its share of the pixel {}", rgb(ray.color), rgb(throughput * ray.color));
+        if ray.hit.is_some() && ray.terms.is_empty() {
+            let _ = writeln!(out, "{pad}  (its shader traced no ray and found no light)");
+        }
         for term in &ray.terms {
             let layer = if term.layer.is_empty() { String::new() } else { format!("{}: ", term.layer) };
             match term.what {
                 TermKind::Ray(child) => {
                     let _ = writeln!(out, "{pad}  + {layer}{} times", factor(term.factor));
-                    self.write_ray(out, child, throughput * term.factor, indent + 2);
+                    let child_label = self.ray_label(Some(id), child);
+                    self.write_ray(out, child, throughput * term.factor, indent + 2, &child_label);
                 }
                 TermKind::Light { kind, color } => {
                     let _ = writeln!(
                         out,
-                        "{pad}  + {layer}{} times {kind}: {}; share of the pixel {}",
+                        "{pad}  + {layer}{} times {}: {}; share of the pixel {}",
                         factor(term.factor),
+                        light_text(kind),
                         rgb(color),
                         rgb(throughput * term.factor * color)
                     );
                 }
-            }
-        }
-        if ray.hit.is_some() {
-            let rest = ray.color - self.terms_sum(id);
-            if rest.0.abs().max_element() > 1e-4 * ray.color.max_channel().max(1.0) {
-                let _ = writeln!(out, "{pad}  - not broken down by its shader: {}", rgb(rest));
+                TermKind::Own { color } => {
+                    let _ = writeln!(
+                        out,
+                        "{pad}  + {layer}the shader's own colour, beyond what it gathered: {}; share of the pixel {}",
+                        rgb(color),
+                        rgb(throughput * term.factor * color)
+                    );
+                }
             }
         }
     }
@@ -371,19 +307,19 @@ impl RayTree {
     pub fn to_json(&self, sample: usize) -> String {
         let mut out = String::new();
         match self.roots.get(sample) {
-            Some(&root) => self.write_json(&mut out, root, Color::WHITE),
+            Some(&root) => self.write_json(&mut out, root, Color::WHITE, None),
             None => out.push_str("null"),
         }
         out
     }
 
-    fn write_json(&self, out: &mut String, id: usize, throughput: Color) {
+    fn write_json(&self, out: &mut String, id: usize, throughput: Color, parent: Option<usize>) {
         let ray = &self.rays[id];
         let _ = write!(
             out,
             "{{\"depth\":{},\"kind\":{},\"start\":{},\"dir\":{},\"weight\":{},\"sent_by\":{},",
             ray.depth,
-            json_str(&ray.kind.to_string()),
+            json_str(&self.ray_label(parent, id)),
             json_vec(ray.start.to_array()),
             json_vec(ray.dir.to_array()),
             json_num(ray.weight),
@@ -417,15 +353,18 @@ impl RayTree {
             match term.what {
                 TermKind::Ray(child) => {
                     out.push_str("\"ray\":");
-                    self.write_json(out, child, throughput * term.factor);
+                    self.write_json(out, child, throughput * term.factor, Some(id));
                 }
                 TermKind::Light { kind, color } => {
                     let _ = write!(
                         out,
                         "\"light\":{},\"color\":{}",
-                        json_str(&kind.to_string()),
+                        json_str(&light_text(kind)),
                         json_vec(color.to_array())
                     );
+                }
+                TermKind::Own { color } => {
+                    let _ = write!(out, "\"own\":{}", json_vec(color.to_array()));
                 }
             }
             out.push('}');
@@ -434,20 +373,107 @@ impl RayTree {
     }
 }
 
-impl TraceContext<'_> {
-    /// Reports to the ray tree being recorded, if there is one (see [`crate::instruments::ray_tree`]); costs one test of an
-    /// `Option` otherwise. `report` runs only when a tree is recorded, so it may format names freely.
-    #[inline(always)]
-    pub fn record(&mut self, report: impl FnOnce(&mut RayTree)) {
-        if let Some(tree) = self.recorder.as_deref_mut() {
-            report(tree);
+impl Observer for RayTree {
+    fn ray_begins(&mut self, ray: &Ray) {
+        let id = self.rays.len();
+        let layer = self.layer_label();
+        let (kind, sent_by) = match self.open.last().map(|&(parent, _)| &self.rays[parent]) {
+            None => (RayKind::Camera, String::new()),
+            Some(parent) => {
+                let (shader, normal) = parent.hit.as_ref().map_or(("", Vector::ZERO), |h| (h.shader, h.normal));
+                let through = ray.dir.dot(normal) * parent.dir.dot(normal) > 0.0;
+                let kind = if through { RayKind::Refraction } else { RayKind::Reflection };
+                (kind, if layer.is_empty() { shader.to_string() } else { format!("{shader}, {layer}") })
+            }
+        };
+        if self.open.is_empty() {
+            self.roots.push(id);
+        } else {
+            self.push_term(TermKind::Ray(id), false);
+        }
+        self.rays.push(RayRecord {
+            depth: ray.depth,
+            kind,
+            start: ray.start,
+            dir: ray.dir,
+            weight: ray.weight,
+            sent_by,
+            hit: None,
+            stop: None,
+            color: Color::BLACK,
+            terms: Vec::new(),
+        });
+        self.open.push((id, vec![Scope { label: String::new(), first: 0 }]));
+        self.fixed.push(Vec::new());
+    }
+
+    fn ray_hits(&mut self, scene: &Scene, node: &Node, info: &IntersectionInfo) {
+        let name = scene.node_name(node);
+        if let Some(&(id, _)) = self.open.last() {
+            self.rays[id].hit = Some(Hit {
+                node: name,
+                distance: info.distance,
+                shader: node.shader.name(),
+                normal: info.geometric_normal,
+            });
         }
     }
 
-    /// A mark for [`RayTree::scale`]: how many terms the current shader has reported (0 when not recording).
-    #[inline(always)]
-    pub fn record_mark(&self) -> usize {
-        self.recorder.as_deref().map_or(0, RayTree::mark)
+    fn light_found(&mut self, light: Light, color: Color) {
+        self.push_term(TermKind::Light { kind: light, color }, !light.is_irradiance());
+    }
+
+    fn layer_begins(&mut self, layer: &Layer) {
+        let source = layer.blend_tex.as_ref().map_or(String::new(), |tex| format!(", blend {}", tex.name()));
+        let label = format!("layer {}{source}", layer.shader.name());
+        if let Some((id, scopes)) = self.open.last_mut() {
+            scopes.push(Scope { label, first: self.rays[*id].terms.len() });
+        }
+    }
+
+    fn layer_ends(&mut self, color: Color, weight: Color) {
+        let Some(first) = self.open.last().and_then(|(_, scopes)| scopes.last()).map(|scope| scope.first) else {
+            return;
+        };
+        self.settle(first, color);
+        if let Some((id, scopes)) = self.open.last_mut() {
+            scopes.pop();
+            for term in &mut self.rays[*id].terms[first..] {
+                term.factor *= weight;
+            }
+        }
+    }
+
+    fn ray_ends(&mut self, color: Color, stop: Option<Stop>) {
+        if self.open.last().is_some_and(|&(id, _)| self.rays[id].hit.is_some()) {
+            self.settle(0, color);
+        }
+        if let Some((id, _)) = self.open.pop() {
+            self.rays[id].color = color;
+            self.rays[id].stop = stop;
+            self.fixed.pop();
+        }
+    }
+}
+
+/// `numerator / denominator`, or 0 where the denominator is 0 (nothing gathered in that channel: what the
+/// shader shows there is its own colour).
+fn ratio(numerator: f32, denominator: f32) -> f32 {
+    if denominator == 0.0 { 0.0 } else { numerator / denominator }
+}
+
+/// How the tree names light found at a surface.
+fn light_text(light: Light) -> String {
+    match light {
+        Light::Ambient => "ambient light".to_string(),
+        Light::Lamp { index, from, dir, visible } => format!(
+            "shadow ray to light {index} from {} dir {}: {}",
+            vec3(from),
+            vec3(dir),
+            if visible { "reaches it" } else { "blocked" }
+        ),
+        Light::Photons => "photon estimate (caustic light)".to_string(),
+        Light::Highlight { index } => format!("highlight of light {index}"),
     }
 }
 
@@ -459,9 +485,10 @@ fn rgb(c: Color) -> String {
     format!("rgb({:.4}, {:.4}, {:.4})", c.r(), c.g(), c.b())
 }
 
-/// A factor: one number when it is grey, else its three channels.
+/// A factor: one number when it is grey (its channels print alike), else its three channels.
 fn factor(c: Color) -> String {
-    if c.r() == c.g() && c.g() == c.b() { format!("{:.4}", c.r()) } else { rgb(c) }
+    let [r, g, b] = c.to_array().map(|v| format!("{v:.4}"));
+    if r == g && g == b { r } else { rgb(c) }
 }
 
 fn json_num(v: f32) -> String {
@@ -517,16 +544,34 @@ pub enum TraceFormat {
     Json,
 }
 
-/// Renders pixel `pixel` of the picture `settings` describe, as the render would, recording its ray tree.
-pub fn trace(scene: &Scene, settings: &RenderSettings, pixel: PixelPos) -> Result<PixelTrace> {
-    render_pixel(scene, settings, pixel.x, pixel.y, true)
+/// A pixel rendered with its ray tree recorded.
+#[derive(Clone, Debug)]
+pub struct TracedPixel {
+    /// The pixel's colour: the mean of its camera samples' colours.
+    pub color: Color,
+    /// The rays traced for the pixel.
+    pub counters: Counters,
+    pub tree: RayTree,
 }
 
-/// The report of pixel `pixel`, traced with its ray tree recorded (`trace`, from [`render_pixel`]): the
-/// tree of its camera ray `sample`, as `--trace-pixel` prints it and the viewer shows a clicked pixel.
-pub fn describe(name: &str, pixel: PixelPos, trace: &PixelTrace, sample: usize, format: TraceFormat) -> Result<String> {
-    let empty = RayTree::new();
-    let tree = trace.tree.as_deref().unwrap_or(&empty);
+/// Renders pixel `pixel` of the picture `settings` describe, exactly as the render would, recording its ray
+/// tree.
+pub fn trace(scene: &Scene, settings: &RenderSettings, pixel: PixelPos) -> Result<TracedPixel> {
+    let mut tree = RayTree::new();
+    let rendered = render_pixel(scene, settings, pixel.x, pixel.y, Some(&mut tree))?;
+    Ok(TracedPixel { color: rendered.color, counters: rendered.counters, tree })
+}
+
+/// The report of pixel `pixel`, traced with its ray tree recorded (`traced`, from [`trace`]): the tree of its
+/// camera ray `sample`, as `--trace-pixel` prints it and the viewer shows a clicked pixel.
+pub fn describe(
+    name: &str,
+    pixel: PixelPos,
+    traced: &TracedPixel,
+    sample: usize,
+    format: TraceFormat,
+) -> Result<String> {
+    let tree = &traced.tree;
     let Some(&root) = tree.roots.get(sample) else {
         return Err(Error::parameter(
             "--trace-sample",
@@ -541,7 +586,7 @@ pub fn describe(name: &str, pixel: PixelPos, trace: &PixelTrace, sample: usize, 
             pixel.x,
             pixel.y,
             tree.roots.len(),
-            json_vec(trace.color.to_array()),
+            json_vec(traced.color.to_array()),
             tree.to_json(sample)
         ),
         TraceFormat::Text => format!(
@@ -550,9 +595,9 @@ pub fn describe(name: &str, pixel: PixelPos, trace: &PixelTrace, sample: usize, 
              to {}:\n{}",
             pixel.x,
             pixel.y,
-            rgb(trace.color),
+            rgb(traced.color),
             tree.roots.len(),
-            trace.counters.total(),
+            traced.counters.total(),
             rgb(tree.rays[root].color),
             rgb(tree.explained(root, Color::WHITE)),
             tree.to_text(sample)

@@ -11,6 +11,7 @@ pub mod geometry;
 pub mod light;
 pub mod math;
 pub mod node;
+pub mod observer;
 pub mod photon_map;
 pub mod ray;
 pub mod render;
@@ -22,3 +23,12 @@ pub mod spectral;
 pub mod texture;
 pub mod tone_mapping;
 pub mod transform;
+
+/// The last segment of a type's path, without generic arguments: `Reflection` for
+/// `lecture6::lesson::shader::reflection::Reflection`. What the ray tree calls shaders, textures and geometry
+/// by default (their `name`).
+pub fn type_label<T: ?Sized>() -> &'static str {
+    let name = std::any::type_name::<T>();
+    let name = name.split('<').next().unwrap_or(name);
+    name.rsplit("::").next().unwrap_or(name)
+}

@@ -14,11 +14,11 @@
 //! colours are added in double precision, so a surface that looks the same in every band keeps its colour
 //! exactly. A scene with nothing dispersive is traced once, in white light, whatever `wavelengths` says.
 
-use crate::instruments::ray_tree::RayTree;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
+use crate::lesson::observer::Observer;
 use crate::lesson::photon_map::PhotonStats;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::{Rng, key_of, mix64, shuffled_index};
@@ -92,8 +92,12 @@ impl Default for RenderSettings {
 
 impl RenderSettings {
     /// A traced sample as it goes into a pixel's average: NaN and negative channels zeroed (see
-    /// [`Color::sanitized`]) and, with [`RenderSettings::max_sample`], scaled down to that brightness.
-    pub fn sample(&self, c: Color) -> Color {
+    /// [`Color::sanitized`]) and, with [`RenderSettings::max_sample`], scaled down to that brightness. A
+    /// sample that came back NaN or infinite is counted in `counters` before it is cleaned.
+    pub fn sample(&self, c: Color, counters: &mut Counters) -> Color {
+        if !c.is_finite() {
+            counters.non_finite_samples += 1;
+        }
         let c = c.sanitized();
         match self.max_sample {
             Some(max) if c.max_channel() > max => c * (max / c.max_channel()),
@@ -276,13 +280,18 @@ pub struct PixelTrace {
     pub color: Color,
     /// The rays traced for the pixel.
     pub counters: Counters,
-    /// The rays behind the pixel, when asked for.
-    pub tree: Option<Box<RayTree>>,
 }
 
-/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and, with
-/// `record`, recording its ray tree (see [`crate::instruments::ray_tree`]). `--trace-pixel` uses it.
-pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, record: bool) -> Result<PixelTrace> {
+/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and telling
+/// `observer`, if given, what the recursion does (see [`crate::lesson::observer`]; `--trace-pixel` records the
+/// ray tree so).
+pub fn render_pixel(
+    scene: &Scene,
+    settings: &RenderSettings,
+    x: u32,
+    y: u32,
+    observer: Option<&mut dyn Observer>,
+) -> Result<PixelTrace> {
     if x >= settings.width || y >= settings.height {
         return Err(Error::parameter(
             "pixel",
@@ -290,19 +299,18 @@ pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, re
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let mut pixels = render_row(scene, settings, y, x..x + 1, record.then_some(x))?;
-    Ok(pixels.pop().expect("the row holds pixel x"))
+    settings.check()?;
+    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
+    tracer.observer = observer.map(|o| o as &mut dyn Observer);
+    let color = tracer.pixel(x, y);
+    Ok(PixelTrace { color, counters: tracer.counters })
 }
 
-/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters, and the ray tree
-/// of pixel `record`, if given. The debug views use it.
-pub fn render_row(
-    scene: &Scene,
-    settings: &RenderSettings,
-    y: u32,
-    xs: Range<u32>,
-    record: Option<u32>,
-) -> Result<Vec<PixelTrace>> {
+/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters. The debug views
+/// use it.
+pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
     settings.check()?;
     let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
     let camera = scene.camera.frame(settings.width, settings.height);
@@ -310,9 +318,8 @@ pub fn render_row(
     let mut pixels = Vec::with_capacity(xs.len());
     for x in xs.start..xs.end.min(settings.width) {
         tracer.counters = Counters::default();
-        tracer.recorder = (record == Some(x)).then(|| Box::new(RayTree::new()));
         let color = tracer.pixel(x, y);
-        pixels.push(PixelTrace { color, counters: tracer.counters.clone(), tree: tracer.recorder.take() });
+        pixels.push(PixelTrace { color, counters: tracer.counters.clone() });
     }
     Ok(pixels)
 }
@@ -364,8 +371,8 @@ struct PixelTracer<'a> {
     /// The [`PixelSample::count`] of every pixel: the spp, or what adaptive anti-aliasing may give a pixel.
     samples_per_pixel: u32,
     counters: Counters,
-    /// The ray tree being recorded for the pixels this tracer renders (`--trace-pixel`), if any.
-    recorder: Option<Box<RayTree>>,
+    /// The instrument watching the pixels this tracer renders (`--trace-pixel`), if any.
+    observer: Option<&'a mut dyn Observer>,
 }
 
 impl<'a> PixelTracer<'a> {
@@ -381,7 +388,7 @@ impl<'a> PixelTracer<'a> {
             stratifier,
             samples_per_pixel,
             counters: Counters::default(),
-            recorder: None,
+            observer: None,
         }
     }
 
@@ -390,17 +397,17 @@ impl<'a> PixelTracer<'a> {
     fn samples(&mut self, x: u32, y: u32, stream_keys: &[u64], wavelength: Option<f32>) -> Color {
         let mut ctx = TraceContext::new(self.scene, Rng::for_keys(stream_keys));
         let pixel_key = pixel_key(stream_keys);
-        ctx.recorder = self.recorder.take();
+        ctx.observer = self.observer.take();
         self.stratifier.start_pixel(&mut ctx.rng);
         let mut sum = Color::BLACK;
         for s in 0..self.settings.spp {
             ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
             let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
             let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-            sum += self.settings.sample(ctx.raytrace(&ray));
+            sum += self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters);
         }
         self.counters.add(&ctx.counters);
-        self.recorder = ctx.recorder.take();
+        self.observer = ctx.observer.take();
         sum / self.settings.spp as f32
     }
 
@@ -421,7 +428,7 @@ impl<'a> PixelTracer<'a> {
                 let stream_keys = [seed, x as u64, y as u64];
                 let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
                 let pixel_key = pixel_key(&stream_keys);
-                ctx.recorder = self.recorder.take();
+                ctx.observer = self.observer.take();
                 self.stratifier.start_pixel(&mut ctx.rng);
                 // Sample s traces band shuffled_index(s): every band once, in an order of the pixel's own.
                 let bands_key = ctx.rng.next_u32();
@@ -432,10 +439,10 @@ impl<'a> PixelTracer<'a> {
                     let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
                     let wavelength = Some(band.at(ctx.rng.next_f32()));
                     let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-                    add_weighted(&mut sum, &band, self.settings.sample(ctx.raytrace(&ray)));
+                    add_weighted(&mut sum, &band, self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters));
                 }
                 self.counters.add(&ctx.counters);
-                self.recorder = ctx.recorder.take();
+                self.observer = ctx.observer.take();
                 fit_to_gamut(to_color(sum))
             }
         }

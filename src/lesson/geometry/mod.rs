@@ -181,7 +181,7 @@ pub trait Geometry: Send + Sync {
 
     /// What the ray tree (`--trace-pixel`) calls this shape: its type's name.
     fn name(&self) -> &'static str {
-        crate::instruments::ray_tree::type_label::<Self>()
+        crate::lesson::type_label::<Self>()
     }
 }
 

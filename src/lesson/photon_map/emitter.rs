@@ -8,7 +8,7 @@ use crate::lesson::math::{OrthonormalBasis, Vector};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{RECURSION_SAFETY_CAP, Scene};
-use crate::lesson::shader::PhotonScatter;
+use crate::lesson::shader::{PhotonScatter, casts_caustics, scatter_photon};
 use crate::lesson::spectral::{Band, bands};
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -98,7 +98,7 @@ impl Emitter {
         let spheres: Vec<Option<(Vector, f32)>> = scene
             .nodes
             .iter()
-            .filter(|node| node.shader.casts_caustics())
+            .filter(|node| casts_caustics(&*node.shader))
             .map(|node| node.bounds().map(|b| (b.center(), 0.5 * (b.max - b.min).length())))
             .collect();
         let mut cones = Vec::new();
@@ -178,7 +178,7 @@ fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Opti
             return None;
         }
         let (info, node) = scene.closest_hit(&ray)?;
-        match node.shader.scatter_photon(&ray, &info, &mut rng) {
+        match scatter_photon(&*node.shader, &ray, &info, &mut rng) {
             PhotonScatter::Land { scale } => {
                 return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });
             }

@@ -7,7 +7,8 @@
 //! map (through the light loop, [`crate::lesson::light::light_loop`]), which finds the k nearest photons
 //! and turns their power into the caustic light arriving there.
 //!
-//! How a photon behaves at a surface is the shader's business: [`Shader::scatter_photon`](crate::lesson::shader::Shader::scatter_photon) returns a
+//! How a photon behaves at a surface is the shader's business: a mirror's or glass's
+//! [`CausticCaster::scatter_photon`](crate::lesson::shader::CausticCaster::scatter_photon) returns a
 //! [`PhotonScatter`](crate::lesson::shader::PhotonScatter): on a diffuse surface (Lambert, Phong) the photon lands; `Reflection`, `Refraction` and
 //! `Layered` send it on, and the `Fresnel` texture takes part through a layer's blend.
 //!
@@ -34,7 +35,7 @@
 //!   first that holds k photons, which then are the k nearest: in a dense caustic the nearest are close, and
 //!   most of the photons of the largest ball are never read. The photons found are gathered into a
 //!   per-thread buffer and the k nearest selected in place, by one integer key per photon (distance, then
-//!   index): no allocation per estimate, and measured faster than a k-d tree (kiddo's) on the workbook's
+//!   index): no allocation per estimate, and measured faster than a k-d tree on the workbook's
 //!   scenes, whose estimates all use the same radius.
 //! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
 //!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k

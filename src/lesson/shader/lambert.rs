@@ -8,9 +8,7 @@ use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::diffuse_light;
 use crate::lesson::math::faceforward;
 use crate::lesson::ray::Ray;
-use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 
 #[derive(Clone)]
 pub struct Lambert {
@@ -27,17 +25,6 @@ impl Shader for Lambert {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let diffuse = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
-        let mark = ctx.record_mark();
-        let color = diffuse * diffuse_light(ctx, info, n);
-        ctx.record(|tree| tree.scale(mark, diffuse));
-        color
-    }
-
-    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
-        PhotonScatter::Land { scale: 1.0 }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        false
+        diffuse * diffuse_light(ctx, info, n)
     }
 }

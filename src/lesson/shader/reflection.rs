@@ -28,8 +28,7 @@
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
 //!   samples would converge to a different picture.
 
-use super::{ColorSource, Shader};
-use crate::instruments::ray_tree::RayKind;
+use super::{CausticCaster, ColorSource, PhotonScatter, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
@@ -38,7 +37,6 @@ use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 use std::f32::consts::FRAC_PI_2;
 
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
@@ -94,15 +92,11 @@ impl Reflection {
         self
     }
 
-    /// The perfect mirror ray.
+    /// The perfect mirror ray (the slide's Reflection v0.2): one ray in the mirror direction, one level
+    /// deeper, and what it brings back times the mirror's colour `m`.
     fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
-        let dir = reflect(ray.dir, n);
-        let new_ray = ray.spawn(info, dir, m.max_channel());
-        let mark = ctx.record_mark();
-        ctx.record(|tree| tree.next_ray(RayKind::Reflection));
-        let color = ctx.raytrace(&new_ray) * m;
-        ctx.record(|tree| tree.scale(mark, m));
-        color
+        let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
+        ctx.raytrace(&new_ray) * m
     }
 }
 
@@ -127,10 +121,8 @@ impl Shader for Reflection {
         let attenuation = multiplier.max_channel();
         let mut sum = Color::BLACK;
         let mut kept = 0u32;
-        let mark = ctx.record_mark();
         for i in 0..num_samples {
             if let Some(dir) = cone.direction(disc.point(i, &mut ctx.rng)) {
-                ctx.record(|tree| tree.next_ray(RayKind::GlossySample { index: i, count: num_samples }));
                 sum += ctx.raytrace(&ray.spawn(info, dir, attenuation));
                 kept += 1;
             }
@@ -138,10 +130,15 @@ impl Shader for Reflection {
         if kept == 0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
-        ctx.record(|tree| tree.scale(mark, multiplier / kept as f32));
         sum * multiplier / kept as f32
     }
 
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        Some(self)
+    }
+}
+
+impl CausticCaster for Reflection {
     /// A photon is reflected like a ray, its power multiplied by the mirror's colour: by a glossy mirror in
     /// one direction of the cone, drawn at random (the mirror direction should the draw go under the
     /// surface), so that glossy mirrors cast blurred caustics.
@@ -154,10 +151,6 @@ impl Shader for Reflection {
             GlossyCone::new(ray.dir, n, self.glossiness).direction(random_unit_disc_point(rng)).unwrap_or(mirror)
         };
         PhotonScatter::Continue { dir, filter: self.multiplier.get(ray, info) }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        true
     }
 }
 
