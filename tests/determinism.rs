@@ -17,8 +17,8 @@ macro_rules! thread_count_independent {
                 let args: Vec<&str> = size.iter().copied().chain(["--threads", threads]).collect();
                 common::render::<Args>(&args)
             };
+            // `common::render` checks that no sample came back NaN or infinite.
             let one = frame("1");
-            assert!(one.pixels.iter().all(|c| c.is_finite()), "NaN or infinity in the frame");
             for threads in ["2", "8"] {
                 assert!(frame(threads) == one, "{}: the picture changed with {threads} threads", stringify!($name));
             }

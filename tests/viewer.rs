@@ -10,6 +10,7 @@ use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;
 use lecture6::app::cli::Cli;
 use lecture6::app::cli::Example;
+use lecture6::instruments::compare::difference;
 use lecture6::instruments::progressive::{PREVIEW_PIXELS, preview_settings};
 use lecture6::instruments::viewer::controls::{Controls, Kind};
 use lecture6::instruments::viewer::fly::{Motion, as_code, moved};
@@ -166,7 +167,8 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     worker.submit(job(&second, None, true));
     let frame = finished(&worker);
     assert!(frame == second.render().unwrap().0, "the picture of the new options");
-    assert!(frame != first.render().unwrap().0);
+    let change = difference(&frame.to_rgb8(), &first.render().unwrap().0.to_rgb8()).unwrap();
+    assert!(change.large_pixels * 50 > change.pixels, "the glass of the new IOR looks the same: {change}");
 
     // A moved camera keeps the scene (the job does not rebuild it).
     let camera = Camera { position: Vector::new(0.0, 60.0, -100.0), pitch: -35.0, fov: 90.0, ..Camera::default() };
