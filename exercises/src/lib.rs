@@ -6,7 +6,7 @@
 //! own, so every picture it draws is drawn with the student's code:
 //!
 //! ```sh
-//! cargo test --release -p exercises                               # grade every exercise
+//! cargo test -p exercises                                         # grade every exercise
 //! cargo run --release --features exercises --example fresnel      # a picture drawn with your functions
 //! ```
 //!

@@ -638,7 +638,7 @@ pub fn glossy_disc(
     let from = |numbers: &[f32]| {
         let mut numbers = numbers.iter().copied();
         random_unit_disc_point(&mut || {
-            numbers.next().expect("random_unit_disc_point drew more numbers than the test has")
+            numbers.next().expect("random_unit_disc_point drew more random numbers than the slide's rejection needs: two a point, until one lies in the disc")
         })
     };
     let (x, y) = from(&[0.5, 0.75]);
