@@ -1,4 +1,4 @@
-//! # Exercise: the direction of a glossy reflection (slides "Грапави отражения", "Симулиране на грапави отражения", steps 3-6)
+//! # Exercise: the direction of a glossy reflection (slide "Симулиране на грапави отражения", steps 3-6)
 //!
 //! A rough surface reflects the light from one direction into a cone of directions, wider the rougher the
 //! surface: its glossiness runs from 0 (matte) to 1 (a perfect mirror). The slide simulates the cone by

@@ -29,6 +29,15 @@ fn expect_vector_near(what: impl Display, got: Vector, want: Vector, tolerance: 
     }
 }
 
+/// Fails unless both coordinates of the point `got` are within `tolerance` of `want`.
+fn expect_point_near(what: impl Display, got: (f32, f32), want: (f32, f32), tolerance: f32) -> Facts {
+    if (got.0 - want.0).abs() <= tolerance && (got.1 - want.1).abs() <= tolerance {
+        Ok(())
+    } else {
+        Err(format!("{what} should be ({:.4}, {:.4}), got ({:.4}, {:.4})", want.0, want.1, got.0, got.1))
+    }
+}
+
 /// A deterministic stream of numbers in [0, 1) (xorshift), so the facts are the same at every run.
 pub struct Stream(u32);
 
@@ -68,13 +77,13 @@ pub fn bilinear(bilinear: impl Fn(f32, f32, &dyn Fn(i64, i64) -> Color) -> Color
     let expected = |x: f32, y: f32| Color::new(x - 0.5, y - 0.5, (x - 0.5) * (y - 0.5));
     let centre = bilinear(2.5, 1.5, &ramp);
     expect_vector_near(
-        "At the centre of texel (2, 1), (x, y) = (2.5, 1.5), the filter should return that texel alone: it",
+        "At the centre of texel (2, 1), (x, y) = (2.5, 1.5), the filter returns that texel alone; its colour",
         centre,
         ramp(2, 1),
         1e-4,
     )?;
     expect_vector_near(
-        "Halfway between the centres of texels (0, 0) and (1, 0), at (1, 0.5), the colour should be their average: it",
+        "Halfway between the centres of texels (0, 0) and (1, 0), at (1, 0.5), the filter returns their average; its colour",
         bilinear(1.0, 0.5, &ramp),
         (ramp(0, 0) + ramp(1, 0)) * 0.5,
         1e-4,
@@ -85,7 +94,7 @@ pub fn bilinear(bilinear: impl Fn(f32, f32, &dyn Fn(i64, i64) -> Color) -> Color
     expect_vector_near(
         "At (0.25, 0.25), a quarter texel left of and above the centre of texel (0, 0), the filter mixes texels \
          -1 and 0 in each direction (texel(-1, j) is the wrapped neighbour), 1/4 and 3/4; on the texels \
-         (column^2, row^2, 0) it",
+         (column^2, row^2, 0) its colour",
         bilinear(0.25, 0.25, &squares),
         Color::new(0.25, 0.25, 0.0),
         1e-4,
@@ -141,10 +150,7 @@ pub fn transform_inverse(inverse: impl Fn(Affine3A) -> Affine3A) -> Facts {
         [got.x_axis, got.y_axis, got.z_axis].into_iter().zip(rotation.transpose().to_cols_array_2d()).enumerate()
     {
         expect_vector_near(
-            format!(
-                "A rotation is undone by its transpose: column {} of the inverse of the slide's rotation (0.8, 0.1, 0.2)",
-                k + 1
-            ),
+            format!("A rotation is undone by its transpose: column {} of the inverse of the slide's rotation", k + 1),
             g,
             Vector::from_array(w),
             1e-5,
@@ -219,7 +225,8 @@ pub fn cube_map(cube_face_uv: impl Fn(Vector) -> (Face, f32, f32)) -> Facts {
         let (got, u, v) = cube_face_uv(centre);
         if got != face || (u - 0.5).abs() > 1e-5 || (v - 0.5).abs() > 1e-5 {
             return Err(format!(
-                "The direction {} should land in the middle of {face:?}, (u, v) = (0.5, 0.5); got {got:?} at ({u:.4}, {v:.4})",
+                "The direction {} should land in the middle of {face:?}, (u, v) = (0.5, 0.5); got {got:?} at ({u:.4}, \
+                 {v:.4})",
                 show(centre)
             ));
         }
@@ -227,13 +234,15 @@ pub fn cube_map(cube_face_uv: impl Fn(Vector) -> (Face, f32, f32)) -> Facts {
     let (face, u, v) = cube_face_uv(Vector::new(0.5, 0.0, 1.0));
     if face != Face::PosZ || (u - 0.75).abs() > 1e-5 || (v - 0.5).abs() > 1e-5 {
         return Err(format!(
-            "The direction (0.5, 0, 1) should land on PosZ at (u, v) = (0.75, 0.5) (u grows along +X); got {face:?} at ({u:.4}, {v:.4})"
+            "The direction (0.5, 0, 1) should land on PosZ at (u, v) = (0.75, 0.5) (u grows along +X); got {face:?} \
+             at ({u:.4}, {v:.4})"
         ));
     }
     let (face, u, v) = cube_face_uv(Vector::new(0.0, 0.5, 1.0));
     if face != Face::PosZ || (u - 0.5).abs() > 1e-5 || (v - 0.25).abs() > 1e-5 {
         return Err(format!(
-            "The direction (0, 0.5, 1) should land on PosZ at (u, v) = (0.5, 0.25) (v grows along -Y, down); got {face:?} at ({u:.4}, {v:.4})"
+            "The direction (0, 0.5, 1) should land on PosZ at (u, v) = (0.5, 0.25) (v grows along -Y, down); got \
+             {face:?} at ({u:.4}, {v:.4})"
         ));
     }
     let mut stream = Stream::new(11);
@@ -254,7 +263,8 @@ pub fn cube_map(cube_face_uv: impl Fn(Vector) -> (Face, f32, f32)) -> Facts {
         let back = (centre + (2.0 * u - 1.0) * u_axis + (2.0 * v - 1.0) * v_axis).normalize();
         expect_vector_near(
             format!(
-                "The direction {} lands on {face:?} at (u, v) = ({u:.4}, {v:.4}); by the table of the faces, the direction through that point",
+                "The direction {} lands on {face:?} at (u, v) = ({u:.4}, {v:.4}); by the table of the faces, the \
+                 direction through that point",
                 show(dir)
             ),
             back,
@@ -264,7 +274,8 @@ pub fn cube_map(cube_face_uv: impl Fn(Vector) -> (Face, f32, f32)) -> Facts {
         let (face3, u3, v3) = cube_face_uv(3.0 * dir);
         if face3 != face || (u3 - u).abs() > 1e-5 || (v3 - v).abs() > 1e-5 {
             return Err(format!(
-                "Only the direction counts, not its length: {} lands on {face:?} at ({u:.4}, {v:.4}), but three times it on {face3:?} at ({u3:.4}, {v3:.4})",
+                "Only the direction counts, not its length: {} lands on {face:?} at ({u:.4}, {v:.4}), but three times \
+                 it on {face3:?} at ({u3:.4}, {v3:.4})",
                 show(dir)
             ));
         }
@@ -304,7 +315,8 @@ pub fn faceforward(faceforward: impl Fn(Vector, Vector) -> Vector) -> Facts {
         }
         if got.dot(i) > 0.0 {
             return Err(format!(
-                "faceforward(n, i) must face i (dot(i, faceforward(n, i)) <= 0); for n = {} and i = {} it is {}, which faces away",
+                "faceforward(n, i) must face i (dot(i, faceforward(n, i)) <= 0); for n = {} and i = {} it is {}, \
+                 which faces away",
                 show(n),
                 show(i),
                 show(got)
@@ -336,7 +348,8 @@ pub fn refract(refract: impl Fn(Vector, Vector, f32) -> Option<Vector>) -> Facts
     match refract(i, n, 1.0 / 1.5) {
         Some(t) => expect_vector_near(
             format!(
-                "A ray meeting glass of index 1.5 at 45 degrees from the normal (i = {}, n = (0, 1, 0), eta1_over_eta2 = 1/1.5) bends towards the normal, sin(theta2) = sin(45) / 1.5: refract",
+                "A ray meeting glass of index 1.5 at 45 degrees from the normal (i = {}, n = (0, 1, 0), \
+                 eta1_over_eta2 = 1/1.5) bends towards the normal, sin(theta2) = sin(45) / 1.5: refract",
                 show(i)
             ),
             t,
@@ -348,7 +361,8 @@ pub fn refract(refract: impl Fn(Vector, Vector, f32) -> Option<Vector>) -> Facts
     let (n, i) = floor_ray(60.0);
     if let Some(t) = refract(i, n, 1.5) {
         return Err(format!(
-            "Leaving glass of index 1.5 at 60 degrees from the normal (eta1_over_eta2 = 1.5), sin(theta2) would be 1.5 sin(60) = 1.30 > 1: total internal reflection, so refract should give None; it gave Some({})",
+            "Leaving glass of index 1.5 at 60 degrees from the normal (eta1_over_eta2 = 1.5), sin(theta2) would be \
+             1.5 sin(60) = 1.30 > 1: total internal reflection, so refract should give None; it gave Some({})",
             show(t)
         ));
     }
@@ -374,7 +388,8 @@ pub fn refract(refract: impl Fn(Vector, Vector, f32) -> Option<Vector>) -> Facts
         };
         if sin_t > 1.0 {
             return Err(format!(
-                "For {case} sin(theta2) would be {sin_t:.4} > 1: total internal reflection, so refract should give None; it gave Some({})",
+                "For {case} sin(theta2) would be {sin_t:.4} > 1: total internal reflection, so refract should give \
+                 None; it gave Some({})",
                 show(t)
             ));
         }
@@ -447,7 +462,8 @@ pub fn layered_blend(layer_weight: impl Fn(Color, Color) -> Color) -> Facts {
                 layers.iter().map(|(c, b)| format!("colour {} blend {}", show(*c), show(*b))).collect();
             expect_vector_near(
                 format!(
-                    "For the layers (bottom to top) [{}], the slide's loop gives res = {}; walked from the top with your weights, the colour",
+                    "For the layers (bottom to top) [{}], the slide's loop gives res = {}; walked from the top with \
+                     your weights, the colour",
                     stack.join("; "),
                     show(slide)
                 ),
@@ -457,7 +473,8 @@ pub fn layered_blend(layer_weight: impl Fn(Color, Color) -> Color) -> Facts {
             )?;
             expect_vector_near(
                 format!(
-                    "For the layers (bottom to top) [{}], the weights and what is left uncovered must add up to white (no light made or lost): they add up to",
+                    "For the layers (bottom to top) [{}], the weights and what is left uncovered must add up to white \
+                     (no light made or lost): they add up to",
                     stack.join("; ")
                 ),
                 weights + uncovered,
@@ -501,14 +518,16 @@ pub fn fresnel_schlick(fresnel: impl Fn(Vector, Vector, f32) -> f32) -> Facts {
         1e-4,
     )?;
     expect_near(
-        "Head-on, leaving glass of index 1.5 (eta1_over_eta2 = 1.5), the reflectance is f0 = ((1 - 1.5) / (1 + 1.5))^2 = 0.04 too: fresnel",
+        "Head-on, leaving glass of index 1.5 (eta1_over_eta2 = 1.5), the reflectance is f0 = ((1 - 1.5) / (1 + \
+         1.5))^2 = 0.04 too: fresnel",
         fresnel(i, n, 1.5),
         0.04,
         1e-4,
     )?;
     let (n, i) = floor_ray(60.0);
     expect_near(
-        "At 60 degrees from the normal, entering glass of index 1.5, Schlick's formula gives f0 + (1 - f0) (1 - cos 60)^5 = 0.04 + 0.96 / 32: fresnel",
+        "At 60 degrees from the normal, entering glass of index 1.5, Schlick's formula gives f0 + (1 - f0) (1 - cos \
+         60)^5 = 0.04 + 0.96 / 32: fresnel",
         fresnel(i, n, entering),
         0.07,
         1e-4,
@@ -522,14 +541,16 @@ pub fn fresnel_schlick(fresnel: impl Fn(Vector, Vector, f32) -> f32) -> Facts {
     )?;
     let (n, i) = floor_ray(45.0);
     expect_near(
-        "Leaving glass of index 1.5 at 45 degrees from the normal, past the critical angle (41.8 degrees), nothing gets out (total internal reflection): fresnel",
+        "Leaving glass of index 1.5 at 45 degrees from the normal, past the critical angle (41.8 degrees), nothing \
+         gets out (total internal reflection): fresnel",
         fresnel(i, n, 1.5),
         1.0,
         1e-4,
     )?;
     let (n, i) = floor_ray(30.0);
     expect_near(
-        "Leaving glass of index 1.5 at 30 degrees from the normal, Schlick's formula takes the cosine of the refracted ray outside (cos_t = sqrt(1 - 1.5^2 sin^2 30) = 0.6614), not of the incoming one: fresnel",
+        "Leaving glass of index 1.5 at 30 degrees from the normal, Schlick's formula takes the cosine of the \
+         refracted ray outside (cos_t = sqrt(1 - 1.5^2 sin^2 30) = 0.6614), not of the incoming one: fresnel",
         fresnel(i, n, 1.5),
         schlick_reference(30f64.to_radians(), 1.5) as f32,
         1e-4,
@@ -540,7 +561,8 @@ pub fn fresnel_schlick(fresnel: impl Fn(Vector, Vector, f32) -> f32) -> Facts {
         let r = fresnel(i, n, entering);
         if !(0.0..=1.0).contains(&r) || r + 1e-6 < previous {
             return Err(format!(
-                "Entering glass, the reflectance must stay between 0 and 1 and grow with the angle; at {degrees} degrees fresnel gives {r:.4} (at one degree less, {previous:.4})"
+                "Entering glass, the reflectance must stay between 0 and 1 and grow with the angle; at {degrees} \
+                 degrees fresnel gives {r:.4} (at one degree less, {previous:.4})"
             ));
         }
         expect_near(
@@ -574,7 +596,8 @@ pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Fact
     let entering = 1.0 / 1.5;
     let (n, i) = floor_ray(0.0);
     expect_near(
-        "Head-on (i = (0, -1, 0), n = (0, 1, 0)), entering glass of index 1.5, the reflectance is ((1.5 - 1) / (1.5 + 1))^2: fresnel_exact",
+        "Head-on (i = (0, -1, 0), n = (0, 1, 0)), entering glass of index 1.5, the reflectance is ((1.5 - 1) / (1.5 + \
+         1))^2: fresnel_exact",
         fresnel_exact(i, n, entering),
         0.04,
         1e-4,
@@ -582,7 +605,8 @@ pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Fact
     let brewster = 1.5f64.atan();
     let (n, i) = floor_ray(brewster.to_degrees() as f32);
     expect_near(
-        "At Brewster's angle (56.31 degrees, tan = 1.5), entering glass of index 1.5, rp = 0 and R = rs^2 / 2: fresnel_exact",
+        "At Brewster's angle (56.31 degrees, tan = 1.5), entering glass of index 1.5, rp = 0 and R = rs^2 / 2: \
+         fresnel_exact",
         fresnel_exact(i, n, entering),
         exact_reference(brewster, 1.0 / 1.5) as f32,
         1e-4,
@@ -596,7 +620,8 @@ pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Fact
     )?;
     let (n, i) = floor_ray(45.0);
     expect_near(
-        "Leaving glass of index 1.5 at 45 degrees from the normal, past the critical angle, nothing gets out (total internal reflection): fresnel_exact",
+        "Leaving glass of index 1.5 at 45 degrees from the normal, past the critical angle, nothing gets out (total \
+         internal reflection): fresnel_exact",
         fresnel_exact(i, n, 1.5),
         1.0,
         1e-4,
@@ -609,7 +634,9 @@ pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Fact
         let entering_back = fresnel_exact(i_out, n_out, entering);
         if (leaving - entering_back).abs() > 1e-4 {
             return Err(format!(
-                "The equations are symmetric: leaving glass of index 1.5 at {degrees} degrees from the normal reflects as much as entering it along the refracted ray's path, at {theta_t:.2} degrees; fresnel_exact gives {leaving:.4} and {entering_back:.4}"
+                "The equations are symmetric: leaving glass of index 1.5 at {degrees} degrees from the normal \
+                 reflects as much as entering it along the refracted ray's path, at {theta_t:.2} degrees; \
+                 fresnel_exact gives {leaving:.4} and {entering_back:.4}"
             ));
         }
     }
@@ -617,7 +644,8 @@ pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Fact
         let (n, i) = floor_ray(degrees as f32);
         expect_near(
             format!(
-                "At {degrees} degrees from the normal, entering glass of index 1.5, the Fresnel equations give fresnel_exact"
+                "At {degrees} degrees from the normal, entering glass of index 1.5, the Fresnel equations give \
+                 fresnel_exact"
             ),
             fresnel_exact(i, n, entering),
             exact_reference((degrees as f64).to_radians(), 1.0 / 1.5) as f32,
@@ -638,21 +666,24 @@ pub fn glossy_disc(
     let from = |numbers: &[f32]| {
         let mut numbers = numbers.iter().copied();
         random_unit_disc_point(&mut || {
-            numbers.next().expect("random_unit_disc_point drew more random numbers than the slide's rejection needs: two a point, until one lies in the disc")
+            numbers.next().expect(
+                "random_unit_disc_point drew more random numbers than the slide's rejection needs: \
+                                   two a point, until one lies in the disc",
+            )
         })
     };
     let (x, y) = from(&[0.5, 0.75]);
-    expect_vector_near(
+    expect_point_near(
         "From the random numbers 0.5, 0.75 (x = 2 * 0.5 - 1, then y = 2 * 0.75 - 1), the slide's point in the disc",
-        Vector::new(x, y, 0.0),
-        Vector::new(0.0, 0.5, 0.0),
+        (x, y),
+        (0.0, 0.5),
         1e-6,
     )?;
     let (x, y) = from(&[0.0, 0.0, 0.5, 0.5]);
-    expect_vector_near(
+    expect_point_near(
         "From the random numbers 0, 0 (the corner (-1, -1), outside the disc: drawn again), then 0.5, 0.5, the point",
-        Vector::new(x, y, 0.0),
-        Vector::ZERO,
+        (x, y),
+        (0.0, 0.0),
         1e-6,
     )?;
     let mut stream = Stream::new(13);
@@ -682,10 +713,10 @@ pub fn glossy_disc(
         0.25,
         0.01,
     )?;
-    expect_vector_near(
+    expect_point_near(
         format!("Evenly spread over the disc, the mean of the {count} random points"),
-        sum / n,
-        Vector::ZERO,
+        (sum.x / n, sum.y / n),
+        (0.0, 0.0),
         0.01,
     )?;
     for (k, &q) in quadrants.iter().enumerate() {
@@ -709,10 +740,10 @@ pub fn glossy_disc(
     ];
     for ((u, v), (x, y), fact) in values {
         let (gx, gy) = concentric_disc(u, v);
-        expect_vector_near(
+        expect_point_near(
             format!("In the concentric mapping {fact}: concentric_disc({u}, {v})"),
-            Vector::new(gx, gy, 0.0),
-            Vector::new(x, y, 0.0),
+            (gx, gy),
+            (x, y),
             1e-4,
         )?;
     }
@@ -722,7 +753,8 @@ pub fn glossy_disc(
             let (x, y) = concentric_disc(u, v);
             expect_near(
                 format!(
-                    "The edge of the square goes to the unit circle: the distance from the centre of concentric_disc({u:.4}, {v:.4})"
+                    "The edge of the square goes to the unit circle: the distance from the centre of \
+                     concentric_disc({u:.4}, {v:.4})"
                 ),
                 x.hypot(y),
                 1.0,
@@ -749,7 +781,8 @@ pub fn glossy_disc(
     for (k, &e) in eighths.iter().enumerate() {
         expect_near(
             format!(
-                "The concentric mapping keeps areas: the fraction of a grid of the square's points in eighth {} of the disc",
+                "The concentric mapping keeps areas: the fraction of a grid of the square's points in eighth {} of \
+                 the disc",
                 k + 1
             ),
             e as f32 / 4096.0,
@@ -778,7 +811,8 @@ pub fn glossy_cone(
     let mirror = Vector::new(i.x, -i.y, 0.0);
     match glossy_direction(i, n, t, b, 0.3, (0.0, 0.0)) {
         Some(d) => expect_vector_near(
-            "The centre of the disc, (0, 0), tilts nothing: the mirror direction of a ray at 45 degrees; glossy_direction",
+            "The centre of the disc, (0, 0), tilts nothing: the mirror direction of a ray at 45 degrees; \
+             glossy_direction",
             d,
             mirror,
             1e-5,
@@ -805,7 +839,9 @@ pub fn glossy_cone(
     ];
     for ((x, y), want, along) in cases {
         let what = format!(
-            "A ray straight down onto a floor (normal (0, 1, 0)), scaling 1, the disc point ({x}, {y}): the normal tilted along {along} to normalize(n + {x} * tangent + {y} * bitangent), and the ray reflected about it; glossy_direction"
+            "A ray straight down onto a floor (normal (0, 1, 0)), scaling 1, the disc point ({x}, {y}): the normal \
+             tilted along {along} to normalize(n + {x} * tangent + {y} * bitangent), and the ray reflected about \
+             it; glossy_direction"
         );
         match glossy_direction(down, n, t, b, 1.0, (x, y)) {
             Some(d) => expect_vector_near(what, d, want, 1e-4)?,
@@ -815,7 +851,8 @@ pub fn glossy_cone(
     let grazing = Vector::new(1.0, -0.2, 0.0).normalize();
     if let Some(d) = glossy_direction(grazing, n, t, b, 1.0, (1.0, 0.0)) {
         return Err(format!(
-            "A grazing ray {} reflected about a normal tilted by the disc point (1, 0) goes under the surface; glossy_direction should give None, it gave Some({})",
+            "A grazing ray {} reflected about a normal tilted by the disc point (1, 0) goes under the surface; \
+             glossy_direction should give None, it gave Some({})",
             show(grazing),
             show(d)
         ));
@@ -875,21 +912,24 @@ pub fn photon_estimate(irradiance_estimate: impl Fn(&[Photon], f32, Vector) -> C
     let power = Color::new(1.0, 2.0, 3.0);
     let centre = Photon { distance_squared: 0.0, dir: down, power };
     expect_vector_near(
-        "One photon of power (1, 2, 3) right at the shaded point, in a disc of radius 1, counts fully: power / ((1 - 2 / (3 k)) pi r^2) with k = 1.1; the estimate",
+        "One photon of power (1, 2, 3) right at the shaded point, in a disc of radius 1, counts fully: power / ((1 - \
+         2 / (3 k)) pi r^2) with k = 1.1; the estimate",
         irradiance_estimate(&[centre], 1.0, n),
         power / area_of_the_filter,
         1e-4,
     )?;
     let behind = Photon { dir: Vector::Y, ..centre };
     expect_vector_near(
-        "A photon that arrived from behind the surface (dir (0, 1, 0), normal (0, 1, 0)) does not light it: the estimate",
+        "A photon that arrived from behind the surface (dir (0, 1, 0), normal (0, 1, 0)) does not light it: the \
+         estimate",
         irradiance_estimate(&[behind], 1.0, n),
         Color::ZERO,
         1e-6,
     )?;
     let half = Photon { distance_squared: 0.25, dir: down, power: Color::ONE };
     expect_vector_near(
-        "One photon of power 1 at distance 0.5, in a disc of radius 1, has the cone filter's weight 1 - 0.5 / (1.1 * 1); the estimate",
+        "One photon of power 1 at distance 0.5, in a disc of radius 1, has the cone filter's weight 1 - 0.5 / (1.1 * \
+         1); the estimate",
         irradiance_estimate(&[half], 1.0, n),
         Color::splat((1.0 - 0.5 / CONE_FILTER_K) / area_of_the_filter),
         1e-4,
@@ -897,7 +937,8 @@ pub fn photon_estimate(irradiance_estimate: impl Fn(&[Photon], f32, Vector) -> C
     let red = Photon { power: Color::X, ..centre };
     let got = irradiance_estimate(&[red], 4.0, n);
     expect_vector_near(
-        "A red photon (power (1, 0, 0)) at the centre of a disc of radius 2 gives red light only, 1 / ((1 - 2 / (3 k)) pi 4): the estimate",
+        "A red photon (power (1, 0, 0)) at the centre of a disc of radius 2 gives red light only, 1 / ((1 - 2 / (3 \
+         k)) pi 4): the estimate",
         got,
         Color::X / (area_of_the_filter * 4.0),
         1e-4,
@@ -923,7 +964,8 @@ pub fn photon_estimate(irradiance_estimate: impl Fn(&[Photon], f32, Vector) -> C
     }
     expect_vector_near(
         format!(
-            "{} photons of total power 10 spread evenly over a disc of radius 2 give their power over its area, 10 / (4 pi) (the cone filter neither makes nor loses light); the estimate",
+            "{} photons of total power 10 spread evenly over a disc of radius 2 give their power over its area, 10 / \
+             (4 pi) (the cone filter neither makes nor loses light); the estimate",
             photons.len()
         ),
         irradiance_estimate(&photons, radius * radius, n),
