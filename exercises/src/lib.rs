@@ -7,7 +7,7 @@
 //!
 //! ```sh
 //! cargo test -p exercises                                         # grade every exercise
-//! cargo run --release --features exercises --example fresnel      # a picture drawn with your functions
+//! cargo run --features exercises --example fresnel                # a picture drawn with your functions
 //! ```
 //!
 //! The grader checks each exercise against facts (values the slide's formula gives, invariants such as
