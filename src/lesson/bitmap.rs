@@ -147,6 +147,7 @@ impl Bitmap {
                 at(wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height))
             }
             Filter::Bilinear => {
+                exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
                 // Texel centres sit at half-integer coordinates.
                 let (fx, fy) = (x - 0.5, y - 0.5);
                 let (x0, y0) = (floor(fx), floor(fy));

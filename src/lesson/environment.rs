@@ -176,6 +176,7 @@ impl CubeFace {
 
 /// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
 pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
+    exercise!(cube_face_uv(dir));
     let a = dir.abs();
     let face = if a.x >= a.y && a.x >= a.z {
         if dir.x >= 0.0 { CubeFace::PosX } else { CubeFace::NegX }

@@ -34,6 +34,12 @@ impl Default for Transform {
     }
 }
 
+/// The inverse of an affine map (the slide's T^-1, which moves rays into canonical space).
+fn inverse(t: Affine3A) -> Affine3A {
+    exercise!(transform_inverse(t));
+    t.inverse()
+}
+
 /// The largest absolute row sum of a matrix: a bound on how much it can grow a coordinate.
 fn norm_inf(m: &Mat3A) -> f32 {
     let t = m.transpose();
@@ -50,7 +56,7 @@ impl Transform {
 
     fn then(self, step: Affine3A) -> Transform {
         let forward = step * self.forward;
-        let inverse = forward.inverse();
+        let inverse = inverse(forward);
         let translation_only = forward.matrix3 == Mat3A::IDENTITY;
         Transform { forward, inverse, normal_matrix: inverse.matrix3.transpose(), translation_only }
     }

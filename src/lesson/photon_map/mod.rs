@@ -241,6 +241,7 @@ impl PhotonMap {
                 }
                 found.iter().fold(0.0, |m, f| f.d2().max(m))
             };
+            exercise!(irradiance_estimate(found.iter().map(|f| (f.d2(), &self.photons[f.index()])), r2, n));
             let filter_radius = CONE_FILTER_K * r2.sqrt();
             let mut sum = Color::BLACK;
             for f in found.iter() {

@@ -48,6 +48,14 @@ impl Layer {
     }
 }
 
+/// The weight in the final colour of a layer of opacity `blend`, when the layers above it let `uncovered`
+/// through: the slide's `res = res * (1 - blend) + layer_color * blend`, unrolled from the top down.
+#[inline]
+pub fn layer_weight(uncovered: Color, blend: Color) -> Color {
+    exercise!(layer_weight(uncovered, blend));
+    uncovered * blend
+}
+
 /// The most layers a `Layered` may have (the slide's `MAX_LAYERS`).
 pub const MAX_LAYERS: usize = 32;
 
@@ -96,7 +104,7 @@ impl Layered {
         let mut bottom = self.layers.len();
         for (i, layer) in self.layers.iter().enumerate().rev() {
             let blend = layer.blend_at(ray, info);
-            weights[i] = uncovered * blend;
+            weights[i] = layer_weight(uncovered, blend);
             uncovered *= Color::WHITE - blend;
             bottom = i;
             if uncovered.max_channel() <= 0.0 {
@@ -115,7 +123,7 @@ impl Shader for Layered {
         let mut uncovered = Color::WHITE;
         for layer in self.layers.iter().rev() {
             let blend = layer.blend_at(ray, info);
-            let weight = uncovered * blend;
+            let weight = layer_weight(uncovered, blend);
             let strength = weight.max_channel();
             if strength > 0.0 || self.every_layer {
                 let layer_ray = Ray { weight: ray.weight * strength, ..*ray };

@@ -167,15 +167,24 @@ pub struct GlossyCone {
 impl GlossyCone {
     /// The cone for the unit incoming direction `incoming` at a surface whose unit normal `n` faces it.
     pub fn new(incoming: Vector, n: Vector, glossiness: f32) -> GlossyCone {
-        GlossyCone { incoming, basis: OrthonormalBasis::new(n), scaling: ((1.0 - glossiness) * FRAC_PI_2).tan() }
+        GlossyCone { incoming, basis: OrthonormalBasis::new(n), scaling: glossy_scaling(glossiness) }
     }
 
     /// The reflection about the normal tilted by the disc point (x, y), or `None` when it goes under the
     /// surface.
     pub fn direction(&self, (x, y): (f32, f32)) -> Option<Vector> {
+        exercise!(glossy_direction(self.incoming, &self.basis, self.scaling, (x, y)));
         let normal = self.basis.normal;
         let perturbed = (normal + self.basis.to_world(x * self.scaling, y * self.scaling, 0.0)).normalize();
         let dir = reflect(self.incoming, perturbed);
         (dir.dot(normal) > 0.0).then_some(dir)
     }
+}
+
+/// How far a point of the unit disc tilts the normal, as a tangent, for a surface of this glossiness (step 3
+/// of the slide's algorithm): `tan((1 - glossiness) * pi/2)`, 0 for a perfect mirror, unbounded towards a
+/// matte surface.
+pub fn glossy_scaling(glossiness: f32) -> f32 {
+    exercise!(glossy_scaling(glossiness));
+    ((1.0 - glossiness) * FRAC_PI_2).tan()
 }
