@@ -46,10 +46,11 @@ pub enum Illuminant {
 }
 
 impl Illuminant {
-    /// The relative spectral power at `lambda` nanometres (100 at 560 nm); 0 outside the tables.
+    /// The relative spectral power at `lambda` nanometres (100 at 560 nm; D65's table interpolated linearly);
+    /// 0 outside the tables.
     pub fn power(self, lambda: f64) -> f64 {
         match self {
-            Illuminant::D65 => interpolated(&cie::D65, lambda),
+            Illuminant::D65 => segment(lambda).map_or(0.0, |(i, f)| cie::D65[i] + f * (cie::D65[i + 1] - cie::D65[i])),
             Illuminant::EqualEnergy if segment(lambda).is_some() => 100.0,
             Illuminant::EqualEnergy => 0.0,
         }
@@ -72,11 +73,6 @@ fn segment(lambda: f64) -> Option<(usize, f64)> {
     })
 }
 
-/// D65's relative power at `lambda`, interpolated linearly; 0 outside the table.
-fn interpolated(table: &[f64], lambda: f64) -> f64 {
-    segment(lambda).map_or(0.0, |(i, f)| table[i] + f * (table[i + 1] - table[i]))
-}
-
 /// The CIE 1931 2° colour-matching functions x̄, ȳ, z̄ at `lambda` nanometres: the 5 nm tables interpolated
 /// linearly; 0 outside 380-780 nm.
 pub fn cie_xyz(lambda: f64) -> [f64; 3] {
@@ -97,8 +93,8 @@ fn xyz_to_srgb_matrix() -> &'static DMat3 {
         let [x, y, z] = *cumulative_xyz(Illuminant::D65).last().expect("the table is not empty");
         let white = DVec3::new(x, y, z) / y;
         let column = |[x, y]: [f64; 2]| DVec3::new(x / y, 1.0, (1.0 - x - y) / y);
-        let primaries =
-            DMat3::from_cols(column(SRGB_PRIMARIES[0]), column(SRGB_PRIMARIES[1]), column(SRGB_PRIMARIES[2]));
+        let [red, green, blue] = SRGB_PRIMARIES.map(column);
+        let primaries = DMat3::from_cols(red, green, blue);
         let scale = primaries.inverse() * white;
         (primaries * DMat3::from_diagonal(scale)).inverse()
     })
