@@ -22,7 +22,7 @@
 //! | [`lesson::light`], [`lesson::scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`lesson::render`], [`lesson::frame`], [`lesson::adaptive_aa`] | the parallel, deterministic renderer and the picture it makes; the course's adaptive anti-aliasing |
 //! | [`lesson::tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
-//! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
+//! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR; the colours of wavelengths (CIE 1931 tables, D65 or equal-energy light, gamut mapping); wavelength passes, spectral and hero-wavelength sampling |
 //! | [`lesson::photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
 //! | [`lesson::sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
 //! | [`instruments::ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |

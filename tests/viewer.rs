@@ -48,7 +48,7 @@ fn every_option_becomes_a_control_of_its_kind() {
     assert!(!seed.optional && seed.value == "1", "{seed:?}");
     let spectral = control("spectral").unwrap();
     assert!(spectral.optional && spectral.value.is_empty() && matches!(spectral.kind, Kind::Choice(_)));
-    assert_eq!(spectral.placeholder, "passes");
+    assert_eq!(spectral.placeholder, "hero");
     for absent in ["window", "output", "help", "quiet", "compare", "trace-pixel", "view", "side-by-side", "threads"] {
         assert_eq!(kind(absent), None, "--{absent} is the window's, not a control");
     }

@@ -117,7 +117,7 @@ pub fn preview_settings(settings: &RenderSettings) -> RenderSettings {
 
 /// The wavelength plan a render of `scene` with `settings` follows (as [`crate::lesson::render::render`] chooses it).
 fn plan_for(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
-    SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths)
+    crate::lesson::render::spectral_plan(scene, settings)
 }
 
 /// Renders the whole of a (small) picture with `settings`, rows in parallel, unless `cancel` is set first:

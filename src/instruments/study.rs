@@ -10,7 +10,8 @@
 //! in a flat bright one).
 //!
 //! `benches/error_vs_time.rs` runs the study of every stochastic example and writes a Markdown table and a
-//! log-log chart. Another example joins it with one more [`Sweep::new`] there; a test
+//! log-log chart, with the equal-time and equal-error comparisons of the ways to do the same thing (glossy
+//! samplers; wavelength passes against per-path spectral sampling). Another example joins it with one more [`Sweep::new`] there; a test
 //! (`tests/study.rs`) checks on a tiny picture that the error really falls as the sample count rises.
 
 use crate::app::cli::{Cli, Example};
@@ -281,6 +282,24 @@ pub fn rmse_at_time(curve: &[Measurement], seconds: f64) -> Option<f64> {
         }
         let t = (seconds.ln() - a.seconds.ln()) / (b.seconds.ln() - a.seconds.ln());
         Some((a.rmse.ln() + t * (b.rmse.ln() - a.rmse.ln())).exp())
+    })
+}
+
+/// What a curve (measurements in order of rising cost) would cost to reach the error `rmse`, by `cost` (the
+/// time, or the rays), interpolated linearly in log(cost)-log(error) between the first two neighbouring
+/// points whose errors bracket it; `None` if no two do.
+pub fn cost_at_rmse(curve: &[Measurement], rmse: f64, cost: fn(&Measurement) -> f64) -> Option<f64> {
+    curve.windows(2).find_map(|w| {
+        let (a, b) = (&w[0], &w[1]);
+        let (lo, hi) = (a.rmse.min(b.rmse), a.rmse.max(b.rmse));
+        if !(lo..=hi).contains(&rmse) {
+            return None;
+        }
+        if hi == lo {
+            return Some(cost(a).min(cost(b)));
+        }
+        let t = (rmse.ln() - a.rmse.ln()) / (b.rmse.ln() - a.rmse.ln());
+        Some((cost(a).ln() + t * (cost(b).ln() - cost(a).ln())).exp())
     })
 }
 

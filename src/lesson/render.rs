@@ -10,9 +10,13 @@
 //!
 //! Dispersion (see [`crate::lesson::spectral`]): a scene whose shaders depend on the wavelength is traced once per
 //! wavelength band (the slide's K passes; each pass of a pixel has its own random stream, keyed by the pass)
-//! or, with spectral sampling, once with a band of its own for every anti-aliasing sample. The bands'
-//! colours are added in double precision, so a surface that looks the same in every band keeps its colour
-//! exactly. A scene with nothing dispersive is traced once, in white light, whatever `wavelengths` says.
+//! or in one pass whose samples carry wavelengths of their own: one each (spectral sampling), or several
+//! (hero-wavelength sampling), which follow one path until it meets a dispersive surface
+//! ([`TraceContext::met_dispersion`]) and are then traced one by one. The bands' colours are added in double
+//! precision, so a surface that looks the same in every band keeps its colour exactly. The frame keeps
+//! colours outside the sRGB gamut as they are (negative channels); the picture that is shown maps them
+//! ([`crate::lesson::spectral::GamutMapping`]). A scene with nothing dispersive is traced once, in white
+//! light, whatever `wavelengths` says.
 
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
@@ -23,7 +27,7 @@ use crate::lesson::photon_map::PhotonStats;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::{Rng, key_of, mix64, shuffled_index};
 use crate::lesson::scene::{Counters, PixelSample, RECURSION_SAFETY_CAP, Scene, TraceContext};
-use crate::lesson::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
+use crate::lesson::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
@@ -60,9 +64,10 @@ pub struct RenderSettings {
     pub seed: u64,
     /// Show a progress bar on stderr (only when stderr is a terminal).
     pub progress: bool,
-    /// Wavelength passes for a dispersive scene (the slide's K); ignored by other scenes and by spectral sampling.
+    /// For a dispersive scene, the wavelength passes (the slide's K) or, with hero-wavelength sampling, the
+    /// wavelengths each path carries; ignored by other scenes and by spectral sampling.
     pub wavelengths: u32,
-    /// How a dispersive scene is traced: K wavelength passes or one wavelength per sample.
+    /// How a dispersive scene is traced: K wavelength passes, one wavelength per sample, or hero wavelengths.
     pub spectral: SpectralMode,
     /// The course's adaptive anti-aliasing after the single sample of each pixel (see
     /// [`crate::lesson::adaptive_aa`]); needs `spp` 1.
@@ -82,8 +87,8 @@ impl Default for RenderSettings {
             threads: None,
             seed: 1,
             progress: false,
-            wavelengths: 8,
-            spectral: SpectralMode::Passes,
+            wavelengths: SpectralMode::default().default_wavelengths(),
+            spectral: SpectralMode::default(),
             adaptive_aa: false,
             max_sample: None,
         }
@@ -210,8 +215,12 @@ impl Stratifier {
 /// scene is traced as `settings.spectral` says; any other in one white pass.
 pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, RenderStats)> {
     settings.check()?;
-    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
-    render_with_plan(scene, settings, plan)
+    render_with_plan(scene, settings, spectral_plan(scene, settings))
+}
+
+/// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive.
+pub fn spectral_plan(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
+    SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths, scene.illuminant)
 }
 
 /// Renders the scene with the given wavelength plan, whether or not the scene needs it (tests use this to
@@ -300,7 +309,7 @@ pub fn render_pixel(
         ));
     }
     settings.check()?;
-    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    let plan = spectral_plan(scene, settings);
     let camera = scene.camera.frame(settings.width, settings.height);
     let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
     tracer.observer = observer.map(|o| o as &mut dyn Observer);
@@ -312,7 +321,7 @@ pub fn render_pixel(
 /// use it.
 pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
     settings.check()?;
-    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    let plan = spectral_plan(scene, settings);
     let camera = scene.camera.frame(settings.width, settings.height);
     let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
     let mut pixels = Vec::with_capacity(xs.len());
@@ -350,6 +359,10 @@ pub fn render_rect(
 
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
 const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
+
+/// A salt for the random streams of the wavelengths of spectral and hero sampling, kept apart from the
+/// pixel's own stream so that the camera rays are those of the white render.
+const WAVELENGTH_KEY: u64 = 0x5741_5645_4c45_4e47;
 
 /// A salt for the pixels' sample-set keys, so that they are unrelated to the seeds of the pixels' streams.
 const SAMPLE_SET_KEY: u64 = 0x5345_5453_414d_504c;
@@ -421,31 +434,57 @@ impl<'a> PixelTracer<'a> {
                     let stream_keys = [seed, x as u64, y as u64, PASS_KEY, k as u64];
                     add_weighted(&mut sum, band, self.samples(x, y, &stream_keys, Some(band.centre())));
                 }
-                fit_to_gamut(to_color(sum))
+                to_color(sum)
             }
-            SpectralPlan::Sampled => {
-                let spp = self.settings.spp;
-                let stream_keys = [seed, x as u64, y as u64];
-                let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
-                let pixel_key = pixel_key(&stream_keys);
-                ctx.observer = self.observer.take();
-                self.stratifier.start_pixel(&mut ctx.rng);
-                // Sample s traces band shuffled_index(s): every band once, in an order of the pixel's own.
-                let bands_key = ctx.rng.next_u32();
-                let mut sum = [0.0f64; 3];
-                for s in 0..spp {
-                    ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
-                    let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
-                    let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
-                    let wavelength = Some(band.at(ctx.rng.next_f32()));
-                    let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-                    add_weighted(&mut sum, &band, self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters));
+            SpectralPlan::Sampled => self.wavelength_samples(x, y, 1, false),
+            &SpectralPlan::Hero { per_path } => self.wavelength_samples(x, y, per_path, true),
+        }
+    }
+
+    /// Spectral sampling in one pass: the pixel's `spp` samples share out `per_path * spp` equal bands of the
+    /// spectrum, each sample `per_path` of them spread evenly over it (bands `b`, `b + spp`, `b + 2 spp`, ...,
+    /// `b` a different one for every sample, in an order of the pixel's own), its wavelengths at the same
+    /// jittered place in each band. Every sample's path is traced at each of its wavelengths and weighted by
+    /// the band's colour; every band is seen once, so that the bands' colours add up to the light's. With
+    /// `split` (hero-wavelength sampling) the path is first traced at the first of its wavelengths (the hero)
+    /// only, and if it met nothing dispersive, what it brought back holds for every wavelength: the sample
+    /// counts as white light, `1 / spp` of the light's colour, as in a white render. Only a path that met
+    /// dispersive glass is traced again for the others (from the camera: the part before the glass is the
+    /// same for every wavelength).
+    fn wavelength_samples(&mut self, x: u32, y: u32, per_path: u32, split: bool) -> Color {
+        let (seed, spp, illuminant) = (self.settings.seed, self.settings.spp, self.scene.illuminant);
+        let stream_keys = [seed, x as u64, y as u64];
+        let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
+        let mut wavelength_rng = Rng::for_keys(&[seed, x as u64, y as u64, WAVELENGTH_KEY]);
+        let pixel_key = pixel_key(&stream_keys);
+        ctx.observer = self.observer.take();
+        self.stratifier.start_pixel(&mut ctx.rng);
+        let bands_key = wavelength_rng.next_u32();
+        // Paths that met nothing dispersive, as a white render adds them; the others, band by band.
+        let mut white = Color::BLACK;
+        let mut spectral = [0.0f64; 3];
+        for s in 0..spp {
+            ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
+            let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
+            let camera_ray = self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy);
+            let first = shuffled_index(s, spp, bands_key);
+            let u = wavelength_rng.next_f32();
+            for j in 0..per_path {
+                let band = Band::nth(first + j * spp, per_path * spp, illuminant);
+                ctx.met_dispersion = false;
+                let ray = Ray { wavelength: Some(band.at(u)), ..camera_ray };
+                let c = self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters);
+                if split && j == 0 && !ctx.met_dispersion {
+                    white += c;
+                    break;
                 }
-                self.counters.add(&ctx.counters);
-                self.observer = ctx.observer.take();
-                fit_to_gamut(to_color(sum))
+                add_weighted(&mut spectral, &band, c);
             }
         }
+        self.counters.add(&ctx.counters);
+        self.observer = ctx.observer.take();
+        let light = illuminant.white();
+        white / spp as f32 * to_color(light) + to_color(spectral)
     }
 }
 

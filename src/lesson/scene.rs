@@ -25,6 +25,7 @@ use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
 use crate::lesson::shader::Layer;
+use crate::lesson::spectral::Illuminant;
 use std::sync::Arc;
 
 /// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
@@ -65,6 +66,8 @@ pub struct Scene {
     pub min_ray_weight: f32,
     /// How the caustic photon map is made (no photons by default).
     pub photons: PhotonSettings,
+    /// The spectrum a white light stands for when wavelengths are traced (a dispersive scene): D65 by default.
+    pub illuminant: Illuminant,
     /// The caustic photon map, built before rendering ([`PhotonMap::build`]); `None` renders without
     /// caustics.
     pub photon_map: Option<Arc<PhotonMap>>,
@@ -84,6 +87,7 @@ impl Scene {
             max_depth: MAX_RAY_DEPTH,
             min_ray_weight: srgb8_finest_step(),
             photons: PhotonSettings::default(),
+            illuminant: Illuminant::default(),
             photon_map: None,
             node_tree: None,
         }
@@ -240,11 +244,21 @@ pub struct TraceContext<'a> {
     /// [`crate::lesson::observer`]. Shaders never use it; `raytrace`, the light loop and `shade_layer` report
     /// to it.
     pub observer: Option<&'a mut dyn Observer>,
+    /// Set when a ray that carries a wavelength hits a node whose shader depends on it: from there on the
+    /// path is its wavelength's own (hero-wavelength sampling splits there; see [`crate::lesson::render`]).
+    pub met_dispersion: bool,
 }
 
 impl<'a> TraceContext<'a> {
     pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
-        TraceContext { scene, rng, pixel_sample: None, counters: Counters::default(), observer: None }
+        TraceContext {
+            scene,
+            rng,
+            pixel_sample: None,
+            counters: Counters::default(),
+            observer: None,
+            met_dispersion: false,
+        }
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
@@ -268,6 +282,7 @@ impl<'a> TraceContext<'a> {
         let (color, stop) = match scene.closest_hit(ray) {
             Some((info, node)) => {
                 self.observe(|o| o.ray_hits(scene, node, &info));
+                self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
                 (node.shader.shade(ray, &info, self), None)
             }
             None => (scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)), Some(Stop::Missed)),

@@ -89,6 +89,9 @@ pub struct Emitter {
     cones: Vec<Cone>,
     /// For a scene with dispersive materials, the bands of the photons' wavelengths; empty for white light.
     bands: Vec<Band>,
+    /// The colour of the scene's light ([`crate::lesson::spectral::Illuminant::white`]), which the wavelength
+    /// passes give the caustic estimate as they give every other light.
+    white: Color,
 }
 
 impl Emitter {
@@ -128,13 +131,16 @@ impl Emitter {
             (cone.first, cone.count, cone.shift) = (first, n, (rng.next_f32(), rng.next_f32()));
             first += n;
         }
-        let bands = if scene.is_dispersive() { bands(PHOTON_BANDS) } else { Vec::new() };
-        Some(Emitter { cones, bands })
+        let bands = if scene.is_dispersive() { bands(PHOTON_BANDS, scene.illuminant) } else { Vec::new() };
+        let [r, g, b] = scene.illuminant.white();
+        Some(Emitter { cones, bands, white: Color::new(r as f32, g as f32, b as f32) })
     }
 
     /// Photon number `index`: its ray from the light and its power. In a dispersive scene the photon gets a
     /// wavelength in one of the [`PHOTON_BANDS`] bands of the visible range, and carries the colour of its
-    /// band times the number of bands, so that together the photons are as white as the light.
+    /// band times the number of bands, as a part of the light's colour (divided by it, channel by channel:
+    /// the wavelength passes multiply the caustic estimate by the light's colour, as every light), so that
+    /// together the photons are as white as the light.
     fn emit(&self, scene: &Scene, index: u32, rng: &mut Rng) -> (Ray, Color) {
         let chosen = self.cones.partition_point(|c| c.first + c.count <= index);
         let cone = &self.cones[chosen];
@@ -159,7 +165,8 @@ impl Emitter {
         let k = self.bands.len() as u32;
         let band = &self.bands[((index - cone.first + (cone.shift.0 * k as f32) as u32) % k) as usize];
         let ray = Ray { wavelength: Some(band.at(rng.next_f32())), ..Ray::new(light.position, dir) };
-        (ray, power * band.color() * self.bands.len() as f32)
+        let colour = Color(band.color().0 / self.white.0);
+        (ray, power * colour * self.bands.len() as f32)
     }
 
     /// The photons emitted in all.

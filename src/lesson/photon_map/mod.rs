@@ -48,9 +48,12 @@
 //!   stored in index order: the same picture for any number of threads.
 //! - Chromatic caustics (the slide: "всеки да носи информация само за определена дължина на вълната"): in a
 //!   scene with dispersive materials every photon gets a wavelength and the colour of its band of the
-//!   spectrum. Photons are [`Ray`](crate::lesson::ray::Ray)s, so the glass bends each by the index at its wavelength and the map
-//!   holds coloured light. The estimate is already the sum over the spectrum, so the diffuse shaders add it
-//!   in every wavelength pass: the passes' colours add up to white, and the caustic is counted once.
+//!   spectrum (see [`crate::lesson::spectral::Band`]). Photons are [`Ray`](crate::lesson::ray::Ray)s, so the glass bends each by the index
+//!   at its wavelength and the map holds coloured light. The estimate is already the sum over the spectrum,
+//!   so the diffuse shaders add it in every wavelength pass: the passes' colours add up to the light's, and
+//!   the caustic is counted once. Its sum of single-wavelength colours may lie outside the sRGB gamut; since
+//!   light arriving at a surface cannot be negative, the estimate's negative channels are clipped (whatever
+//!   `--gamut` says of the picture).
 
 mod emitter;
 mod grid;
@@ -62,7 +65,7 @@ use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::Aabb;
 use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
-use crate::lesson::spectral::fit_to_gamut;
+use crate::lesson::spectral::clip_to_gamut;
 use grid::{Found, PhotonGrid, SEARCH_FRACTIONS};
 use std::cell::RefCell;
 use std::f32::consts::PI;
@@ -250,9 +253,9 @@ impl PhotonMap {
                     sum += photon.power * (1.0 - d2.sqrt() / filter_radius);
                 }
             }
-            // Photons of single wavelengths carry colours outside the sRGB gamut; their sum is brought back
-            // to it.
-            fit_to_gamut(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2))
+            // Photons of single wavelengths carry colours outside the sRGB gamut, and so may their sum; the
+            // light arriving at a surface cannot be negative, so negative channels are clipped.
+            clip_to_gamut(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2))
         })
     }
 
@@ -266,7 +269,7 @@ impl PhotonMap {
         let Some(nearest) = nearest else {
             return Color::BLACK;
         };
-        let color = fit_to_gamut(self.photons[nearest.index()].power);
+        let color = clip_to_gamut(self.photons[nearest.index()].power);
         color * (DOT_IRRADIANCE / color.max_channel())
     }
 }
