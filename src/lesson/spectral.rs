@@ -31,9 +31,11 @@ use std::sync::OnceLock;
 pub const LAMBDA_MIN: f32 = 400.0;
 /// The longest wavelength traced, in nanometres.
 pub const LAMBDA_MAX: f32 = 700.0;
-/// The Fraunhofer lines that define n_d and the Abbe number, in nanometres.
+/// The helium d line (yellow), in nanometres: where a glass's n_d is measured.
 pub const LAMBDA_D: f32 = 587.6;
+/// The hydrogen F line (blue), in nanometres: with the C line, it gives the dispersion n_F - n_C.
 pub const LAMBDA_F: f32 = 486.1;
+/// The hydrogen C line (red), in nanometres.
 pub const LAMBDA_C: f32 = 656.3;
 /// The most wavelength passes a render may ask for (bands 0.3 nm wide).
 pub const MAX_WAVELENGTHS: u32 = 1000;
@@ -44,9 +46,19 @@ pub enum Ior {
     /// The same index at every wavelength.
     Constant(f32),
     /// Cauchy's equation `n(λ) = a + b / λ²`, λ in micrometres.
-    Cauchy { a: f32, b: f32 },
+    Cauchy {
+        /// The index the curve tends to at long wavelengths.
+        a: f32,
+        /// How strongly the index rises towards the blue, in µm².
+        b: f32,
+    },
     /// Sellmeier's equation `n²(λ) = 1 + Σ b_i λ² / (λ² - c_i)`, λ in micrometres (c_i in µm²).
-    Sellmeier { b: [f32; 3], c: [f32; 3] },
+    Sellmeier {
+        /// The strengths b_1, b_2, b_3 of the three terms (no unit).
+        b: [f32; 3],
+        /// The resonance wavelengths squared c_1, c_2, c_3, in µm².
+        c: [f32; 3],
+    },
 }
 
 impl Ior {
@@ -186,8 +198,9 @@ fn cumulative_at(lambda: f64) -> [f64; 3] {
 /// A band of wavelengths: the part of the spectrum one pass (or one sample) stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
-    /// Shortest and longest wavelength of the band, nanometres.
+    /// Shortest wavelength of the band, in nanometres.
     pub lo: f32,
+    /// Longest wavelength of the band, in nanometres.
     pub hi: f32,
     /// The band's colour in linear sRGB: the integral of the colour-matching functions over the band, as a
     /// fraction of their integral over the visible range. Channels may be negative (outside the gamut).
