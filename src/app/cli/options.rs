@@ -37,6 +37,7 @@ where
 
 // Options every example accepts. (A plain comment: a doc comment here would become every example's `--help`
 // description, which is its `Options` doc comment.)
+#[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
     /// Image width in pixels. [default: 640, or a scene file's own]
@@ -98,6 +99,7 @@ pub struct CommonArgs {
     /// pass; every anti-aliasing sample carries its own band of the spectrum). [default: passes]
     #[arg(long, value_enum, help_heading = DISPERSION)]
     pub spectral: Option<SpectralMode>,
+    /// The photon-mapping options (`--photons`, `--k`, `--radius`, `--show-photons`).
     #[command(flatten)]
     pub photons: PhotonArgs,
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
@@ -149,6 +151,7 @@ const HEADING: &str = "Caustics (photon mapping)";
 
 // The photon-mapping options every example accepts. (A plain comment, as on `cli::CommonArgs`: a doc comment
 // here would become every example's `--help` description.)
+#[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct PhotonArgs {
     /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.
