@@ -85,8 +85,9 @@ impl Options {
     }
 }
 
-/// `--glass abbe`'s defaults: SF11's index at 587.6 nm and its Abbe number.
+/// `--glass abbe`'s default index: SF11's n_d, at 587.6 nm.
 pub const SF11_ND: f32 = 1.7847;
+/// `--glass abbe`'s default Abbe number: SF11's V_d.
 pub const SF11_ABBE: f32 = 25.68;
 
 /// The wavelength (nm) whose minimum-deviation ray through the prism's centre meets the slit.

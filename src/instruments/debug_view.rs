@@ -35,6 +35,7 @@ pub enum DebugView {
 
 /// A debug view: the picture, the range of the quantity it shows and its scale in words.
 pub struct DebugImage {
+    /// The false-colour picture: the quantity mapped straight to 8-bit codes (no sRGB encoding).
     pub image: image::RgbImage,
     /// The smallest and the largest value shown (over the pixels that hit something, for the geometric
     /// views): normal components, u/v, distances, ray counts or depths.

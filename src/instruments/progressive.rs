@@ -38,11 +38,17 @@ pub const COARSE_SCALE: u32 = 4;
 /// for them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Tile {
+    /// The tile's left edge: the column of its first pixel.
     pub x: u32,
+    /// The tile's top edge: the row of its first pixel.
     pub y: u32,
+    /// Width in pixels (smaller than [`TILE_SIZE`] at the picture's right edge).
     pub width: u32,
+    /// Height in pixels (smaller than [`TILE_SIZE`] at the picture's bottom edge).
     pub height: u32,
+    /// The tile's linear colours, row by row from its top-left pixel; empty until it is drawn.
     pub pixels: Vec<Color>,
+    /// All rays traced for the tile (camera, secondary and shadow rays); 0 until it is drawn.
     pub rays: u64,
 }
 

@@ -23,6 +23,7 @@ use std::time::Duration;
 
 /// A render and what it cost.
 pub struct Timed {
+    /// The rendered picture, in linear light.
     pub frame: Frame,
     /// Wall time of the render itself (parsing and scene building excluded), in seconds.
     pub seconds: f64,
@@ -49,6 +50,7 @@ pub fn render_timed<E: Example>(args: &[String]) -> Result<Timed> {
 /// sample-count option that is swept.
 #[derive(Clone, Debug)]
 pub struct Sweep {
+    /// The example's name (`glossy`): the file in `examples/` and the name of its cached reference.
     pub example: &'static str,
     /// What the curve is called in the table and the chart.
     pub label: String,
@@ -56,6 +58,7 @@ pub struct Sweep {
     pub fixed: Vec<String>,
     /// The option swept, e.g. `--glossy-samples`.
     pub knob: &'static str,
+    /// The values the knob takes, one render each.
     pub values: Vec<u32>,
     /// The options of the reference (added to `fixed`; later options win, as clap reads them).
     pub reference: Vec<String>,
@@ -201,11 +204,15 @@ pub fn output_dir() -> PathBuf {
 /// One point of a sweep.
 #[derive(Clone, Debug)]
 pub struct Measurement {
+    /// The example's name (see [`Sweep::example`]).
     pub example: &'static str,
+    /// The curve's label (see [`Sweep::label`]).
     pub label: String,
     /// All the options that made the reference (measurements against different references do not compare).
     pub reference: String,
+    /// The option swept (see [`Sweep::knob`]).
     pub knob: &'static str,
+    /// The knob's value at this point.
     pub value: u32,
     /// Median wall time of the render, in seconds.
     pub seconds: f64,

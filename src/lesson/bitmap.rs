@@ -64,6 +64,7 @@ enum Texels {
     Srgb8 { codes: Vec<[u8; 4]>, table: &'static [f32; 256] },
 }
 
+/// An image in linear light, addressed by pixel or sampled by texture coordinates (slide "Bitmap текстури").
 #[derive(Clone, Debug)]
 pub struct Bitmap {
     width: usize,
@@ -109,9 +110,11 @@ impl Bitmap {
         Ok(Bitmap { width, height, texels })
     }
 
+    /// Width in pixels.
     pub fn width(&self) -> usize {
         self.width
     }
+    /// Height in pixels.
     pub fn height(&self) -> usize {
         self.height
     }

@@ -102,7 +102,9 @@ pub fn equirect_direction(u: f32, v: f32) -> Vector {
 /// An environment from one equirectangular image (the slides' spherical environment).
 #[derive(Clone, Debug)]
 pub struct SphericalEnvironment {
+    /// The equirectangular image (twice as wide as high), in linear light; its centre faces +Z.
     pub bitmap: Arc<Bitmap>,
+    /// How the image is read between texel centres (bilinear unless changed with `with_filter`).
     pub filter: Filter,
 }
 
@@ -126,6 +128,7 @@ impl SphericalEnvironment {
         Ok(SphericalEnvironment::new(Arc::new(bitmap)))
     }
 
+    /// The same environment read with `filter`.
     pub fn with_filter(self, filter: Filter) -> SphericalEnvironment {
         SphericalEnvironment { filter, ..self }
     }
@@ -142,11 +145,17 @@ impl Environment for SphericalEnvironment {
 /// One face of a cube map.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CubeFace {
+    /// The face around +X (file `posx`).
     PosX,
+    /// The face around -X (file `negx`).
     NegX,
+    /// The face around +Y, straight up (file `posy`).
     PosY,
+    /// The face around -Y, straight down (file `negy`).
     NegY,
+    /// The face around +Z, where the default camera looks (file `posz`).
     PosZ,
+    /// The face around -Z, behind the default camera (file `negz`).
     NegZ,
 }
 
@@ -225,6 +234,7 @@ fn half_turn(bitmap: &Bitmap) -> Bitmap {
 pub struct CubemapEnvironment {
     /// In the order of [`CubeFace::ALL`].
     pub faces: [Arc<Bitmap>; 6],
+    /// How the faces are read between texel centres (bilinear unless changed with `with_filter`).
     pub filter: Filter,
 }
 
@@ -288,6 +298,7 @@ impl CubemapEnvironment {
         Ok(CubemapEnvironment::new(faces.map(|(_, bitmap)| Arc::new(bitmap))))
     }
 
+    /// The same cube map read with `filter`.
     pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {
         CubemapEnvironment { filter, ..self }
     }

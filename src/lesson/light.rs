@@ -7,15 +7,19 @@ use crate::lesson::math::Vector;
 use crate::lesson::observer::Light;
 use crate::lesson::scene::TraceContext;
 
+/// A point light (lectures 2-3): light from one point, falling off with the square of the distance.
 #[derive(Clone, Copy, Debug)]
 pub struct PointLight {
+    /// Where the light is, in world space.
     pub position: Vector,
+    /// The light's colour, in linear RGB; `intensity` scales it.
     pub color: Color,
     /// The course's light "power": irradiance at distance 1 is `color * intensity`.
     pub intensity: f32,
 }
 
 impl PointLight {
+    /// A light at `position` (world space) of the given colour and intensity.
     pub fn new(position: Vector, color: Color, intensity: f32) -> PointLight {
         PointLight { position, color, intensity }
     }

@@ -94,12 +94,16 @@ pub fn fresnel_exact(i: Vector, n: Vector, eta1_over_eta2: f32) -> f32 {
 /// (JCGT 2017), which has no singularity anywhere on the sphere.
 #[derive(Clone, Copy, Debug)]
 pub struct OrthonormalBasis {
+    /// First vector perpendicular to `normal` (the local x axis).
     pub tangent: Vector,
+    /// Second vector perpendicular to `normal` and to `tangent` (the local y axis).
     pub bitangent: Vector,
+    /// The unit normal the basis was built around (the local z axis).
     pub normal: Vector,
 }
 
 impl OrthonormalBasis {
+    /// The basis around `normal`, which must be of unit length.
     pub fn new(normal: Vector) -> OrthonormalBasis {
         let sign = 1.0f32.copysign(normal.z);
         let a = -1.0 / (sign + normal.z);

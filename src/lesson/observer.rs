@@ -54,12 +54,24 @@ pub enum Light {
     Ambient,
     /// Lamp `index`, asked by a shadow ray that starts at `from` towards the lamp (`dir`); `visible` says
     /// whether it got there. Its colour is the irradiance it brings, the cosine included.
-    Lamp { index: usize, from: Vector, dir: Vector, visible: bool },
+    Lamp {
+        /// The lamp's index in [`Scene::lights`].
+        index: usize,
+        /// The surface point the shadow ray leaves from, in world space.
+        from: Vector,
+        /// The unit direction from `from` to the lamp.
+        dir: Vector,
+        /// True when nothing stands between the point and the lamp.
+        visible: bool,
+    },
     /// The caustic light of the photon map (irradiance).
     Photons,
     /// What the shader added of its own for lamp `index` (Phong's highlight): a colour seen as it is, not an
     /// irradiance the shader multiplies by its diffuse colour.
-    Highlight { index: usize },
+    Highlight {
+        /// The lamp's index in [`Scene::lights`].
+        index: usize,
+    },
 }
 
 impl Light {

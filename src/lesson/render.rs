@@ -54,7 +54,9 @@ pub const WORKER_STACK_SIZE: usize = RECURSION_SAFETY_CAP as usize * 8 * 1024;
 /// How to render a scene.
 #[derive(Clone, Copy, Debug)]
 pub struct RenderSettings {
+    /// Width of the picture in pixels.
     pub width: u32,
+    /// Height of the picture in pixels.
     pub height: u32,
     /// Anti-aliasing samples per pixel.
     pub spp: u32,
@@ -156,7 +158,9 @@ impl RenderSettings {
 /// What a render produced besides the picture.
 #[derive(Clone, Debug)]
 pub struct RenderStats {
+    /// Wall-clock time of the render (the photon map's construction excluded).
     pub elapsed: Duration,
+    /// Worker threads the render ran on.
     pub threads: usize,
     /// Rays of all passes.
     pub counters: Counters,
@@ -186,6 +190,7 @@ pub struct Stratifier {
 }
 
 impl Stratifier {
+    /// The sample positions for `spp` samples per pixel: a jittered grid when `spp` is a square, else N-rooks.
     pub fn new(spp: u32) -> Stratifier {
         let k = (spp as f64).sqrt().round() as u32;
         Stratifier { spp, grid: if k * k == spp { k } else { 0 }, rows_key: 0 }
@@ -286,6 +291,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
 /// One pixel rendered alone, exactly as [`render`] renders it (same samples, same random streams).
 #[derive(Clone, Debug)]
 pub struct PixelTrace {
+    /// The pixel's linear colour, as [`render`] writes it into the frame.
     pub color: Color,
     /// The rays traced for the pixel.
     pub counters: Counters,

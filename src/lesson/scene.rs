@@ -50,10 +50,15 @@ pub fn srgb8_finest_step() -> f32 {
     srgb_to_linear(1.0 / 255.0)
 }
 
+/// Everything a picture shows: the camera, the nodes, the lights, the environment and the settings of the
+/// recursion (the slides' global scene).
 #[derive(Clone)]
 pub struct Scene {
+    /// The camera the picture is seen through.
     pub camera: Camera,
+    /// The objects, in the order they were added (the ray tree names an unnamed node by its index here).
     pub nodes: Vec<Node>,
+    /// The point lights.
     pub lights: Vec<PointLight>,
     /// What rays that hit nothing see; black when `None`.
     pub environment: Option<Arc<dyn Environment>>,
@@ -77,6 +82,8 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// An empty scene seen through `camera`: no nodes or lights, a black environment, no ambient light, the
+    /// slide's [`MAX_RAY_DEPTH`], the default adaptive cut-off and no photon map.
     pub fn new(camera: Camera) -> Scene {
         Scene {
             camera,
@@ -203,6 +210,7 @@ impl Counters {
     pub fn total(&self) -> u64 {
         self.rays_by_depth.iter().sum::<u64>() + self.shadow_rays
     }
+    /// Adds `other`'s counts to these (the counters of rows rendered in parallel, summed).
     pub fn add(&mut self, other: &Counters) {
         for (a, b) in self.rays_by_depth.iter_mut().zip(&other.rays_by_depth) {
             *a += b;
@@ -233,12 +241,14 @@ pub struct PixelSample {
 
 /// The state a shader sees while one pixel is being rendered.
 pub struct TraceContext<'a> {
+    /// The scene being rendered.
     pub scene: &'a Scene,
     /// The random generator of the current pixel.
     pub rng: Rng,
     /// The camera sample being traced, when the context traces a pixel's samples: the renderer sets it
     /// before each camera ray. `None` (the default) when the rays belong to no pixel (tests, benchmarks).
     pub pixel_sample: Option<PixelSample>,
+    /// The rays this context has traced so far.
     pub counters: Counters,
     /// The instrument watching the recursion, if any (the ray tree of `--trace-pixel`): see
     /// [`crate::lesson::observer`]. Shaders never use it; `raytrace`, the light loop and `shade_layer` report
@@ -250,6 +260,7 @@ pub struct TraceContext<'a> {
 }
 
 impl<'a> TraceContext<'a> {
+    /// A context for tracing rays in `scene`, drawing its random numbers from `rng`; no pixel sample, no observer.
     pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
         TraceContext {
             scene,

@@ -17,6 +17,7 @@ use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
 use glam::{Affine3A, Mat3A};
 
+/// A model transform T and its inverse: what places a canonical shape in the world (slide "Model трансформация").
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transform {
     forward: Affine3A,
@@ -47,6 +48,7 @@ fn norm_inf(m: &Mat3A) -> f32 {
 }
 
 impl Transform {
+    /// The transform that changes nothing: where a chain of `.scale(..)`, `.rotate(..)`, `.translate(..)` starts.
     pub const IDENTITY: Transform = Transform {
         forward: Affine3A::IDENTITY,
         inverse: Affine3A::IDENTITY,

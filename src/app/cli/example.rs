@@ -59,11 +59,14 @@ pub trait Example: clap::Args + Clone + Send + Sync + 'static {
 // The whole command line of an example: its own options, then the ones every example shares. (A plain
 // comment: a doc comment here would be every example's `--help` description; each example's own is its
 // `Options` doc comment.)
+#[allow(missing_docs)]
 #[derive(clap::Parser, Clone, Debug)]
 #[command(version)]
 pub struct Cli<E: Example> {
+    /// The example's own options.
     #[command(flatten)]
     pub example: E,
+    /// The options every example shares.
     #[command(flatten)]
     pub common: CommonArgs,
 }

@@ -37,6 +37,7 @@ where
 
 // Options every example accepts. (A plain comment: a doc comment here would become every example's `--help`
 // description, which is its `Options` doc comment.)
+#[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
     /// Image width in pixels. [default: 640, or a scene file's own]
@@ -109,6 +110,7 @@ pub struct CommonArgs {
     /// keeps the unmapped values, negative channels included. [default: clip]
     #[arg(long, value_enum, help_heading = DISPERSION)]
     pub gamut: Option<GamutMapping>,
+    /// The photon-mapping options (`--photons`, `--k`, `--radius`, `--show-photons`).
     #[command(flatten)]
     pub photons: PhotonArgs,
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
@@ -160,6 +162,7 @@ const HEADING: &str = "Caustics (photon mapping)";
 
 // The photon-mapping options every example accepts. (A plain comment, as on `cli::CommonArgs`: a doc comment
 // here would become every example's `--help` description.)
+#[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct PhotonArgs {
     /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.

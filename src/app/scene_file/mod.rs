@@ -56,9 +56,11 @@ pub struct LoadOptions {
 
 /// A loaded scene file: the scene, the render settings the file asks for, and the warnings.
 pub struct SceneFile {
+    /// The scene the file describes.
     pub scene: Scene,
-    /// GlobalSettings `frameWidth` and `frameHeight`.
+    /// GlobalSettings `frameWidth`, in pixels.
     pub width: u32,
+    /// GlobalSettings `frameHeight`, in pixels.
     pub height: u32,
     /// GlobalSettings `wantAA`: the course's adaptive anti-aliasing.
     pub adaptive_aa: bool,

@@ -18,6 +18,7 @@ pub struct SlitEnvironment {
     pub half_width: f32,
     /// The slit spans elevations (radians above the horizon) from `bottom` to `top`.
     pub bottom: f32,
+    /// The elevation of the slit's top, radians above the horizon.
     pub top: f32,
     /// Radiance of the slit and the lamps (white light).
     pub radiance: f32,

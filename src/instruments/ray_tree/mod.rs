@@ -42,6 +42,7 @@ use crate::lesson::shader::Layer;
 /// What kind of ray a record is, seen from the surface that sent it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RayKind {
+    /// A camera ray, the root of a tree.
     Camera,
     /// Sent back to the side of the surface the ray came from (a mirror's ray, a glossy sample).
     Reflection,
@@ -63,20 +64,33 @@ impl std::fmt::Display for RayKind {
 /// surface, or the shader's own colour.
 #[derive(Clone, Debug)]
 pub struct Term {
+    /// What the term's light or ray colour is multiplied by in the shader's colour, per channel (the weights of
+    /// the layers it came through included).
     pub factor: Color,
     /// The layers of `Layered` shaders (if any) that produced the term, outermost first, joined by " / ".
     pub layer: String,
+    /// What the term is: a traced ray, light found at the surface, or the shader's own colour.
     pub what: TermKind,
 }
 
+/// What a [`Term`] multiplies its factor by.
 #[derive(Clone, Debug)]
 pub enum TermKind {
     /// The ray with this index in [`RayTree::rays`].
     Ray(usize),
     /// Light the light loop found.
-    Light { kind: Light, color: Color },
+    Light {
+        /// Which light: ambient, a lamp, the photon map's caustic light, or a highlight.
+        kind: Light,
+        /// What was found: an irradiance (the shader multiplies it by its colour) or, for a highlight, light
+        /// added as it is.
+        color: Color,
+    },
     /// Colour the shader returned beyond everything it gathered, in the channels where it gathered nothing.
-    Own { color: Color },
+    Own {
+        /// That colour, in linear RGB.
+        color: Color,
+    },
 }
 
 /// Where a ray hit.
@@ -84,6 +98,7 @@ pub enum TermKind {
 pub struct Hit {
     /// The node's name (see [`Node::named`]).
     pub node: String,
+    /// The ray parameter of the hit: its distance from the ray's start (the ray's direction is unit).
     pub distance: f32,
     /// The type of the node's shader.
     pub shader: &'static str,
@@ -94,14 +109,23 @@ pub struct Hit {
 /// One traced ray.
 #[derive(Clone, Debug)]
 pub struct RayRecord {
+    /// 0 for a camera ray; each reflection or refraction adds 1 ([`Ray::depth`]).
     pub depth: u32,
+    /// Camera ray, reflection or refraction, judged by the side of the surface it leaves to.
     pub kind: RayKind,
+    /// Where it starts, in world space (around the camera when the scene was moved there, see
+    /// [`Scene::relative_to_camera`]).
     pub start: Vector,
+    /// Its unit direction.
     pub dir: Vector,
+    /// How much it can still change its pixel ([`Ray::weight`]).
     pub weight: f32,
     /// The shader (and layer) that traced it; empty for a camera ray.
     pub sent_by: String,
+    /// What it hit; `None` when it hit nothing or was not traced (see `stop`).
     pub hit: Option<Hit>,
+    /// Why it was not followed further (it missed, or was cut off before being traced); `None` when it hit a
+    /// surface and was shaded.
     pub stop: Option<Stop>,
     /// The colour it brought back.
     pub color: Color,
@@ -121,6 +145,7 @@ struct Scope {
 /// The rays traced for one pixel: one tree per camera ray, in the order they were traced.
 #[derive(Clone, Debug, Default)]
 pub struct RayTree {
+    /// Every ray traced for the pixel, in the order traced; [`TermKind::Ray`] and `roots` index it.
     pub rays: Vec<RayRecord>,
     /// The camera rays: sample s of the pixel is `roots[s]` (for a dispersive scene traced in K passes,
     /// sample s of pass k is `roots[k * spp + s]`).
@@ -132,6 +157,7 @@ pub struct RayTree {
 }
 
 impl RayTree {
+    /// An empty tree, to be filled by the render of one pixel as its [`Observer`].
     pub fn new() -> RayTree {
         RayTree::default()
     }
@@ -317,7 +343,9 @@ fn ratio(numerator: f32, denominator: f32) -> f32 {
 /// A pixel named on the command line as `X,Y` (from the top left).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PixelPos {
+    /// Column, counted from the left edge (0).
     pub x: u32,
+    /// Row, counted from the top edge (0).
     pub y: u32,
 }
 
@@ -345,10 +373,12 @@ pub enum TraceFormat {
 /// A pixel rendered with its ray tree recorded.
 #[derive(Clone, Debug)]
 pub struct TracedPixel {
-    /// The pixel's colour: the mean of its camera samples' colours.
+    /// The pixel's linear colour, as the render gives it: the mean of its camera samples' colours (for a
+    /// dispersive scene traced in passes, the passes' colour-weighted sum).
     pub color: Color,
     /// The rays traced for the pixel.
     pub counters: Counters,
+    /// Every ray traced for the pixel, and how their colours add up to it.
     pub tree: RayTree,
 }
 

@@ -131,6 +131,7 @@ impl PhotonSettings {
 /// A photon stored where it landed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StoredPhoton {
+    /// Where the photon landed on a diffuse surface, in world space.
     pub position: Vector,
     /// The unit direction it travelled in when it landed.
     pub dir: Vector,
@@ -141,7 +142,9 @@ pub struct StoredPhoton {
 /// What building a map took.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PhotonStats {
+    /// Photons shot from the lights.
     pub emitted: u32,
+    /// Photons stored: those that reached a diffuse surface after at least one reflection or refraction.
     pub stored: usize,
     /// Emitting and tracing the photons.
     pub trace_time: Duration,
@@ -156,6 +159,7 @@ pub struct PhotonMap {
     k: NonZeroUsize,
     max_radius: f32,
     show: bool,
+    /// What building the map took: photons emitted and stored, and the time spent.
     pub stats: PhotonStats,
 }
 
@@ -206,6 +210,7 @@ impl PhotonMap {
         Ok(PhotonMap { photons, grid, k, max_radius, show, stats })
     }
 
+    /// The stored photons.
     pub fn photons(&self) -> &[StoredPhoton] {
         &self.photons
     }

@@ -10,12 +10,15 @@ use crate::lesson::math::faceforward;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 
+/// A perfectly diffuse (matte) surface, lit by the light loop (lectures 2-3).
 #[derive(Clone)]
 pub struct Lambert {
+    /// The diffuse colour: the fraction of each channel of the incoming light that the surface scatters.
     pub color: ColorSource,
 }
 
 impl Lambert {
+    /// A Lambert surface of the given colour or texture.
     pub fn new(color: impl Into<ColorSource>) -> Lambert {
         Lambert { color: color.into() }
     }

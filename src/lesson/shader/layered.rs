@@ -30,10 +30,15 @@ use crate::lesson::texture::Texture;
 use glam::Vec3A;
 use std::sync::Arc;
 
+/// One layer of a [`Layered`] shader: a shader and how opaque it is (slide "Layered Shader").
 #[derive(Clone)]
 pub struct Layer {
+    /// What the layer looks like where it covers the layers below.
     pub shader: Arc<dyn Shader>,
+    /// The layer's opacity, per channel: 0 transparent, 1 opaque.
     pub blend: Color,
+    /// A texture whose colour multiplies `blend` at each point (the Fresnel texture of the glass); `None`
+    /// leaves `blend` as it is.
     pub blend_tex: Option<Arc<dyn Texture>>,
 }
 
@@ -59,6 +64,7 @@ pub fn layer_weight(uncovered: Color, blend: Color) -> Color {
 /// The most layers a `Layered` may have (the slide's `MAX_LAYERS`).
 pub const MAX_LAYERS: usize = 32;
 
+/// A surface made of layers, bottom to top, each blended over the ones below (slide "Layered Shader").
 #[derive(Clone, Default)]
 pub struct Layered {
     layers: Vec<Layer>,
@@ -66,6 +72,7 @@ pub struct Layered {
 }
 
 impl Layered {
+    /// A shader with no layers yet; it is black until [`Layered::add_layer`] adds some.
     pub fn new() -> Layered {
         Layered::default()
     }
@@ -91,6 +98,7 @@ impl Layered {
         self
     }
 
+    /// The layers, bottom first.
     pub fn layers(&self) -> &[Layer] {
         &self.layers
     }

@@ -32,9 +32,18 @@ pub enum PhotonScatter {
     /// The surface is diffuse and the photon ends here. It is stored, its power multiplied by `scale`, if it
     /// was reflected or refracted on its way. `scale` is 1 except where a `Layered` shader chose this layer
     /// at random: then it is one over the probability of that choice.
-    Land { scale: f32 },
+    Land {
+        /// What the photon's power is multiplied by when it is stored: 1, or one over the probability of
+        /// the layer chosen.
+        scale: f32,
+    },
     /// The photon goes on in the unit direction `dir`, its power multiplied by `filter`.
-    Continue { dir: Vector, filter: Color },
+    Continue {
+        /// The unit direction the photon goes on in (world space).
+        dir: Vector,
+        /// What its power is multiplied by, per channel (the mirror's colour, the glass's multiplier).
+        filter: Color,
+    },
     /// The photon is absorbed.
     Absorb,
 }
@@ -102,6 +111,7 @@ pub fn scatter_photon(shader: &dyn Shader, ray: &Ray, info: &IntersectionInfo, r
 /// Anything that can be a node's or a layer's shader: a shader, or a shader shared with other nodes
 /// (`Arc<Reflection>`, `Arc<dyn Shader>`).
 pub trait IntoShader {
+    /// The shader, in an `Arc` so that nodes and layers can share it.
     fn into_shader(self) -> Arc<dyn Shader>;
 }
 
@@ -126,11 +136,14 @@ impl IntoShader for Arc<dyn Shader> {
 /// A constant colour or a texture: how the course's shaders take their diffuse colour.
 #[derive(Clone)]
 pub enum ColorSource {
+    /// The same colour everywhere (linear RGB).
     Color(Color),
+    /// A texture's colour at the hit's u/v.
     Texture(Arc<dyn Texture>),
 }
 
 impl ColorSource {
+    /// The colour at the hit `info` (for a texture: [`Texture::get_tex_color`]).
     pub fn get(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
         match self {
             ColorSource::Color(c) => *c,

@@ -10,8 +10,10 @@ use crate::lesson::math::{faceforward, reflect};
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 
+/// A diffuse surface with the lamps' highlights on it (the course's Phong shader).
 #[derive(Clone)]
 pub struct Phong {
+    /// The diffuse colour, as [`Lambert`](super::Lambert)'s; the highlight takes the lamp's colour, not this one.
     pub color: ColorSource,
     /// Strength of the highlight.
     pub specular: f32,
@@ -20,6 +22,7 @@ pub struct Phong {
 }
 
 impl Phong {
+    /// A Phong surface of the given colour, highlight strength and highlight exponent.
     pub fn new(color: impl Into<ColorSource>, specular: f32, exponent: f32) -> Phong {
         Phong { color: color.into(), specular, exponent }
     }

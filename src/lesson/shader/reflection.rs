@@ -47,6 +47,7 @@ pub const SECONDARY_GLOSSY_SAMPLES: u32 = 2;
 /// that a mistyped count is refused at once instead of rendering for days.
 pub const MAX_GLOSSY_SAMPLES: u32 = 4096;
 
+/// A mirror, perfect or glossy (slides "Reflection v0.2" and "Грапави (glossy) отражения").
 #[derive(Clone)]
 pub struct Reflection {
     /// The colour of the mirror: what fraction of each channel it reflects. May come from a texture.

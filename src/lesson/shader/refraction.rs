@@ -20,6 +20,8 @@ use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::spectral::Ior;
 
+/// A transparent surface that bends rays by Snell's law (slide "Refraction 0.2"); glass without Fresnel's
+/// reflection, which [`fresnel_glass`](super::fresnel_glass) adds.
 #[derive(Clone, Copy, Debug)]
 pub struct Refraction {
     /// Index of refraction of the material (glass about 1.5), possibly depending on the wavelength; the
@@ -30,6 +32,8 @@ pub struct Refraction {
 }
 
 impl Refraction {
+    /// A refraction of index `ior` (the same at every wavelength) letting through the fraction `multiplier` of
+    /// the light.
     pub fn new(ior: f32, multiplier: f32) -> Refraction {
         Refraction { ior: Ior::Constant(ior), multiplier }
     }

@@ -148,8 +148,9 @@ fn cumulative_at(illuminant: Illuminant, lambda: f64) -> [f64; 3] {
 /// A band of wavelengths: the part of the spectrum one pass (or one sample) stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
-    /// Shortest and longest wavelength of the band, nanometres.
+    /// Shortest wavelength of the band, in nanometres.
     pub lo: f32,
+    /// Longest wavelength of the band, in nanometres.
     pub hi: f32,
     /// The band's colour in linear sRGB: the colour of the light's power within the band, as a part of the
     /// light whose luminance is 1. Channels may be negative (outside the gamut).

@@ -37,9 +37,11 @@ pub use colour::{
 
 use crate::lesson::error::{Error, Result};
 
-/// The Fraunhofer lines that define n_d and the Abbe number, in nanometres.
+/// The helium d line (yellow), in nanometres: where a glass's n_d is measured.
 pub const LAMBDA_D: f32 = 587.6;
+/// The hydrogen F line (blue), in nanometres: with the C line, it gives the dispersion n_F - n_C.
 pub const LAMBDA_F: f32 = 486.1;
+/// The hydrogen C line (red), in nanometres.
 pub const LAMBDA_C: f32 = 656.3;
 /// The most wavelength passes a render may ask for (bands 0.3 nm wide).
 pub const MAX_WAVELENGTHS: u32 = 1000;
@@ -50,9 +52,19 @@ pub enum Ior {
     /// The same index at every wavelength.
     Constant(f32),
     /// Cauchy's equation `n(λ) = a + b / λ²`, λ in micrometres.
-    Cauchy { a: f32, b: f32 },
+    Cauchy {
+        /// The index the curve tends to at long wavelengths.
+        a: f32,
+        /// How strongly the index rises towards the blue, in µm².
+        b: f32,
+    },
     /// Sellmeier's equation `n²(λ) = 1 + Σ b_i λ² / (λ² - c_i)`, λ in micrometres (c_i in µm²).
-    Sellmeier { b: [f32; 3], c: [f32; 3] },
+    Sellmeier {
+        /// The strengths b_1, b_2, b_3 of the three terms (no unit).
+        b: [f32; 3],
+        /// The resonance wavelengths squared c_1, c_2, c_3, in µm².
+        c: [f32; 3],
+    },
 }
 
 impl Ior {
@@ -159,7 +171,10 @@ pub enum SpectralPlan {
     /// One pass; sample s of a pixel traces a wavelength in its own band out of spp.
     Sampled,
     /// One pass; each sample's path carries `per_path` wavelengths, and splits where it meets dispersive glass.
-    Hero { per_path: u32 },
+    Hero {
+        /// The wavelengths each camera path carries.
+        per_path: u32,
+    },
 }
 
 impl SpectralPlan {
