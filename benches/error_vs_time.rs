@@ -7,9 +7,13 @@
 //! Each curve sweeps one sample-count option of one example (at 320 x 240; dispersion and the photon map,
 //! the slowest, at 160 x 120) and measures the median wall time of 3 renders and the error against a converged reference
 //! (see `lecture6::instruments::study`). It writes `target/study/error_vs_time.md` (the tables, the Pareto-optimal points,
-//! and the equal-time error ratios of the three glossy samplers) and `target/study/error_vs_time.png` (log-log
-//! charts of error versus time). References are cached in `target/study/` and rendered again whenever the
-//! program is rebuilt. The whole run takes about a minute on 2 idle cores (2.5 minutes on busy ones).
+//! the equal-time error ratios of the three glossy samplers, and the ways of tracing wavelengths at the error
+//! and at the time of the slide's 8 passes) and `target/study/error_vs_time.png` (log-log charts of error
+//! versus time). References are cached in `target/study/` and rendered again whenever the program is rebuilt.
+//! The whole run takes a few minutes on 2 idle cores.
+//!
+//! `cargo bench --features study --bench error_vs_time -- dispersion` runs only the curves of the examples
+//! whose name contains `dispersion` (any word after `--` filters so).
 //!
 //! To add an example, add its sweeps to `sweeps()`.
 
@@ -34,9 +38,9 @@ const GLOSSY_REFERENCE: [&str; 8] = ["--spp", "64", "--glossy-samples", "64", "-
 const PIXEL_CENTRE_REFERENCE: [&str; 8] =
     ["--spp", "1", "--glossy-samples", "2048", "--sampler", "stratified", "--seed", "7"];
 
-/// The dispersion example's reference (at 160 x 120: dispersion is the slowest example): one wavelength per
-/// sample, 512 samples per pixel.
-const DISPERSION_REFERENCE: [&str; 6] = ["--spectral", "sampled", "--spp", "512", "--seed", "7"];
+/// The dispersion example's reference (at 160 x 120: dispersion is the slowest example): hero-wavelength
+/// sampling, 8 wavelengths per path at 256 samples per pixel (2048 wavelengths per pixel).
+const DISPERSION_REFERENCE: [&str; 8] = ["--spectral", "hero", "--wavelengths", "8", "--spp", "256", "--seed", "7"];
 const SMALL: [&str; 4] = ["--width", "160", "--height", "120"];
 
 /// The photon map's reference (at 160 x 120): 6.4 million photons, each estimate from the 400 nearest, so
@@ -101,24 +105,16 @@ fn sweeps() -> Vec<Sweep> {
         // Through the pixel centres only, so that the error is the glossy noise alone: the two samplers.
         glossy_samples("random", &["--spp", "1", "--sampler", "random"], &doubling, &PIXEL_CENTRE_REFERENCE),
         glossy_samples("stratified", &["--spp", "1", "--sampler", "stratified"], &doubling, &PIXEL_CENTRE_REFERENCE),
-        // Dispersion: the slide's 8 wavelength passes against one wavelength per sample (its own bench,
-        // `benches/dispersion.rs`, studies the methods in depth).
-        Sweep::new::<dispersion::Options>(
-            "dispersion",
-            "8 passes",
-            &[&SMALL[..], &["--spectral", "passes"]].concat(),
-            "--spp",
-            &[1, 2, 4, 8],
-            &DISPERSION_REFERENCE,
-        ),
-        Sweep::new::<dispersion::Options>(
-            "dispersion",
-            "spectral sampling",
-            &[&SMALL[..], &["--spectral", "sampled"]].concat(),
-            "--spp",
-            &[4, 8, 16, 32, 64],
-            &DISPERSION_REFERENCE,
-        ),
+        // Dispersion: the slide's wavelength passes, spectral sampling (one wavelength per sample), and
+        // hero-wavelength sampling (several per path, traced once until the path meets the glass) with 8, 4
+        // and 1 wavelengths per path; 1 per path is spectral sampling with the skip alone (a path that misses
+        // the glass counts as white light). `benches/dispersion.rs` studies the methods in depth.
+        dispersion_sweep("8 passes", &["--spectral", "passes", "--wavelengths", "8"], &[1, 2, 4, 8]),
+        dispersion_sweep("16 passes", &["--spectral", "passes", "--wavelengths", "16"], &[1, 2, 4]),
+        dispersion_sweep("spectral sampling", &["--spectral", "sampled", "--wavelengths", "1"], &[4, 8, 16, 32, 64]),
+        dispersion_sweep("hero, 8 per path", &["--spectral", "hero", "--wavelengths", "8"], &[1, 2, 4, 8, 16]),
+        dispersion_sweep("hero, 4 per path", &["--spectral", "hero", "--wavelengths", "4"], &[1, 2, 4, 8, 16, 32]),
+        dispersion_sweep("hero, 1 per path", &["--spectral", "hero", "--wavelengths", "1"], &[4, 8, 16, 32, 64]),
         // Caustics: the photon count at three values of k. With k fixed, the estimate's noise stops falling
         // once enough photons are stored (it is set by k) while its blur keeps shrinking: each curve flattens,
         // and the lower envelope of the three is the best pairing of photons and k for the time spent.
@@ -126,6 +122,18 @@ fn sweeps() -> Vec<Sweep> {
         photon_sweep("--k 80", &["--k", "80"]),
         photon_sweep("--k 320", &["--k", "320"]),
     ]
+}
+
+/// A sweep of `dispersion`'s `--spp` at 160 x 120 with the wavelength options `fixed`.
+fn dispersion_sweep(label: &str, fixed: &[&'static str], values: &[u32]) -> Sweep {
+    Sweep::new::<dispersion::Options>(
+        "dispersion",
+        label,
+        &[&SMALL[..], fixed].concat(),
+        "--spp",
+        values,
+        &DISPERSION_REFERENCE,
+    )
 }
 
 /// A sweep of `photon_map`'s `--photons` at 160 x 120 with the other options in `fixed`, through the pixel
@@ -142,7 +150,8 @@ fn photon_sweep(label: &str, fixed: &[&'static str]) -> Sweep {
 }
 
 fn main() {
-    // `cargo bench` passes `--bench` (and any filter); the study has no options of its own.
+    // `cargo bench` passes `--bench`; a word after `--` keeps only the examples whose name contains it.
+    let filter: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
     let start = Instant::now();
     let dir = study::output_dir();
     if let Err(e) = std::fs::create_dir_all(&dir) {
@@ -150,7 +159,9 @@ fn main() {
         std::process::exit(2);
     }
     let mut curves: Vec<Vec<Measurement>> = Vec::new();
-    for sweep in sweeps() {
+    for sweep in
+        sweeps().into_iter().filter(|s| filter.is_empty() || filter.iter().any(|f| s.example.contains(f.as_str())))
+    {
         let reference_start = Instant::now();
         let reference = sweep.reference_frame(Some(&dir)).unwrap_or_else(|e| fail(&e));
         eprintln!(
@@ -184,6 +195,7 @@ fn main() {
     for comparison in &SAMPLER_COMPARISONS {
         report += &sampler_comparison(&curves, comparison);
     }
+    report += &wavelength_comparison(&curves);
     let table_path = dir.join("error_vs_time.md");
     std::fs::write(&table_path, &report)
         .unwrap_or_else(|e| fail(&lecture6::Error::file("cannot write", &table_path, e)));
@@ -241,6 +253,9 @@ const SAMPLER_COMPARISONS: [SamplerComparison; 4] = [
 /// the measured RMSE.
 fn sampler_comparison(curves: &[Vec<Measurement>], comparison: &SamplerComparison) -> String {
     let SamplerComparison { title, measured, baseline } = comparison;
+    if !curves.iter().any(|c| c[0].label == *measured) {
+        return String::new();
+    }
     let mut out = format!(
         "\n## {title}, at equal time\n\n\
          `{measured}` against `{baseline}`.\n\n\
@@ -299,6 +314,50 @@ fn sampler_comparison(curves: &[Vec<Measurement>], comparison: &SamplerCompariso
         }
     }
     out
+}
+
+/// The curve and the point that the dispersion curves are measured against: the slide's 8 wavelength passes at
+/// 2 samples per pixel, the example's default before hero-wavelength sampling.
+const WAVELENGTH_BASELINE: (&str, u32) = ("8 passes", 2);
+
+/// The ways of tracing wavelengths against the slide's 8 passes at 2 spp: what each costs (time and rays) to
+/// reach the same error, and what error it has in the same time.
+fn wavelength_comparison(curves: &[Vec<Measurement>]) -> String {
+    let (label, value) = WAVELENGTH_BASELINE;
+    let Some(base) = curves.iter().flatten().find(|m| m.label == label && m.value == value) else {
+        return String::new();
+    };
+    let mut out = format!(
+        "\n## Tracing wavelengths: at the error and at the time of `{label}` at `{} {value}`\n\n\
+         That point: {:.3} s, {:.2} M rays, RMSE {:.5}, FLIP {:.4}. A ratio below 1 is cheaper (or more \
+         accurate) than it.\n\n\
+         | curve | time at that RMSE (s) | time ratio | M rays at that RMSE | ray ratio | RMSE at that time | \
+         RMSE ratio |\n|---|---:|---:|---:|---:|---:|---:|\n",
+        base.knob,
+        base.seconds,
+        base.rays as f64 * 1e-6,
+        base.rmse,
+        base.perceptual.unwrap_or(f64::NAN)
+    );
+    let number = |v: Option<f64>, digits: usize| v.map_or("-".to_string(), |v| format!("{v:.digits$}"));
+    // Each curve in the order of its knob, which is the order of rising cost.
+    for curve in curves.iter().filter(|c| c[0].same_group(base)) {
+        let seconds = study::cost_at_rmse(curve, base.rmse, |m| m.seconds);
+        let rays = study::cost_at_rmse(curve, base.rmse, |m| m.rays as f64);
+        let rmse = study::rmse_at_time(curve, base.seconds);
+        let _ = writeln!(
+            out,
+            "| {} | {} | {} | {} | {} | {} | {} |",
+            curve[0].label,
+            number(seconds, 3),
+            number(seconds.map(|s| s / base.seconds), 2),
+            number(rays.map(|r| r * 1e-6), 2),
+            number(rays.map(|r| r / base.rays as f64), 2),
+            number(rmse, 5),
+            number(rmse.map(|e| e / base.rmse), 2),
+        );
+    }
+    out + "\n(- : the curve does not reach that error, or does not span that time.)\n"
 }
 
 /// One error of a measurement, as plotted.

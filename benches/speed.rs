@@ -65,6 +65,7 @@ struct Args {
 }
 
 /// The CPU time (user + system) of this process's waited-for children, or of the process itself.
+#[allow(unsafe_code)] // Sound: see the SAFETY comment.
 fn cpu_time(who: libc::c_int) -> Duration {
     let mut usage = std::mem::MaybeUninit::<libc::rusage>::uninit();
     // SAFETY: getrusage writes the whole struct when it returns 0.

@@ -5,22 +5,40 @@
 //! wavelength, and each takes its own path. The slide's method traces the frame once per wavelength (K
 //! passes) and adds the frames, each multiplied by the colour of its wavelength.
 //!
+//! The colour of a wavelength is the CIE's: the light's spectrum (`--illuminant d65`, daylight and sRGB's
+//! own white, so a white light stays white; or `equal-energy`) times the CIE 1931 colour-matching functions,
+//! normalised by the light's luminance. A single wavelength is more saturated than any sRGB colour can be:
+//! `--gamut clip`, the default, shows it with its negative channels cut to 0; `--gamut fit` mixes in grey of
+//! the same luminance (a paler rainbow). `-o out/dispersion.exr` keeps the unmapped values, negative
+//! channels included.
+//!
+//! How the wavelengths are traced (`--spectral`):
+//! - `hero`, the default: every anti-aliasing sample carries `--wavelengths` wavelengths (4) spread evenly
+//!   over the spectrum, traced as one path until it meets the glass, where it splits and each wavelength is
+//!   followed on its own; a path that misses the glass costs one ray. At 4 samples per pixel this is what the
+//!   error-versus-time study found best for this picture at the cost of the slide's 8 passes x 2 samples
+//!   (16% less error, 31% less perceptual error, 6% fewer rays; see `docs/measurements.md`).
+//! - `passes`, the slide's method: `--wavelengths` K frames (8), one per band of the spectrum, each traced at
+//!   its band's centre.
+//! - `sampled`: every sample carries one wavelength of its own.
+//!
 //! Look at:
 //! - the prism on the left: through it the bright white slit of the environment is spread into a spectrum,
 //!   violet bent most, red least;
 //! - the glass sphere on the right: the slit seen through it is fringed with colour;
-//! - `--wavelengths 3` or `4`: the spectrum falls apart into separate copies of the slit, one per pass;
-//!   `--spectral sampled --spp 32` instead gives every sample its own wavelength: a smooth spectrum, with
-//!   some colour noise.
+//! - `--spectral passes` (the slide's method): the spectrum drawn as 8 copies of the slit, one per pass;
+//!   `--spectral passes --wavelengths 3`: the spectrum falls apart into 3; the default instead samples it
+//!   continuously: a smooth spectrum with some colour noise, which `--spp 16` smooths out.
 //!
 //! Try: `--glass n-bk7` (a crown glass: about a quarter of the spread), `--glass abbe --nd 1.785 --abbe 10`,
-//! `--glass abbe --abbe inf` (no dispersion: one white slit, traced in one pass), `--env textures/sky.hdr`
-//! (the glass in another environment).
+//! `--glass abbe --abbe inf` (no dispersion: one white slit, traced in one pass), `--gamut fit`,
+//! `--illuminant equal-energy` (a flat spectrum: everything a little pink), `--env textures/sky.hdr` (the
+//! glass in another environment).
 //!
 //! Homework ideas: draw the spectrum on a diffuse wall with photons that carry a wavelength; make the
-//! sphere a brilliant-cut gem from planes; weight the passes by the Planck spectrum of a warm light.
+//! sphere a brilliant-cut gem from planes; weight the wavelengths by the Planck spectrum of a warm light.
 
-use lecture6::app::workbook::SlitEnvironment;
+use lecture6::app::scenes::dispersion::SlitEnvironment;
 use lecture6::prelude::*;
 
 /// Which glass the prism and the sphere are made of.
@@ -67,8 +85,9 @@ impl Options {
     }
 }
 
-/// `--glass abbe`'s defaults: SF11's index at 587.6 nm and its Abbe number.
+/// `--glass abbe`'s default index: SF11's n_d, at 587.6 nm.
 pub const SF11_ND: f32 = 1.7847;
+/// `--glass abbe`'s default Abbe number: SF11's V_d.
 pub const SF11_ABBE: f32 = 25.68;
 
 /// The wavelength (nm) whose minimum-deviation ray through the prism's centre meets the slit.
@@ -85,7 +104,7 @@ pub fn minimum_deviation(apex: f32, n: f32) -> Option<f32> {
 }
 
 impl Example for Options {
-    const DEFAULT_SPP: u32 = 2;
+    const DEFAULT_SPP: u32 = 4;
 
     fn scene(&self) -> Result<Scene> {
         let ior = self.ior()?;

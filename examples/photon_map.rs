@@ -41,14 +41,17 @@ pub struct Options {
 
 /// Where the light is.
 pub const LIGHT: Vector = Vector::new(5.0, 120.0, 95.0);
-/// The glass sphere: its centre and radius.
+/// The glass sphere's centre.
 pub const GLASS_CENTER: Vector = Vector::new(-22.0, 19.0, 20.0);
+/// The glass sphere's radius.
 pub const GLASS_RADIUS: f32 = 12.0;
-/// The mirror's centre, and the point of the wall it throws the light's reflection to.
+/// The mirror's centre.
 pub const MIRROR_CENTER: Vector = Vector::new(28.0, 10.0, 15.0);
+/// The point of the wall the mirror throws the light's reflection to.
 pub const MIRROR_SPOT: Vector = Vector::new(20.0, 22.0, WALL_Z);
-/// The low wall at the back: where its face is, and how high it is.
+/// The low wall at the back: the z of its face.
 pub const WALL_Z: f32 = 70.0;
+/// The low wall's height.
 pub const WALL_HEIGHT: f32 = 35.0;
 
 impl Example for Options {

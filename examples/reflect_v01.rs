@@ -29,7 +29,7 @@ impl Example for Options {
 
     fn scene(&self) -> Result<Scene> {
         // Two mirror spheres (`Reflection`, src/shader/reflection.rs) and a red ball on a checker floor.
-        let mut scene = workbook::mirror_room(self.multiplier, self.mirrors)?;
+        let mut scene = scenes::mirror_room(self.multiplier, self.mirrors)?;
         // The slide's v0.1 has no depth limit (only the renderer's safety cap remains), and no adaptive depth
         // control either: a ray keeps bouncing however faint it has become, which is the danger it shows.
         scene.max_depth = u32::MAX;

@@ -28,7 +28,7 @@ impl Example for Options {
 
     fn scene(&self) -> Result<Scene> {
         // `reflect_v01`'s scene, always with the two mirrors facing each other around the camera.
-        let mut scene = workbook::mirror_room(self.multiplier, true)?;
+        let mut scene = scenes::mirror_room(self.multiplier, true)?;
         scene.max_depth = MAX_RAY_DEPTH;
         Ok(scene)
     }

@@ -8,7 +8,7 @@
 //! - [`lesson`]: the slides' code, a leaf that imports nothing from the other two;
 //! - [`instruments`]: what makes the lesson visible (the ray tree, debug views, comparisons, the progressive
 //!   renderer, the study and the viewer); they watch the renderer through the one observation hook the lesson
-//!   owns;
+//!   owns ([`lesson::observer`]);
 //! - [`app`]: the command line every example shares, the course's scene files and the workbook's files.
 //!
 //! | module | slides |
@@ -22,7 +22,7 @@
 //! | [`lesson::light`], [`lesson::scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`lesson::render`], [`lesson::frame`], [`lesson::adaptive_aa`] | the parallel, deterministic renderer and the picture it makes; the course's adaptive anti-aliasing |
 //! | [`lesson::tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
-//! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR, wavelength passes and their colours |
+//! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR; the colours of wavelengths (CIE 1931 tables, D65 or equal-energy light, gamut mapping); wavelength passes, spectral and hero-wavelength sampling |
 //! | [`lesson::photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
 //! | [`lesson::input`], [`lesson::image_file`] | not a slide: the files a scene is read from, refused unless regular and within their caps; the pixel budget of the images a run holds |
 //! | [`lesson::sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
@@ -33,6 +33,7 @@
 //! | [`instruments::study`] | run time versus error: renders at rising sample counts against a converged reference |
 //! | `instruments::viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
 //! | [`app::cli`] | the command line every example shares, and the `run` that is every example's `main` |
+//! | [`app::scenes`] | the scenes examples share: the mirror room of the reflection slides, the dispersion studio |
 //! | [`app::workbook`], [`app::assets`] | the bundled textures and the sky; the generated textures and the Utah teapot |
 //! | [`app::scene_file`] | the course's `.qdmg` scene files |
 //!
@@ -50,6 +51,7 @@ pub use lesson::math::Vector;
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
     pub use crate::app::cli::{Example, run};
+    pub use crate::app::scenes;
     pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
     pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
     pub use crate::lesson::camera::{Camera, FovAxis};
@@ -68,7 +70,8 @@ pub mod prelude {
     pub use crate::lesson::sampling::DiscSampler;
     pub use crate::lesson::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
     pub use crate::lesson::shader::{
-        ColorSource, Lambert, Layered, Phong, PhotonScatter, Reflection, Refraction, Shader, fresnel_glass,
+        CausticCaster, ColorSource, Lambert, Layered, Phong, PhotonScatter, Reflection, Refraction, Shader,
+        fresnel_glass,
     };
     pub use crate::lesson::spectral::Ior;
     pub use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};

@@ -214,8 +214,8 @@ fn dielectrics(gap: f32) -> Scene {
 fn touching_and_nested_dielectrics_render_like_slightly_separated_ones() {
     let settings = RenderSettings { width: 160, height: 120, spp: 1, ..RenderSettings::default() };
     let frame = |gap| {
-        let (frame, _) = render(&dielectrics(gap), &settings).expect("render");
-        assert!(frame.pixels.iter().all(|c| c.is_finite() && c.0.min_element() >= 0.0), "NaN or negative colour");
+        let (frame, stats) = render(&dielectrics(gap), &settings).expect("render");
+        assert_eq!(stats.counters.non_finite_samples, 0, "samples came back NaN or infinite");
         frame
     };
     let touching = frame(0.0);
@@ -263,7 +263,8 @@ fn slivers_and_zero_area_triangles_in_an_obj_stay_finite() {
         "--spp",
         "1",
     ]);
-    assert!(frame.pixels.iter().all(|c| c.is_finite()), "NaN in the frame");
+    // `common::render` checks that no sample came back NaN or infinite.
+    assert!(frame.pixels.iter().any(|c| c.max_channel() > 0.0), "the mesh scene renders black");
 }
 
 /// A node's transform hands its geometry rays whose direction is not of unit length (1/s for a node scaled

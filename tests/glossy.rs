@@ -162,8 +162,8 @@ fn adaptive_depth_control_never_prunes_glossy_samples() {
 fn glossy_mirrors_scatter_photons_into_their_cone() {
     use lecture6::lesson::geometry::{IntersectionInfo, TexCoords};
     use lecture6::lesson::ray::Ray;
+    use lecture6::lesson::shader::CausticCaster;
     use lecture6::lesson::shader::PhotonScatter;
-    use lecture6::lesson::shader::Shader;
     let info = IntersectionInfo {
         ip: Vector::ZERO,
         normal: Vector::Y,

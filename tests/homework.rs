@@ -67,18 +67,13 @@ fn cargo_run_alone_lists_the_examples_and_writes_nothing() {
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0, "cargo run wrote files");
 }
 
-/// A diffuse shader as a student would write it: white, lit through the light loop, nothing else.
+/// A diffuse shader as a student would write it: white, lit through the light loop, nothing else (`shade`
+/// alone: the photons land on it by default).
 struct Chalk;
 
 impl Shader for Chalk {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         diffuse_light(ctx, info, faceforward(info.normal, ray.dir))
-    }
-    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
-        PhotonScatter::Land { scale: 1.0 }
-    }
-    fn casts_caustics(&self) -> bool {
-        false
     }
 }
 
@@ -109,6 +104,19 @@ fn a_students_diffuse_shader_gets_the_caustics_through_the_light_loop() {
     assert!((chalk.max_channel() - caustic.max_channel()).abs() < 1e-3 * caustic.max_channel(), "{chalk:?}");
     let (lambert, _) = under_the_ball(Box::new(|| caustic_scene(Lambert::new(Color::WHITE))));
     assert_eq!(chalk, lambert, "a white Lambert floor shows the same light");
+}
+
+#[test]
+fn a_shader_with_only_shade_renders_in_a_scene_with_a_photon_map() {
+    let mut scene = caustic_scene(Chalk);
+    scene.photon_map = lecture6::lesson::photon_map::PhotonMap::build(&scene, 1).unwrap().map(Arc::new);
+    assert!(scene.photon_map.as_ref().is_some_and(|m| !m.photons().is_empty()), "photons landed on the chalk");
+    let settings = lecture6::lesson::render::RenderSettings { width: 64, height: 48, ..Default::default() };
+    let (frame, stats) = lecture6::lesson::render::render(&scene, &settings).unwrap();
+    assert_eq!(stats.counters.non_finite_samples, 0);
+    // The caustic under the ball is brighter than the floor beside the ball's shadow.
+    let brightest = frame.pixels.iter().map(|c| c.max_channel()).fold(0.0, f32::max);
+    assert!(brightest > 0.5, "the floor is lit: {brightest}");
 }
 
 #[test]

@@ -251,7 +251,10 @@ fn case_6_a_link_planted_at_the_temporary_name_is_not_followed() {
         }
         path[at..at + 5].copy_from_slice(b".tmp\0");
         // SAFETY: both are NUL-terminated paths.
-        unsafe { libc::symlink(target.as_ptr(), path.as_ptr().cast()) };
+        #[allow(unsafe_code)] // Sound: see the SAFETY comment.
+        unsafe {
+            libc::symlink(target.as_ptr(), path.as_ptr().cast())
+        };
         Ok(())
     };
     let args = ["--width", "32", "--height", "24", "--spp", "1", "-o", s(&output)];

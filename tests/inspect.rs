@@ -6,30 +6,37 @@ mod common;
 use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract};
 use lecture6::app::cli::Example;
 use lecture6::instruments::debug_view::{DebugView, render_view};
-use lecture6::instruments::ray_tree::{LightKind, RayKind, RayTree, Stop, TermKind};
+use lecture6::instruments::ray_tree::{self, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
 use lecture6::instruments::side_by_side::{Panel, compose};
-use lecture6::lesson::color::Color;
-use lecture6::lesson::render::{render, render_pixel};
+use lecture6::lesson::observer::{Light, Stop};
+use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::prelude::*;
 
 /// Whether two colours agree to float rounding of sums of a few hundred terms.
 fn close(a: Color, b: Color) -> bool {
     (a - b).0.abs().max_element() <= 1e-5 + 1e-4 * a.max_channel().max(b.max_channel())
 }
 
-/// Renders the small frame of `args`, then each of `pixels` alone with its ray tree, and checks that the
-/// pixel is the one of the frame, that every camera ray's tree explains the colour the ray brought back
-/// (the light terms and the environment seen, times the factors on their way), and that the samples' mean
-/// is the pixel. Returns the trees.
+/// Renders the small frame of `args`, then each of `pixels` alone with its ray tree, and checks the trees
+/// (see [`check_scene_trees`]).
 fn check_trees<E: Example>(args: &[&str], pixels: &[(u32, u32)]) -> Vec<RayTree> {
     let cli = common::parse::<E>(args);
-    let settings = cli.settings();
-    let scene = cli.prepare_scene().unwrap();
-    let (frame, _) = render(&scene, &settings).unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
+    check_scene_trees(&scene, &settings, pixels, &format!("{args:?}"))
+}
+
+/// Renders the frame of `scene`, then each of `pixels` alone with its ray tree, and checks that the pixel is
+/// the one of the frame, that every camera ray's tree explains the colour the ray brought back (the light
+/// terms, the shaders' own colours and the environment seen, times the factors on their way), that every
+/// hit's terms add up to what its shader returned, and that the samples' mean is the pixel. Returns the
+/// trees.
+fn check_scene_trees(scene: &Scene, settings: &RenderSettings, pixels: &[(u32, u32)], what: &str) -> Vec<RayTree> {
+    let (frame, _) = render(scene, settings).unwrap();
     let mut trees = Vec::new();
     for &(x, y) in pixels {
-        let trace = render_pixel(&scene, &settings, x, y, true).unwrap();
-        assert_eq!(trace.color, frame.get(x, y), "{args:?} pixel ({x}, {y}) alone differs from the frame's");
-        let tree = *trace.tree.unwrap();
+        let traced = ray_tree::trace(scene, settings, PixelPos { x, y }).unwrap();
+        assert_eq!(traced.color, frame.get(x, y), "{what} pixel ({x}, {y}) alone differs from the frame's");
+        let tree = traced.tree;
         assert_eq!(tree.roots.len(), settings.spp as usize, "one camera ray per sample");
         let mut mean = Color::BLACK;
         for &root in &tree.roots {
@@ -37,15 +44,15 @@ fn check_trees<E: Example>(args: &[&str], pixels: &[(u32, u32)]) -> Vec<RayTree>
             let returned = tree.rays[root].color;
             assert!(
                 close(explained, returned),
-                "{args:?} ({x}, {y}): the tree explains {explained:?}, the ray returned {returned:?}"
+                "{what} ({x}, {y}): the tree explains {explained:?}, the ray returned {returned:?}"
             );
             mean += returned.sanitized();
         }
         mean = mean / tree.roots.len() as f32;
-        assert!(close(mean, trace.color), "{args:?} ({x}, {y}): samples average {mean:?}, pixel is {:?}", trace.color);
+        assert!(close(mean, traced.color), "{what} ({x}, {y}): samples average {mean:?}, pixel is {:?}", traced.color);
         for (id, ray) in tree.rays.iter().enumerate() {
             if ray.hit.is_some() {
-                assert!(close(tree.terms_sum(id), ray.color), "{args:?} ({x}, {y}) ray {id}: terms do not add up");
+                assert!(close(tree.terms_sum(id), ray.color), "{what} ({x}, {y}) ray {id}: terms do not add up");
             }
         }
         trees.push(tree);
@@ -53,17 +60,22 @@ fn check_trees<E: Example>(args: &[&str], pixels: &[(u32, u32)]) -> Vec<RayTree>
     trees
 }
 
+/// The shaders' own colours in the trees (colour a shader returned beyond everything it gathered).
+fn own_colours(trees: &[RayTree]) -> usize {
+    trees.iter().flat_map(|t| &t.rays).flat_map(|r| &r.terms).filter(|t| matches!(t.what, TermKind::Own { .. })).count()
+}
+
 fn kinds(tree: &RayTree) -> Vec<RayKind> {
     tree.rays.iter().map(|r| r.kind).collect()
 }
 
-fn lights(tree: &RayTree) -> Vec<LightKind> {
+fn lights(tree: &RayTree) -> Vec<Light> {
     tree.rays
         .iter()
         .flat_map(|r| &r.terms)
         .filter_map(|t| match t.what {
             TermKind::Light { kind, .. } => Some(kind),
-            TermKind::Ray(_) => None,
+            _ => None,
         })
         .collect()
 }
@@ -78,35 +90,45 @@ fn the_glass_sphere_tree_goes_from_the_camera_through_the_glass_to_the_environme
     assert!(kinds(tree).contains(&RayKind::Refraction) && kinds(tree).contains(&RayKind::Reflection));
     assert!(tree.rays.iter().any(|r| r.stop == Some(Stop::Missed) && r.depth >= 2), "a ray leaves the glass");
     let text = tree.to_text(0);
-    assert!(text.contains("layer 2 of 2 (Reflection, blend Fresnel"), "{text}");
+    assert!(text.contains("layer Reflection, blend Fresnel"), "{text}");
     assert!(text.contains("missed: environment colour"), "{text}");
+    assert_eq!(own_colours(&trees), 0, "the glass's colour is all rays:\n{text}");
 }
 
 #[test]
 fn trees_add_up_with_total_internal_reflection() {
     let pixels: Vec<(u32, u32)> = (0..40).map(|i| (40 + i * 2, 60)).collect();
     let trees = check_trees::<refract::Options>(&["--width", "160", "--height", "120", "--ior", "2.42"], &pixels);
-    assert!(trees.iter().any(|t| lights(t).contains(&LightKind::TotalInternalReflection)), "no TIR on the row");
+    // Total internal reflection: the refraction traces no ray and returns black.
+    let tir = |t: &RayTree| {
+        t.rays.iter().any(|r| r.hit.as_ref().is_some_and(|h| h.shader == "Refraction") && r.terms.is_empty())
+    };
+    assert!(trees.iter().any(tir), "no TIR on the row");
+    assert_eq!(own_colours(&trees), 0);
 }
 
 #[test]
 fn trees_add_up_with_glossy_samples_lamps_and_depth_limits() {
     let trees =
         check_trees::<glossy::Options>(&["--width", "80", "--height", "60"], &[(20, 40), (40, 40), (60, 40), (40, 20)]);
-    let glossy = |k: &RayKind| matches!(k, RayKind::GlossySample { .. });
-    assert!(trees.iter().any(|t| kinds(t).iter().any(glossy)), "no glossy sample traced");
-    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, LightKind::Lamp { .. }))));
+    let samples = |t: &RayTree| kinds(t).iter().filter(|&&k| k == RayKind::Reflection).count();
+    assert!(trees.iter().any(|t| samples(t) > 1), "no glossy samples traced");
+    assert!(trees.iter().any(|t| t.to_text(0).contains("reflection 2 of ")), "glossy samples are numbered");
+    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, Light::Lamp { .. }))));
+    assert_eq!(own_colours(&trees), 0);
     let trees = check_trees::<reflect_v02::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 30)]);
     assert!(trees.iter().any(|t| t.rays.iter().any(|r| r.stop == Some(Stop::DepthLimit))), "no ray at the depth limit");
 }
 
 #[test]
 fn trees_add_up_through_layers_and_the_photon_map() {
-    check_trees::<layered::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 45), (60, 20)]);
+    let trees = check_trees::<layered::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 45), (60, 20)]);
+    assert_eq!(own_colours(&trees), 0);
     let args = ["--width", "80", "--height", "60", "--photons", "20000"];
     let pixels: Vec<(u32, u32)> = (0..8).map(|i| (10 * i, 50)).collect();
     let trees = check_trees::<photon_map::Options>(&args, &pixels);
-    assert!(trees.iter().any(|t| lights(t).contains(&LightKind::Photons)), "no photon estimate in the trees");
+    assert!(trees.iter().any(|t| lights(t).contains(&Light::Photons)), "no photon estimate in the trees");
+    assert_eq!(own_colours(&trees), 0);
 }
 
 #[test]
@@ -118,12 +140,81 @@ fn the_json_tree_is_one_object_naming_every_ray() {
     assert_eq!(json.matches('{').count(), json.matches('}').count());
 }
 
+/// A homework shader: a tinted metal, its one ray traced with `ctx.raytrace` and tinted afterwards, as the
+/// slide's `raytrace(newRay) * multiplier`. Nothing in it speaks to the ray tree.
+struct TintedMirror(Color);
+
+impl Shader for TintedMirror {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let n = faceforward(info.normal, ray.dir);
+        ctx.raytrace(&ray.spawn(info, reflect(ray.dir, n), self.0.max_channel())) * self.0
+    }
+}
+
+/// A homework shader: a toon diffuse surface whose light from the light loop is cut into three bands, and
+/// which shows a dim rim colour where no light reaches.
+struct Toon(Color);
+
+impl Shader for Toon {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let light = light_loop(ctx, info, faceforward(info.normal, ray.dir), |_, _| Color::BLACK);
+        let band = match light.irradiance.luminance() {
+            l if l > 0.6 => 1.0,
+            l if l > 0.2 => 0.6,
+            _ => 0.25,
+        };
+        self.0 * band
+    }
+}
+
+/// A floor, a tinted mirror ball and a toon ball under a lamp and a sky.
+fn homework_scene() -> Scene {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 25.0, -60.0), Vector::new(0.0, 8.0, 0.0), 60.0));
+    scene.lights.push(PointLight::new(Vector::new(-30.0, 60.0, -30.0), Color::WHITE, 5000.0));
+    scene.ambient = Color::gray(0.05);
+    scene.environment = Some(Arc::new(ConstantEnvironment(Color::new(0.3, 0.5, 0.9))));
+    scene.add(Node::new(Plane::new(0.0, 200.0), Lambert::new(Color::new(0.8, 0.7, 0.5))));
+    scene.add(Node::new(Sphere::new(Vector::new(-12.0, 10.0, 0.0), 10.0), TintedMirror(Color::new(0.9, 0.6, 0.2))));
+    scene.add(Node::new(Sphere::new(Vector::new(12.0, 10.0, 0.0), 10.0), Toon(Color::new(0.2, 0.8, 0.3))));
+    scene
+}
+
+#[test]
+fn a_students_own_shaders_get_ray_trees_that_add_up_to_their_pixels() {
+    let scene = homework_scene();
+    let settings = RenderSettings { width: 80, height: 60, spp: 2, ..RenderSettings::default() };
+    let pixels: Vec<(u32, u32)> = (0..20).map(|i| (4 * i, 36)).chain((0..15).map(|j| (58, 4 * j))).collect();
+    let trees = check_scene_trees(&scene, &settings, &pixels, "homework");
+    // The tinted mirror's ray counts as many times as its tint, channel by channel.
+    let mirror_factors: Vec<Color> = trees
+        .iter()
+        .flat_map(|t| t.rays.iter().filter(|r| r.hit.as_ref().is_some_and(|h| h.shader == "TintedMirror")))
+        .flat_map(|r| &r.terms)
+        .filter(|t| matches!(t.what, TermKind::Ray(_)))
+        .map(|t| t.factor)
+        .collect();
+    assert!(!mirror_factors.is_empty(), "no pixel of the row sees the mirror");
+    for f in mirror_factors {
+        assert!(close(f, Color::new(0.9, 0.6, 0.2)), "the tinted reflection counts {f:?} times");
+    }
+    // The toon ball shows its darkest band even where nothing lights it: that is its own colour.
+    let toon = trees.iter().flat_map(|t| &t.rays).filter(|r| r.hit.as_ref().is_some_and(|h| h.shader == "Toon"));
+    assert!(toon.count() > 0, "no pixel sees the toon ball");
+    // What --trace-pixel prints: the shares add up to the camera ray's colour, and nothing is left unexplained.
+    let traced = ray_tree::trace(&scene, &settings, PixelPos { x: 58, y: 36 }).unwrap();
+    let text = ray_tree::describe("homework", PixelPos { x: 58, y: 36 }, &traced, 0, TraceFormat::Text).unwrap();
+    let root = traced.tree.roots[0];
+    let returned = format!("returns rgb({:.4}", traced.tree.rays[root].color.r());
+    let explained = format!("add up to rgb({:.4}", traced.tree.explained(root, Color::WHITE).r());
+    assert!(text.contains(&returned) && text.contains(&explained), "{text}");
+}
+
 /// Draws a view of the glossy scene at 64 x 48 and returns it, after checking its size.
 fn view(v: DebugView, extra: &[&str]) -> lecture6::instruments::debug_view::DebugImage {
     let mut args = vec!["--width", "64", "--height", "48"];
     args.extend(extra);
-    let cli = common::parse::<glossy::Options>(&args);
-    let picture = render_view(&cli.prepare_scene().unwrap(), &cli.settings(), v).unwrap();
+    let (scene, settings) = common::parse::<glossy::Options>(&args).prepare().unwrap();
+    let picture = render_view(&scene, &settings, v).unwrap();
     assert_eq!(picture.image.dimensions(), (64, 48));
     assert!(picture.range.0.is_finite() && picture.range.1.is_finite() && picture.range.0 <= picture.range.1);
     picture

@@ -4,7 +4,7 @@
 mod common;
 
 use common::examples::{bitmap_textures, glossy};
-use lecture6::instruments::study::{Measurement, Sweep, pareto_front, rmse_at_time};
+use lecture6::instruments::study::{Measurement, Sweep, cost_at_rmse, pareto_front, rmse_at_time};
 
 fn rmse_curve(sweep: &Sweep) -> Vec<f64> {
     let reference = sweep.reference_frame(None).unwrap();
@@ -81,4 +81,16 @@ fn errors_are_interpolated_in_log_log() {
     let at_2 = rmse_at_time(&curve, 2.0).unwrap();
     assert!((at_2 - 0.05).abs() < 1e-12, "{at_2}");
     assert_eq!(rmse_at_time(&curve, 8.0), None);
+}
+
+#[test]
+fn costs_are_interpolated_in_log_log_at_an_error() {
+    let curve = [point("a", 1.0, 0.1), point("a", 4.0, 0.025), point("a", 8.0, 0.02)];
+    // On a line of slope -1 in log-log, half the error takes twice the time.
+    let at = cost_at_rmse(&curve, 0.05, |m| m.seconds).unwrap();
+    assert!((at - 2.0).abs() < 1e-12, "{at}");
+    let at_last = cost_at_rmse(&curve, 0.02, |m| m.seconds).unwrap();
+    assert!((at_last - 8.0).abs() < 1e-12, "{at_last}");
+    assert_eq!(cost_at_rmse(&curve, 0.01, |m| m.seconds), None, "below the curve's lowest error");
+    assert_eq!(cost_at_rmse(&curve, 0.2, |m| m.seconds), None, "above its highest");
 }

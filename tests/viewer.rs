@@ -10,6 +10,7 @@ use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;
 use lecture6::app::cli::Cli;
 use lecture6::app::cli::Example;
+use lecture6::instruments::compare::difference;
 use lecture6::instruments::progressive::{PREVIEW_PIXELS, preview_settings};
 use lecture6::instruments::viewer::controls::{Controls, Kind};
 use lecture6::instruments::viewer::fly::{Motion, as_code, moved};
@@ -47,7 +48,7 @@ fn every_option_becomes_a_control_of_its_kind() {
     assert!(!seed.optional && seed.value == "1", "{seed:?}");
     let spectral = control("spectral").unwrap();
     assert!(spectral.optional && spectral.value.is_empty() && matches!(spectral.kind, Kind::Choice(_)));
-    assert_eq!(spectral.placeholder, "passes");
+    assert_eq!(spectral.placeholder, "hero");
     for absent in ["window", "output", "help", "quiet", "compare", "trace-pixel", "view", "side-by-side", "threads"] {
         assert_eq!(kind(absent), None, "--{absent} is the window's, not a control");
     }
@@ -166,7 +167,8 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     worker.submit(job(&second, None, true));
     let frame = finished(&worker);
     assert!(frame == second.render().unwrap().0, "the picture of the new options");
-    assert!(frame != first.render().unwrap().0);
+    let change = difference(&frame.to_rgb8(), &first.render().unwrap().0.to_rgb8()).unwrap();
+    assert!(change.large_pixels * 50 > change.pixels, "the glass of the new IOR looks the same: {change}");
 
     // A moved camera keeps the scene (the job does not rebuild it).
     let camera = Camera { position: Vector::new(0.0, 60.0, -100.0), pitch: -35.0, fov: 90.0, ..Camera::default() };
@@ -186,7 +188,9 @@ fn the_window_shows_the_picture_exposed_and_tone_mapped_as_the_options_say() {
     let frame = finished(&worker);
     let shown = worker.shown.lock().unwrap().rgb.clone();
     assert_eq!(shown, cli.film().develop(frame.clone(), false).to_rgb8().into_raw(), "the picture a PNG would hold");
-    assert_ne!(shown, frame.to_rgb8().into_raw());
+    // Exposure -1 and Reinhard both darken: the window shows less light than the raw frame would.
+    let sum = |bytes: &[u8]| bytes.iter().map(|&b| b as u64).sum::<u64>();
+    assert!(sum(&shown) < sum(&frame.to_rgb8().into_raw()), "the window ignored the exposure");
 }
 
 #[test]

@@ -1,6 +1,8 @@
-//! The application: the command line, the workbook's files and scenes, the course's scene files.
+//! The application: the command line, the scenes the examples share, the workbook's files, the course's
+//! scene files.
 
 pub mod assets;
 pub mod cli;
 pub mod scene_file;
+pub mod scenes;
 pub mod workbook;

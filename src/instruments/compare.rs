@@ -25,6 +25,7 @@ pub struct Difference {
     pub max_diff: u8,
     /// How many pixels differ by more than [`Difference::LARGE`] levels in some channel.
     pub large_pixels: usize,
+    /// How many pixels were compared.
     pub pixels: usize,
 }
 
@@ -253,7 +254,10 @@ impl std::fmt::Display for LinearDifference {
 /// for a linear reference the difference in linear light too.
 #[derive(Clone, Debug)]
 pub struct Comparison {
+    /// The difference of the two pictures as 8-bit sRGB.
     pub difference: Difference,
+    /// The difference in linear light, when the reference keeps it (an `.exr` or `.hdr` file); `None` for an
+    /// 8-bit reference.
     pub linear: Option<LinearDifference>,
     /// The heat map, white at the largest difference.
     pub heat_map: image::RgbImage,

@@ -35,6 +35,7 @@ pub enum DebugView {
 
 /// A debug view: the picture, the range of the quantity it shows and its scale in words.
 pub struct DebugImage {
+    /// The false-colour picture: the quantity mapped straight to 8-bit codes (no sRGB encoding).
     pub image: image::RgbImage,
     /// The smallest and the largest value shown (over the pixels that hit something, for the geometric
     /// views): normal components, u/v, distances, ray counts or depths.
@@ -84,8 +85,7 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
         if geometric {
             return Ok(pixels.par_iter().map(measure).collect());
         }
-        let rows =
-            (0..h).into_par_iter().map(|y| render_row(scene, settings, y, 0..w, None)).collect::<Result<Vec<_>>>()?;
+        let rows = (0..h).into_par_iter().map(|y| render_row(scene, settings, y, 0..w)).collect::<Result<Vec<_>>>()?;
         Ok(rows.iter().flatten().map(|p| Sample::Number(cost(view, &p.counters))).collect())
     })?;
     let (lo, hi) = samples.iter().fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), s| match s {

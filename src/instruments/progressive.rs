@@ -38,11 +38,17 @@ pub const COARSE_SCALE: u32 = 4;
 /// for them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Tile {
+    /// The tile's left edge: the column of its first pixel.
     pub x: u32,
+    /// The tile's top edge: the row of its first pixel.
     pub y: u32,
+    /// Width in pixels (smaller than [`TILE_SIZE`] at the picture's right edge).
     pub width: u32,
+    /// Height in pixels (smaller than [`TILE_SIZE`] at the picture's bottom edge).
     pub height: u32,
+    /// The tile's linear colours, row by row from its top-left pixel; empty until it is drawn.
     pub pixels: Vec<Color>,
+    /// All rays traced for the tile (camera, secondary and shadow rays); 0 until it is drawn.
     pub rays: u64,
 }
 
@@ -117,7 +123,7 @@ pub fn preview_settings(settings: &RenderSettings) -> RenderSettings {
 
 /// The wavelength plan a render of `scene` with `settings` follows (as [`crate::lesson::render::render`] chooses it).
 fn plan_for(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
-    SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths)
+    crate::lesson::render::spectral_plan(scene, settings)
 }
 
 /// Renders the whole of a (small) picture with `settings`, rows in parallel, unless `cancel` is set first:

@@ -19,7 +19,9 @@ const CAPTION_INK: [u8; 3] = [235, 235, 235];
 
 /// One part of a side-by-side picture.
 pub struct Panel {
+    /// The picture, 8 bits per channel, as it is shown.
     pub image: image::RgbImage,
+    /// The text written under it (wrapped to the picture's width).
     pub caption: String,
 }
 

@@ -10,7 +10,8 @@
 //! in a flat bright one).
 //!
 //! `benches/error_vs_time.rs` runs the study of every stochastic example and writes a Markdown table and a
-//! log-log chart. Another example joins it with one more [`Sweep::new`] there; a test
+//! log-log chart, with the equal-time and equal-error comparisons of the ways to do the same thing (glossy
+//! samplers; wavelength passes against per-path spectral sampling). Another example joins it with one more [`Sweep::new`] there; a test
 //! (`tests/study.rs`) checks on a tiny picture that the error really falls as the sample count rises.
 
 use crate::app::cli::{Cli, Example};
@@ -22,6 +23,7 @@ use std::time::Duration;
 
 /// A render and what it cost.
 pub struct Timed {
+    /// The rendered picture, in linear light.
     pub frame: Frame,
     /// Wall time of the render itself (parsing and scene building excluded), in seconds.
     pub seconds: f64,
@@ -48,6 +50,7 @@ pub fn render_timed<E: Example>(args: &[String]) -> Result<Timed> {
 /// sample-count option that is swept.
 #[derive(Clone, Debug)]
 pub struct Sweep {
+    /// The example's name (`glossy`): the file in `examples/` and the name of its cached reference.
     pub example: &'static str,
     /// What the curve is called in the table and the chart.
     pub label: String,
@@ -55,6 +58,7 @@ pub struct Sweep {
     pub fixed: Vec<String>,
     /// The option swept, e.g. `--glossy-samples`.
     pub knob: &'static str,
+    /// The values the knob takes, one render each.
     pub values: Vec<u32>,
     /// The options of the reference (added to `fixed`; later options win, as clap reads them).
     pub reference: Vec<String>,
@@ -200,11 +204,15 @@ pub fn output_dir() -> PathBuf {
 /// One point of a sweep.
 #[derive(Clone, Debug)]
 pub struct Measurement {
+    /// The example's name (see [`Sweep::example`]).
     pub example: &'static str,
+    /// The curve's label (see [`Sweep::label`]).
     pub label: String,
     /// All the options that made the reference (measurements against different references do not compare).
     pub reference: String,
+    /// The option swept (see [`Sweep::knob`]).
     pub knob: &'static str,
+    /// The knob's value at this point.
     pub value: u32,
     /// Median wall time of the render, in seconds.
     pub seconds: f64,
@@ -281,6 +289,24 @@ pub fn rmse_at_time(curve: &[Measurement], seconds: f64) -> Option<f64> {
         }
         let t = (seconds.ln() - a.seconds.ln()) / (b.seconds.ln() - a.seconds.ln());
         Some((a.rmse.ln() + t * (b.rmse.ln() - a.rmse.ln())).exp())
+    })
+}
+
+/// What a curve (measurements in order of rising cost) would cost to reach the error `rmse`, by `cost` (the
+/// time, or the rays), interpolated linearly in log(cost)-log(error) between the first two neighbouring
+/// points whose errors bracket it; `None` if no two do.
+pub fn cost_at_rmse(curve: &[Measurement], rmse: f64, cost: fn(&Measurement) -> f64) -> Option<f64> {
+    curve.windows(2).find_map(|w| {
+        let (a, b) = (&w[0], &w[1]);
+        let (lo, hi) = (a.rmse.min(b.rmse), a.rmse.max(b.rmse));
+        if !(lo..=hi).contains(&rmse) {
+            return None;
+        }
+        if hi == lo {
+            return Some(cost(a).min(cost(b)));
+        }
+        let t = (rmse.ln() - a.rmse.ln()) / (b.rmse.ln() - a.rmse.ln());
+        Some((cost(a).ln() + t * (cost(b).ln() - cost(a).ln())).exp())
     })
 }
 

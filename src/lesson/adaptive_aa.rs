@@ -78,7 +78,8 @@ pub fn refine(scene: &Scene, camera: &CameraFrame, settings: &RenderSettings, fr
                 let mut sum = *pixel;
                 for (index, (dx, dy)) in (1..).zip(EXTRA_SAMPLES) {
                     ctx.pixel_sample = Some(PixelSample { index, count: SAMPLES_PER_REFINED_PIXEL, pixel_key });
-                    sum += settings.sample(ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy)));
+                    let color = ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy));
+                    sum += settings.sample(color, &mut ctx.counters);
                 }
                 *pixel = sum / SAMPLES_PER_REFINED_PIXEL as f32;
                 counters.add(&ctx.counters);

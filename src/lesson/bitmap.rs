@@ -68,6 +68,7 @@ enum Texels {
     Srgb8 { codes: Vec<[u8; 4]>, table: &'static [f32; 256] },
 }
 
+/// An image in linear light, addressed by pixel or sampled by texture coordinates (slide "Bitmap текстури").
 #[derive(Clone, Debug)]
 pub struct Bitmap {
     width: usize,
@@ -115,9 +116,11 @@ impl Bitmap {
         Ok(Bitmap { width, height, texels, _charge: charge })
     }
 
+    /// Width in pixels.
     pub fn width(&self) -> usize {
         self.width
     }
+    /// Height in pixels.
     pub fn height(&self) -> usize {
         self.height
     }
@@ -153,6 +156,7 @@ impl Bitmap {
                 at(wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height))
             }
             Filter::Bilinear => {
+                exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
                 // Texel centres sit at half-integer coordinates.
                 let (fx, fy) = (x - 0.5, y - 0.5);
                 let (x0, y0) = (floor(fx), floor(fy));

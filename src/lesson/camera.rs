@@ -15,8 +15,10 @@ use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 use glam::Mat3A;
 
+/// The pinhole camera: where it stands, where it looks (yaw, pitch, roll) and how much it sees (`fov`).
 #[derive(Clone, Copy, Debug)]
 pub struct Camera {
+    /// Where the camera stands, in world space.
     pub position: Vector,
     /// Degrees; positive turns left.
     pub yaw: f32,

@@ -15,9 +15,12 @@ use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Sub};
 pub struct Color(pub Vec3A);
 
 impl Color {
+    /// Black: no light (0, 0, 0).
     pub const BLACK: Color = Color(Vec3A::ZERO);
+    /// White: (1, 1, 1), the colour that leaves light unchanged when it multiplies it.
     pub const WHITE: Color = Color(Vec3A::ONE);
 
+    /// A colour from its linear red, green and blue channels (not sRGB-encoded values).
     pub const fn new(r: f32, g: f32, b: f32) -> Color {
         Color(Vec3A::new(r, g, b))
     }
@@ -25,15 +28,19 @@ impl Color {
     pub const fn gray(v: f32) -> Color {
         Color(Vec3A::splat(v))
     }
+    /// The red channel, linear.
     pub fn r(self) -> f32 {
         self.0.x
     }
+    /// The green channel, linear.
     pub fn g(self) -> f32 {
         self.0.y
     }
+    /// The blue channel, linear.
     pub fn b(self) -> f32 {
         self.0.z
     }
+    /// The channels as `[r, g, b]`, linear.
     pub fn to_array(self) -> [f32; 3] {
         self.0.to_array()
     }
@@ -45,6 +52,7 @@ impl Color {
     pub fn luminance(self) -> f32 {
         self.0.dot(Vec3A::new(0.2126, 0.7152, 0.0722))
     }
+    /// True when no channel is NaN or infinite.
     pub fn is_finite(self) -> bool {
         self.0.is_finite()
     }

@@ -103,7 +103,9 @@ pub fn equirect_direction(u: f32, v: f32) -> Vector {
 /// An environment from one equirectangular image (the slides' spherical environment).
 #[derive(Clone, Debug)]
 pub struct SphericalEnvironment {
+    /// The equirectangular image (twice as wide as high), in linear light; its centre faces +Z.
     pub bitmap: Arc<Bitmap>,
+    /// How the image is read between texel centres (bilinear unless changed with `with_filter`).
     pub filter: Filter,
 }
 
@@ -128,6 +130,7 @@ impl SphericalEnvironment {
         Ok(SphericalEnvironment::new(Arc::new(Bitmap::from_file(file)?)))
     }
 
+    /// The same environment read with `filter`.
     pub fn with_filter(self, filter: Filter) -> SphericalEnvironment {
         SphericalEnvironment { filter, ..self }
     }
@@ -144,11 +147,17 @@ impl Environment for SphericalEnvironment {
 /// One face of a cube map.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CubeFace {
+    /// The face around +X (file `posx`).
     PosX,
+    /// The face around -X (file `negx`).
     NegX,
+    /// The face around +Y, straight up (file `posy`).
     PosY,
+    /// The face around -Y, straight down (file `negy`).
     NegY,
+    /// The face around +Z, where the default camera looks (file `posz`).
     PosZ,
+    /// The face around -Z, behind the default camera (file `negz`).
     NegZ,
 }
 
@@ -178,6 +187,7 @@ impl CubeFace {
 
 /// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
 pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
+    exercise!(cube_face_uv(dir));
     let a = dir.abs();
     let face = if a.x >= a.y && a.x >= a.z {
         if dir.x >= 0.0 { CubeFace::PosX } else { CubeFace::NegX }
@@ -226,6 +236,7 @@ fn half_turn(bitmap: &Bitmap) -> Bitmap {
 pub struct CubemapEnvironment {
     /// In the order of [`CubeFace::ALL`].
     pub faces: [Arc<Bitmap>; 6],
+    /// How the faces are read between texel centres (bilinear unless changed with `with_filter`).
     pub filter: Filter,
 }
 
@@ -293,6 +304,7 @@ impl CubemapEnvironment {
         Ok(CubemapEnvironment::new(faces))
     }
 
+    /// The same cube map read with `filter`.
     pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {
         CubemapEnvironment { filter, ..self }
     }

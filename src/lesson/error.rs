@@ -5,14 +5,29 @@
 
 use std::path::{Path, PathBuf};
 
+/// An error of the renderer: a file that cannot be read, decoded or written, or a parameter out of range.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// A file could not be read, decoded or written.
     #[error("{what} '{}': {}", printable(&.path.display().to_string()), printable(.reason))]
-    File { what: &'static str, path: PathBuf, reason: String },
+    File {
+        /// What was being done, as the start of the message: "cannot read texture".
+        what: &'static str,
+        /// The file at fault.
+        path: PathBuf,
+        /// Why it failed: the underlying error (file system, decoder) or the scene file's line and message.
+        reason: String,
+    },
     /// A parameter is outside the range where it makes sense.
     #[error("invalid {name} {}: {}", printable(.value), printable(.reason))]
-    Parameter { name: &'static str, value: String, reason: String },
+    Parameter {
+        /// What was given the value: an option (`--multiplier`) or a description ("side-by-side pictures").
+        name: &'static str,
+        /// The value it was given, as text.
+        value: String,
+        /// Why the value makes no sense ("must be between 0 and 1").
+        reason: String,
+    },
 }
 
 impl Error {
@@ -41,4 +56,5 @@ pub fn printable(text: &str) -> String {
     out
 }
 
+/// The renderer's `Result`: [`Error`] unless another error type is named.
 pub type Result<T, E = Error> = std::result::Result<T, E>;

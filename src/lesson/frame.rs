@@ -11,8 +11,11 @@ use tempfile::NamedTempFile;
 /// A rendered picture in linear light, rows from the top.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Frame {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// The linear colours, row by row from the top: pixel (x, y) is at `y * width + x`.
     pub pixels: Vec<Color>,
 }
 
@@ -24,6 +27,7 @@ impl Frame {
         pixels.par_extend(rayon::iter::repeat_n(Color::BLACK, width as usize * height as usize));
         Frame { width, height, pixels }
     }
+    /// The linear colour of pixel (x, y), (0, 0) being the top-left corner.
     pub fn get(&self, x: u32, y: u32) -> Color {
         self.pixels[(y * self.width + x) as usize]
     }

@@ -1,28 +1,44 @@
 //! Point lights and shadow rays (lectures 2-3). A point light of `intensity` I at distance d gives
 //! I / d^2 (times its colour) to a surface facing it, if nothing stands in between.
 
-use crate::instruments::ray_tree::LightKind;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
+use crate::lesson::observer::Light;
 use crate::lesson::scene::TraceContext;
 
+/// A point light (lectures 2-3): light from one point, falling off with the square of the distance.
 #[derive(Clone, Copy, Debug)]
 pub struct PointLight {
+    /// Where the light is, in world space.
     pub position: Vector,
+    /// The light's colour, in linear RGB; `intensity` scales it.
     pub color: Color,
     /// The course's light "power": irradiance at distance 1 is `color * intensity`.
     pub intensity: f32,
 }
 
 impl PointLight {
+    /// A light at `position` (world space) of the given colour and intensity.
     pub fn new(position: Vector, color: Color, intensity: f32) -> PointLight {
         PointLight { position, color, intensity }
     }
 }
 
-/// The light loop of the diffuse shaders (Lambert, Phong, and any new one): the irradiance a diffuse surface
-/// receives at the hit point, whose face-forwarded shading normal is `n`. It is the sum of
+/// What the light loop gathers at a surface point (see [`light_loop`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lighting {
+    /// The irradiance the point receives: ambient light, the lamps that reach it (each times the cosine of
+    /// its angle to the normal) and the caustic light of the photon map. A diffuse shader multiplies it by
+    /// its colour.
+    pub irradiance: Color,
+    /// The sum of what the shader's `each_lamp` returned for the lamps that reach the point: light it adds
+    /// as it is, such as Phong's highlight. Black for a shader that adds nothing.
+    pub highlights: Color,
+}
+
+/// The light loop of the diffuse shaders (Lambert, Phong, and any new one) at the hit point, whose
+/// face-forwarded shading normal is `n`. Its irradiance is the sum of
 ///
 /// - the scene's ambient light,
 /// - for every lamp that reaches the point (a shadow ray says so), its irradiance times the cosine of its
@@ -31,18 +47,20 @@ impl PointLight {
 ///   the point through mirrors and glass, which shadow rays cannot find.
 ///
 /// For each lamp that reaches the point it also calls `each_lamp(to_light, irradiance)`, with the unit
-/// direction to the lamp and its irradiance before the cosine, for the terms that depend on where the light
-/// comes from (Phong's highlight). A shader that takes its light from here gets caustics without asking.
+/// direction to the lamp and its irradiance before the cosine, and adds what it returns to the
+/// [`Lighting::highlights`]: the light that depends on where the lamp is (Phong's highlight). A shader that
+/// takes its light from here gets caustics without asking.
 pub fn light_loop(
     ctx: &mut TraceContext,
     info: &IntersectionInfo,
     n: Vector,
-    mut each_lamp: impl FnMut(Vector, Color),
-) -> Color {
+    mut each_lamp: impl FnMut(Vector, Color) -> Color,
+) -> Lighting {
     let scene = ctx.scene;
     let mut irradiance = scene.ambient;
+    let mut highlights = Color::BLACK;
     if !scene.ambient.is_black() {
-        ctx.record(|tree| tree.light(LightKind::Ambient, scene.ambient));
+        ctx.observe(|o| o.light_found(Light::Ambient, scene.ambient));
     }
     for (index, light) in scene.lights.iter().enumerate() {
         let to_light = light.position - info.ip;
@@ -52,26 +70,32 @@ pub fn light_loop(
             continue;
         }
         let visible = ctx.visible(info, light.position);
-        let shadow_ray = LightKind::Lamp { index, from: info.ip, dir: l, visible };
+        let shadow_ray = Light::Lamp { index, from: info.ip, dir: l, visible };
         if visible {
             let lamp = light.color * (light.intensity / dist2);
             let direct = lamp * n.dot(l);
             irradiance += direct;
-            each_lamp(l, lamp);
-            ctx.record(|tree| tree.light(shadow_ray, direct));
+            let highlight = each_lamp(l, lamp);
+            highlights += highlight;
+            ctx.observe(|o| {
+                o.light_found(shadow_ray, direct);
+                if !highlight.is_black() {
+                    o.light_found(Light::Highlight { index }, highlight);
+                }
+            });
         } else {
-            ctx.record(|tree| tree.light(shadow_ray, Color::BLACK));
+            ctx.observe(|o| o.light_found(shadow_ray, Color::BLACK));
         }
     }
     if let Some(map) = &scene.photon_map {
         let caustic = map.irradiance(info.ip, n);
         irradiance += caustic;
-        ctx.record(|tree| tree.light(LightKind::Photons, caustic));
+        ctx.observe(|o| o.light_found(Light::Photons, caustic));
     }
-    irradiance
+    Lighting { irradiance, highlights }
 }
 
 /// The irradiance a diffuse surface receives at the hit point (see [`light_loop`]).
 pub fn diffuse_light(ctx: &mut TraceContext, info: &IntersectionInfo, n: Vector) -> Color {
-    light_loop(ctx, info, n, |_, _| {})
+    light_loop(ctx, info, n, |_, _| Color::BLACK).irradiance
 }

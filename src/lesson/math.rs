@@ -15,6 +15,7 @@ pub type Vector = Vec3A;
 /// must know whether the ray is entering or leaving.
 #[inline]
 pub fn faceforward(n: Vector, i: Vector) -> Vector {
+    exercise!(faceforward(n, i));
     if n.dot(i) > 0.0 { -n } else { n }
 }
 
@@ -35,6 +36,7 @@ pub fn reflect(i: Vector, n: Vector) -> Vector {
 /// formula needs.
 #[inline]
 pub fn refract(i: Vector, n: Vector, eta1_over_eta2: f32) -> Option<Vector> {
+    exercise!(refract(i, n, eta1_over_eta2));
     let eta = eta1_over_eta2;
     let n_dot_i = n.dot(i);
     let k = 1.0 - eta * eta * (1.0 - n_dot_i * n_dot_i);
@@ -51,6 +53,7 @@ pub fn refract(i: Vector, n: Vector, eta1_over_eta2: f32) -> Option<Vector> {
 /// medium, as Schlick prescribes, so a Fresnel glass never loses energy.
 #[inline]
 pub fn fresnel(i: Vector, n: Vector, eta1_over_eta2: f32) -> f32 {
+    exercise!(fresnel(i, n, eta1_over_eta2));
     let eta = eta1_over_eta2;
     let r0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
     let cos_i = (-n.dot(i)).clamp(0.0, 1.0);
@@ -72,6 +75,7 @@ pub fn fresnel(i: Vector, n: Vector, eta1_over_eta2: f32) -> f32 {
 /// reflection.
 #[inline]
 pub fn fresnel_exact(i: Vector, n: Vector, eta1_over_eta2: f32) -> f32 {
+    exercise!(fresnel_exact(i, n, eta1_over_eta2));
     let eta = eta1_over_eta2;
     let cos_i = (-n.dot(i)).clamp(0.0, 1.0);
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
@@ -90,12 +94,16 @@ pub fn fresnel_exact(i: Vector, n: Vector, eta1_over_eta2: f32) -> f32 {
 /// (JCGT 2017), which has no singularity anywhere on the sphere.
 #[derive(Clone, Copy, Debug)]
 pub struct OrthonormalBasis {
+    /// First vector perpendicular to `normal` (the local x axis).
     pub tangent: Vector,
+    /// Second vector perpendicular to `normal` and to `tangent` (the local y axis).
     pub bitangent: Vector,
+    /// The unit normal the basis was built around (the local z axis).
     pub normal: Vector,
 }
 
 impl OrthonormalBasis {
+    /// The basis around `normal`, which must be of unit length.
     pub fn new(normal: Vector) -> OrthonormalBasis {
         let sign = 1.0f32.copysign(normal.z);
         let a = -1.0 / (sign + normal.z);

@@ -1,11 +1,25 @@
 //! The lesson: the slides' code. Nothing here imports the instruments or the application.
 
+/// `exercise!(name(arguments));`, the first line of each slide function a graded exercise covers. Built for
+/// the exercises (feature `exercises`), it returns the student's answer when that exercise is handed out
+/// (see [`exercise_hooks`]); in the plain build it is nothing at all.
+macro_rules! exercise {
+    ($hook:ident($($argument:expr),* $(,)?)) => {
+        #[cfg(feature = "exercises")]
+        if let Some(answer) = $crate::lesson::exercise_hooks::$hook($($argument),*) {
+            return answer;
+        }
+    };
+}
+
 pub mod adaptive_aa;
 pub mod bitmap;
 pub mod camera;
 pub mod color;
 pub mod environment;
 pub mod error;
+#[cfg(feature = "exercises")]
+pub mod exercise_hooks;
 pub mod frame;
 pub mod geometry;
 pub mod image_file;
@@ -13,6 +27,7 @@ pub mod input;
 pub mod light;
 pub mod math;
 pub mod node;
+pub mod observer;
 pub mod photon_map;
 pub mod ray;
 pub mod render;
@@ -24,3 +39,12 @@ pub mod spectral;
 pub mod texture;
 pub mod tone_mapping;
 pub mod transform;
+
+/// The last segment of a type's path, without generic arguments: `Reflection` for
+/// `lecture6::lesson::shader::reflection::Reflection`. What the ray tree calls shaders, textures and geometry
+/// by default (their `name`).
+pub fn type_label<T: ?Sized>() -> &'static str {
+    let name = std::any::type_name::<T>();
+    let name = name.split('<').next().unwrap_or(name);
+    name.rsplit("::").next().unwrap_or(name)
+}

@@ -14,6 +14,7 @@ use std::sync::Arc;
 /// Anything that can be a node's geometry: a shape, or a shape shared with other nodes (`Arc<Mesh>`,
 /// `Arc<dyn Geometry>`), which is how two nodes show one mesh without a copy (instancing).
 pub trait IntoGeometry {
+    /// The geometry, boxed in an `Arc` so that nodes can share it.
     fn into_geometry(self) -> Arc<dyn Geometry>;
 }
 
@@ -35,9 +36,13 @@ impl IntoGeometry for Arc<dyn Geometry> {
     }
 }
 
+/// One object of the scene: a geometry in its canonical form, the shader that colours it and the transform
+/// that places it in the world (slide "Model трансформация").
 #[derive(Clone)]
 pub struct Node {
+    /// The shape, in its canonical form (a sphere, a cube, a mesh as loaded); nodes may share it (instancing).
     pub geometry: Arc<dyn Geometry>,
+    /// What colours the node's surface; can be shared with other nodes.
     pub shader: Arc<dyn Shader>,
     /// `None` is the identity, and skips the two matrix products per ray.
     pub transform: Option<Transform>,

@@ -7,8 +7,10 @@
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, offset_ray_origin};
 
+/// A ray: where it starts, where it goes and how deep in the ray tree it is.
 #[derive(Clone, Copy, Debug)]
 pub struct Ray {
+    /// The point the ray starts from, in world space (in a geometry's canonical space while a node intersects it).
     pub start: Vector,
     /// Unit length for rays made by the camera and the shaders.
     pub dir: Vector,

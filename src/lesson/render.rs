@@ -10,20 +10,24 @@
 //!
 //! Dispersion (see [`crate::lesson::spectral`]): a scene whose shaders depend on the wavelength is traced once per
 //! wavelength band (the slide's K passes; each pass of a pixel has its own random stream, keyed by the pass)
-//! or, with spectral sampling, once with a band of its own for every anti-aliasing sample. The bands'
-//! colours are added in double precision, so a surface that looks the same in every band keeps its colour
-//! exactly. A scene with nothing dispersive is traced once, in white light, whatever `wavelengths` says.
+//! or in one pass whose samples carry wavelengths of their own: one each (spectral sampling), or several
+//! (hero-wavelength sampling), which follow one path until it meets a dispersive surface
+//! ([`TraceContext::met_dispersion`]) and are then traced one by one. The bands' colours are added in double
+//! precision, so a surface that looks the same in every band keeps its colour exactly. The frame keeps
+//! colours outside the sRGB gamut as they are (negative channels); the picture that is shown maps them
+//! ([`crate::lesson::spectral::GamutMapping`]). A scene with nothing dispersive is traced once, in white
+//! light, whatever `wavelengths` says.
 
-use crate::instruments::ray_tree::RayTree;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
+use crate::lesson::observer::Observer;
 use crate::lesson::photon_map::PhotonStats;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::{Rng, key_of, mix64, shuffled_index};
 use crate::lesson::scene::{Counters, PixelSample, RECURSION_SAFETY_CAP, Scene, TraceContext};
-use crate::lesson::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan, fit_to_gamut};
+use crate::lesson::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::io::IsTerminal;
@@ -50,7 +54,9 @@ pub const WORKER_STACK_SIZE: usize = RECURSION_SAFETY_CAP as usize * 8 * 1024;
 /// How to render a scene.
 #[derive(Clone, Copy, Debug)]
 pub struct RenderSettings {
+    /// Width of the picture in pixels.
     pub width: u32,
+    /// Height of the picture in pixels.
     pub height: u32,
     /// Anti-aliasing samples per pixel.
     pub spp: u32,
@@ -60,9 +66,10 @@ pub struct RenderSettings {
     pub seed: u64,
     /// Show a progress bar on stderr (only when stderr is a terminal).
     pub progress: bool,
-    /// Wavelength passes for a dispersive scene (the slide's K); ignored by other scenes and by spectral sampling.
+    /// For a dispersive scene, the wavelength passes (the slide's K) or, with hero-wavelength sampling, the
+    /// wavelengths each path carries; ignored by other scenes and by spectral sampling.
     pub wavelengths: u32,
-    /// How a dispersive scene is traced: K wavelength passes or one wavelength per sample.
+    /// How a dispersive scene is traced: K wavelength passes, one wavelength per sample, or hero wavelengths.
     pub spectral: SpectralMode,
     /// The course's adaptive anti-aliasing after the single sample of each pixel (see
     /// [`crate::lesson::adaptive_aa`]); needs `spp` 1.
@@ -82,8 +89,8 @@ impl Default for RenderSettings {
             threads: None,
             seed: 1,
             progress: false,
-            wavelengths: 8,
-            spectral: SpectralMode::Passes,
+            wavelengths: SpectralMode::default().default_wavelengths(),
+            spectral: SpectralMode::default(),
             adaptive_aa: false,
             max_sample: None,
         }
@@ -92,8 +99,12 @@ impl Default for RenderSettings {
 
 impl RenderSettings {
     /// A traced sample as it goes into a pixel's average: NaN and negative channels zeroed (see
-    /// [`Color::sanitized`]) and, with [`RenderSettings::max_sample`], scaled down to that brightness.
-    pub fn sample(&self, c: Color) -> Color {
+    /// [`Color::sanitized`]) and, with [`RenderSettings::max_sample`], scaled down to that brightness. A
+    /// sample that came back NaN or infinite is counted in `counters` before it is cleaned.
+    pub fn sample(&self, c: Color, counters: &mut Counters) -> Color {
+        if !c.is_finite() {
+            counters.non_finite_samples += 1;
+        }
         let c = c.sanitized();
         match self.max_sample {
             Some(max) if c.max_channel() > max => c * (max / c.max_channel()),
@@ -147,7 +158,9 @@ impl RenderSettings {
 /// What a render produced besides the picture.
 #[derive(Clone, Debug)]
 pub struct RenderStats {
+    /// Wall-clock time of the render (the photon map's construction excluded).
     pub elapsed: Duration,
+    /// Worker threads the render ran on.
     pub threads: usize,
     /// Rays of all passes.
     pub counters: Counters,
@@ -177,6 +190,7 @@ pub struct Stratifier {
 }
 
 impl Stratifier {
+    /// The sample positions for `spp` samples per pixel: a jittered grid when `spp` is a square, else N-rooks.
     pub fn new(spp: u32) -> Stratifier {
         let k = (spp as f64).sqrt().round() as u32;
         Stratifier { spp, grid: if k * k == spp { k } else { 0 }, rows_key: 0 }
@@ -206,8 +220,12 @@ impl Stratifier {
 /// scene is traced as `settings.spectral` says; any other in one white pass.
 pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, RenderStats)> {
     settings.check()?;
-    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
-    render_with_plan(scene, settings, plan)
+    render_with_plan(scene, settings, spectral_plan(scene, settings))
+}
+
+/// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive.
+pub fn spectral_plan(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
+    SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths, scene.illuminant)
 }
 
 /// Renders the scene with the given wavelength plan, whether or not the scene needs it (tests use this to
@@ -273,16 +291,22 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
 /// One pixel rendered alone, exactly as [`render`] renders it (same samples, same random streams).
 #[derive(Clone, Debug)]
 pub struct PixelTrace {
+    /// The pixel's linear colour, as [`render`] writes it into the frame.
     pub color: Color,
     /// The rays traced for the pixel.
     pub counters: Counters,
-    /// The rays behind the pixel, when asked for.
-    pub tree: Option<Box<RayTree>>,
 }
 
-/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and, with
-/// `record`, recording its ray tree (see [`crate::instruments::ray_tree`]). `--trace-pixel` uses it.
-pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, record: bool) -> Result<PixelTrace> {
+/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and telling
+/// `observer`, if given, what the recursion does (see [`crate::lesson::observer`]; `--trace-pixel` records the
+/// ray tree so).
+pub fn render_pixel(
+    scene: &Scene,
+    settings: &RenderSettings,
+    x: u32,
+    y: u32,
+    observer: Option<&mut dyn Observer>,
+) -> Result<PixelTrace> {
     if x >= settings.width || y >= settings.height {
         return Err(Error::parameter(
             "pixel",
@@ -290,29 +314,27 @@ pub fn render_pixel(scene: &Scene, settings: &RenderSettings, x: u32, y: u32, re
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let mut pixels = render_row(scene, settings, y, x..x + 1, record.then_some(x))?;
-    Ok(pixels.pop().expect("the row holds pixel x"))
+    settings.check()?;
+    let plan = spectral_plan(scene, settings);
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
+    tracer.observer = observer.map(|o| o as &mut dyn Observer);
+    let color = tracer.pixel(x, y);
+    Ok(PixelTrace { color, counters: tracer.counters })
 }
 
-/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters, and the ray tree
-/// of pixel `record`, if given. The debug views use it.
-pub fn render_row(
-    scene: &Scene,
-    settings: &RenderSettings,
-    y: u32,
-    xs: Range<u32>,
-    record: Option<u32>,
-) -> Result<Vec<PixelTrace>> {
+/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters. The debug views
+/// use it.
+pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
     settings.check()?;
-    let plan = SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths);
+    let plan = spectral_plan(scene, settings);
     let camera = scene.camera.frame(settings.width, settings.height);
     let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
     let mut pixels = Vec::with_capacity(xs.len());
     for x in xs.start..xs.end.min(settings.width) {
         tracer.counters = Counters::default();
-        tracer.recorder = (record == Some(x)).then(|| Box::new(RayTree::new()));
         let color = tracer.pixel(x, y);
-        pixels.push(PixelTrace { color, counters: tracer.counters.clone(), tree: tracer.recorder.take() });
+        pixels.push(PixelTrace { color, counters: tracer.counters.clone() });
     }
     Ok(pixels)
 }
@@ -344,6 +366,10 @@ pub fn render_rect(
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
 const PASS_KEY: u64 = 0x5045_4354_5241_4c00;
 
+/// A salt for the random streams of the wavelengths of spectral and hero sampling, kept apart from the
+/// pixel's own stream so that the camera rays are those of the white render.
+const WAVELENGTH_KEY: u64 = 0x5741_5645_4c45_4e47;
+
 /// A salt for the pixels' sample-set keys, so that they are unrelated to the seeds of the pixels' streams.
 const SAMPLE_SET_KEY: u64 = 0x5345_5453_414d_504c;
 
@@ -364,8 +390,8 @@ struct PixelTracer<'a> {
     /// The [`PixelSample::count`] of every pixel: the spp, or what adaptive anti-aliasing may give a pixel.
     samples_per_pixel: u32,
     counters: Counters,
-    /// The ray tree being recorded for the pixels this tracer renders (`--trace-pixel`), if any.
-    recorder: Option<Box<RayTree>>,
+    /// The instrument watching the pixels this tracer renders (`--trace-pixel`), if any.
+    observer: Option<&'a mut dyn Observer>,
 }
 
 impl<'a> PixelTracer<'a> {
@@ -381,7 +407,7 @@ impl<'a> PixelTracer<'a> {
             stratifier,
             samples_per_pixel,
             counters: Counters::default(),
-            recorder: None,
+            observer: None,
         }
     }
 
@@ -390,17 +416,17 @@ impl<'a> PixelTracer<'a> {
     fn samples(&mut self, x: u32, y: u32, stream_keys: &[u64], wavelength: Option<f32>) -> Color {
         let mut ctx = TraceContext::new(self.scene, Rng::for_keys(stream_keys));
         let pixel_key = pixel_key(stream_keys);
-        ctx.recorder = self.recorder.take();
+        ctx.observer = self.observer.take();
         self.stratifier.start_pixel(&mut ctx.rng);
         let mut sum = Color::BLACK;
         for s in 0..self.settings.spp {
             ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
             let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
             let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-            sum += self.settings.sample(ctx.raytrace(&ray));
+            sum += self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters);
         }
         self.counters.add(&ctx.counters);
-        self.recorder = ctx.recorder.take();
+        self.observer = ctx.observer.take();
         sum / self.settings.spp as f32
     }
 
@@ -414,31 +440,57 @@ impl<'a> PixelTracer<'a> {
                     let stream_keys = [seed, x as u64, y as u64, PASS_KEY, k as u64];
                     add_weighted(&mut sum, band, self.samples(x, y, &stream_keys, Some(band.centre())));
                 }
-                fit_to_gamut(to_color(sum))
+                to_color(sum)
             }
-            SpectralPlan::Sampled => {
-                let spp = self.settings.spp;
-                let stream_keys = [seed, x as u64, y as u64];
-                let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
-                let pixel_key = pixel_key(&stream_keys);
-                ctx.recorder = self.recorder.take();
-                self.stratifier.start_pixel(&mut ctx.rng);
-                // Sample s traces band shuffled_index(s): every band once, in an order of the pixel's own.
-                let bands_key = ctx.rng.next_u32();
-                let mut sum = [0.0f64; 3];
-                for s in 0..spp {
-                    ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
-                    let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
-                    let band = Band::nth(shuffled_index(s, spp, bands_key), spp);
-                    let wavelength = Some(band.at(ctx.rng.next_f32()));
-                    let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-                    add_weighted(&mut sum, &band, self.settings.sample(ctx.raytrace(&ray)));
+            SpectralPlan::Sampled => self.wavelength_samples(x, y, 1, false),
+            &SpectralPlan::Hero { per_path } => self.wavelength_samples(x, y, per_path, true),
+        }
+    }
+
+    /// Spectral sampling in one pass: the pixel's `spp` samples share out `per_path * spp` equal bands of the
+    /// spectrum, each sample `per_path` of them spread evenly over it (bands `b`, `b + spp`, `b + 2 spp`, ...,
+    /// `b` a different one for every sample, in an order of the pixel's own), its wavelengths at the same
+    /// jittered place in each band. Every sample's path is traced at each of its wavelengths and weighted by
+    /// the band's colour; every band is seen once, so that the bands' colours add up to the light's. With
+    /// `split` (hero-wavelength sampling) the path is first traced at the first of its wavelengths (the hero)
+    /// only, and if it met nothing dispersive, what it brought back holds for every wavelength: the sample
+    /// counts as white light, `1 / spp` of the light's colour, as in a white render. Only a path that met
+    /// dispersive glass is traced again for the others (from the camera: the part before the glass is the
+    /// same for every wavelength).
+    fn wavelength_samples(&mut self, x: u32, y: u32, per_path: u32, split: bool) -> Color {
+        let (seed, spp, illuminant) = (self.settings.seed, self.settings.spp, self.scene.illuminant);
+        let stream_keys = [seed, x as u64, y as u64];
+        let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
+        let mut wavelength_rng = Rng::for_keys(&[seed, x as u64, y as u64, WAVELENGTH_KEY]);
+        let pixel_key = pixel_key(&stream_keys);
+        ctx.observer = self.observer.take();
+        self.stratifier.start_pixel(&mut ctx.rng);
+        let bands_key = wavelength_rng.next_u32();
+        // Paths that met nothing dispersive, as a white render adds them; the others, band by band.
+        let mut white = Color::BLACK;
+        let mut spectral = [0.0f64; 3];
+        for s in 0..spp {
+            ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
+            let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
+            let camera_ray = self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy);
+            let first = shuffled_index(s, spp, bands_key);
+            let u = wavelength_rng.next_f32();
+            for j in 0..per_path {
+                let band = Band::nth(first + j * spp, per_path * spp, illuminant);
+                ctx.met_dispersion = false;
+                let ray = Ray { wavelength: Some(band.at(u)), ..camera_ray };
+                let c = self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters);
+                if split && j == 0 && !ctx.met_dispersion {
+                    white += c;
+                    break;
                 }
-                self.counters.add(&ctx.counters);
-                self.recorder = ctx.recorder.take();
-                fit_to_gamut(to_color(sum))
+                add_weighted(&mut spectral, &band, c);
             }
         }
+        self.counters.add(&ctx.counters);
+        self.observer = ctx.observer.take();
+        let light = illuminant.white();
+        white / spp as f32 * to_color(light) + to_color(spectral)
     }
 }
 

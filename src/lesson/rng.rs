@@ -36,6 +36,7 @@ impl Rng {
     pub fn for_pixel(seed: u64, x: u32, y: u32) -> Rng {
         Rng::for_keys(&[seed, x as u64, y as u64])
     }
+    /// The next 32 random bits of the PCG32 stream.
     pub fn next_u32(&mut self) -> u32 {
         self.0.next_u32()
     }

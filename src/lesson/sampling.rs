@@ -106,6 +106,7 @@ impl DiscSamples {
 
 /// A uniform random point of the unit disc, by rejection from the square [-1, 1]^2 as in the course's code.
 pub fn random_unit_disc_point(rng: &mut Rng) -> (f32, f32) {
+    exercise!(random_unit_disc_point(rng));
     loop {
         let x = 2.0 * rng.next_f32() - 1.0;
         let y = 2.0 * rng.next_f32() - 1.0;
@@ -119,6 +120,7 @@ pub fn random_unit_disc_point(rng: &mut Rng) -> (f32, f32) {
 /// concentric circles, so points that are evenly spread in the square stay evenly spread in the disc, and
 /// equal areas map to equal areas.
 pub fn concentric_disc(u: f32, v: f32) -> (f32, f32) {
+    exercise!(concentric_disc(u, v));
     let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
     if a == 0.0 && b == 0.0 {
         return (0.0, 0.0);

@@ -4,7 +4,7 @@
 //! generator of the pixel being rendered and the ray counters. Shaders receive it and call
 //! [`TraceContext::raytrace`] to follow reflected and refracted rays, and [`TraceContext::visible`] for
 //! shadow rays (through [`crate::lesson::light::light_loop`], which adds the caustic light of the photon map as well). One context exists
-//! per pixel row being rendered, so threads never share one.
+//! per pixel (and wavelength pass) being rendered, so threads never share one.
 //!
 //! Adaptive ray-tree depth control (the classic Whitted optimisation, beyond the slides): besides the
 //! slides' `MAX_RAY_DEPTH`, `raytrace` returns black at once for a ray whose `weight` (the product of the
@@ -12,7 +12,6 @@
 //! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
 //! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
 
-use crate::instruments::ray_tree::{RayTree, Stop};
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::environment::Environment;
@@ -21,9 +20,12 @@ use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::PointLight;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::{Node, NodeTree, closest_hit_linear};
+use crate::lesson::observer::{Observer, Stop};
 use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
+use crate::lesson::shader::Layer;
+use crate::lesson::spectral::Illuminant;
 use std::sync::Arc;
 
 /// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
@@ -48,10 +50,15 @@ pub fn srgb8_finest_step() -> f32 {
     srgb_to_linear(1.0 / 255.0)
 }
 
+/// Everything a picture shows: the camera, the nodes, the lights, the environment and the settings of the
+/// recursion (the slides' global scene).
 #[derive(Clone)]
 pub struct Scene {
+    /// The camera the picture is seen through.
     pub camera: Camera,
+    /// The objects, in the order they were added (the ray tree names an unnamed node by its index here).
     pub nodes: Vec<Node>,
+    /// The point lights.
     pub lights: Vec<PointLight>,
     /// What rays that hit nothing see; black when `None`.
     pub environment: Option<Arc<dyn Environment>>,
@@ -64,8 +71,10 @@ pub struct Scene {
     pub min_ray_weight: f32,
     /// How the caustic photon map is made (no photons by default).
     pub photons: PhotonSettings,
-    /// The caustic photon map, built before rendering (see [`crate::app::cli::Cli::prepare_scene`]); `None` renders
-    /// without caustics.
+    /// The spectrum a white light stands for when wavelengths are traced (a dispersive scene): D65 by default.
+    pub illuminant: Illuminant,
+    /// The caustic photon map, built before rendering ([`PhotonMap::build`]); `None` renders without
+    /// caustics.
     pub photon_map: Option<Arc<PhotonMap>>,
     /// The BVH over the nodes, in the copy of the scene that the renderer and the photon tracer trace
     /// (see [`Scene::with_node_tree`]); `None` tests the nodes one by one.
@@ -73,6 +82,8 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// An empty scene seen through `camera`: no nodes or lights, a black environment, no ambient light, the
+    /// slide's [`MAX_RAY_DEPTH`], the default adaptive cut-off and no photon map.
     pub fn new(camera: Camera) -> Scene {
         Scene {
             camera,
@@ -83,6 +94,7 @@ impl Scene {
             max_depth: MAX_RAY_DEPTH,
             min_ray_weight: srgb8_finest_step(),
             photons: PhotonSettings::default(),
+            illuminant: Illuminant::default(),
             photon_map: None,
             node_tree: None,
         }
@@ -101,7 +113,7 @@ impl Scene {
     /// computes with become distances from the camera, so a scene far from the origin keeps the precision
     /// of one near it (pbrt-v4's "camera-world" space). A scene around the origin is left as it is, and
     /// costs nothing. Environments depend on directions only and are unaffected. The examples do this
-    /// before building the photon map and rendering (see `cli::prepare_scene`).
+    /// before building the photon map and rendering.
     ///
     /// Deviation from the slides: the course always renders in world coordinates; in f32, a scene moved
     /// 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
@@ -132,7 +144,7 @@ impl Scene {
     }
 
     /// Whether a photon map can add light to this scene: some node is a mirror or glass that casts caustics
-    /// ([`crate::lesson::shader::Shader::casts_caustics`]) and some light shines on it.
+    /// ([`crate::lesson::shader::Shader::caustic_caster`]) and some light shines on it.
     pub fn casts_caustics(&self) -> bool {
         crate::lesson::photon_map::Emitter::new(self, 1, 0).is_some()
     }
@@ -188,6 +200,9 @@ pub struct Counters {
     pub capped_rays: u64,
     /// Rays not traced because their weight was below `Scene::min_ray_weight` (not part of the total).
     pub pruned_rays: u64,
+    /// Camera samples that came back NaN or infinite, counted before the renderer cleans them (see
+    /// [`crate::lesson::render::RenderSettings::sample`]): 0 in a sound render, which the tests check.
+    pub non_finite_samples: u64,
 }
 
 impl Counters {
@@ -195,6 +210,7 @@ impl Counters {
     pub fn total(&self) -> u64 {
         self.rays_by_depth.iter().sum::<u64>() + self.shadow_rays
     }
+    /// Adds `other`'s counts to these (the counters of rows rendered in parallel, summed).
     pub fn add(&mut self, other: &Counters) {
         for (a, b) in self.rays_by_depth.iter_mut().zip(&other.rays_by_depth) {
             *a += b;
@@ -202,6 +218,7 @@ impl Counters {
         self.shadow_rays += other.shadow_rays;
         self.capped_rays += other.capped_rays;
         self.pruned_rays += other.pruned_rays;
+        self.non_finite_samples += other.non_finite_samples;
     }
 }
 
@@ -224,27 +241,42 @@ pub struct PixelSample {
 
 /// The state a shader sees while one pixel is being rendered.
 pub struct TraceContext<'a> {
+    /// The scene being rendered.
     pub scene: &'a Scene,
     /// The random generator of the current pixel.
     pub rng: Rng,
     /// The camera sample being traced, when the context traces a pixel's samples: the renderer sets it
     /// before each camera ray. `None` (the default) when the rays belong to no pixel (tests, benchmarks).
     pub pixel_sample: Option<PixelSample>,
+    /// The rays this context has traced so far.
     pub counters: Counters,
-    /// The ray tree being recorded (`--trace-pixel`), if any: see [`crate::instruments::ray_tree`].
-    pub recorder: Option<Box<RayTree>>,
+    /// The instrument watching the recursion, if any (the ray tree of `--trace-pixel`): see
+    /// [`crate::lesson::observer`]. Shaders never use it; `raytrace`, the light loop and `shade_layer` report
+    /// to it.
+    pub observer: Option<&'a mut dyn Observer>,
+    /// Set when a ray that carries a wavelength hits a node whose shader depends on it: from there on the
+    /// path is its wavelength's own (hero-wavelength sampling splits there; see [`crate::lesson::render`]).
+    pub met_dispersion: bool,
 }
 
 impl<'a> TraceContext<'a> {
+    /// A context for tracing rays in `scene`, drawing its random numbers from `rng`; no pixel sample, no observer.
     pub fn new(scene: &'a Scene, rng: Rng) -> TraceContext<'a> {
-        TraceContext { scene, rng, pixel_sample: None, counters: Counters::default(), recorder: None }
+        TraceContext {
+            scene,
+            rng,
+            pixel_sample: None,
+            counters: Counters::default(),
+            observer: None,
+            met_dispersion: false,
+        }
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
     /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
     /// environment when nothing is hit; otherwise whatever the hit node's shader says.
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
-        self.record(|tree| tree.begin(ray));
+        self.observe(|o| o.ray_begins(ray));
         if ray.depth > self.scene.max_depth {
             return self.stop(Stop::DepthLimit);
         }
@@ -260,19 +292,31 @@ impl<'a> TraceContext<'a> {
         let scene = self.scene;
         let (color, stop) = match scene.closest_hit(ray) {
             Some((info, node)) => {
-                self.record(|tree| tree.hit(scene, node, &info));
+                self.observe(|o| o.ray_hits(scene, node, &info));
+                self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
                 (node.shader.shade(ray, &info, self), None)
             }
             None => (scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)), Some(Stop::Missed)),
         };
-        self.record(|tree| tree.end(color, stop));
+        self.observe(|o| o.ray_ends(color, stop));
         color
     }
 
     /// A ray not traced, for the reason `stop`: black.
     fn stop(&mut self, stop: Stop) -> Color {
-        self.record(|tree| tree.end(Color::BLACK, Some(stop)));
+        self.observe(|o| o.ray_ends(Color::BLACK, Some(stop)));
         Color::BLACK
+    }
+
+    /// One layer of a `Layered` shader (slide "Layered Shader"): what the layer's shader makes of the hit,
+    /// times the layer's `weight` there (its blend, times what the layers above it let through). The same as
+    /// `layer.shader.shade(ray, info, ctx) * weight`; going through the context lets an instrument show each
+    /// layer's share of the colour.
+    pub fn shade_layer(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
+        self.observe(|o| o.layer_begins(layer));
+        let color = layer.shader.shade(ray, info, self);
+        self.observe(|o| o.layer_ends(color, weight));
+        color * weight
     }
 
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
@@ -283,5 +327,14 @@ impl<'a> TraceContext<'a> {
         let t_max = to_light.length();
         let ray = Ray::new(start, to_light / t_max);
         !self.scene.intersects(&ray, t_max)
+    }
+
+    /// Tells the observer, if there is one, what `report` says (see [`crate::lesson::observer`]); one test of
+    /// an `Option` otherwise.
+    #[inline(always)]
+    pub(crate) fn observe(&mut self, report: impl FnOnce(&mut dyn Observer)) {
+        if let Some(observer) = self.observer.as_deref_mut() {
+            report(observer);
+        }
     }
 }

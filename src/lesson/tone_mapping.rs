@@ -9,6 +9,10 @@
 //! - [`ToneMap`] (`--tonemap`): how light above 1 fits an 8-bit PNG. `clamp` is the course's; `reinhard`
 //!   compresses highlights smoothly (Reinhard et al. 2002, on the luminance, so hues stay). EXR and HDR
 //!   output keep linear light: tone mapping is a choice of display, made when the picture is viewed.
+//! - [`GamutMapping`] (`--gamut`): how a colour outside the sRGB gamut (a channel below 0, which only the
+//!   colours of narrow bands of the spectrum have; see [`crate::lesson::spectral`]) is shown: its negative
+//!   channels clipped, or grey mixed in. It is a choice of display too: EXR output keeps the negative values,
+//!   for whoever measures (HDR's RGBE format cannot hold them and writes 0).
 //!
 //! Fireflies (single bright pixels when a glossy surface reflects a small, very bright sun) are a matter of
 //! the samples, not of the picture: see [`crate::lesson::render::RenderSettings::max_sample`] (`--clamp-sample`).
@@ -16,6 +20,7 @@
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
+use crate::lesson::spectral::GamutMapping;
 use rayon::prelude::*;
 
 /// How linear light above 1 is fitted into an 8-bit picture.
@@ -39,6 +44,8 @@ pub struct Film {
     pub exposure: f32,
     /// How light above 1 fits an 8-bit picture.
     pub tone_map: ToneMap,
+    /// How colours outside the sRGB gamut are shown.
+    pub gamut: GamutMapping,
 }
 
 impl Film {
@@ -54,14 +61,15 @@ impl Film {
         Ok(())
     }
 
-    /// True when the film leaves every picture as it is (the course's picture).
+    /// True when the film leaves every picture as it is written (the course's picture: the 8-bit encoding
+    /// clamps every channel to [0, 1], which clips negative channels too).
     pub fn is_neutral(&self) -> bool {
-        self.exposure == 0.0 && self.tone_map == ToneMap::Clamp
+        self.exposure == 0.0 && self.tone_map == ToneMap::Clamp && self.gamut == GamutMapping::Clip
     }
 
-    /// The picture to write: exposed, and tone mapped unless `linear_output` (an EXR or HDR file, which
-    /// keeps light above 1 for whoever views it). The pixels are changed in place, in parallel (on the
-    /// current rayon pool); a neutral film returns the frame as it is.
+    /// The picture to write: exposed, and gamut and tone mapped unless `linear_output` (an EXR or HDR file,
+    /// which keeps light above 1 and outside the gamut for whoever views it). The pixels are changed in
+    /// place, in parallel (on the current rayon pool); a neutral film returns the frame as it is.
     pub fn develop(&self, mut frame: Frame, linear_output: bool) -> Frame {
         if !self.is_neutral() {
             frame.pixels.par_iter_mut().for_each(|c| *c = self.developed(*c, linear_output));
@@ -71,8 +79,8 @@ impl Film {
 
     /// One pixel of [`Film::develop`]'s picture (the live viewer develops its tiles as they come).
     pub fn developed(&self, c: Color, linear_output: bool) -> Color {
-        let tone_map = if linear_output { ToneMap::Clamp } else { self.tone_map };
-        tone_mapped(c * self.exposure.exp2(), tone_map)
+        let c = c * self.exposure.exp2();
+        if linear_output { c } else { tone_mapped(self.gamut.apply(c), self.tone_map) }
     }
 }
 

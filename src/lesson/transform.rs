@@ -17,6 +17,7 @@ use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
 use glam::{Affine3A, Mat3A};
 
+/// A model transform T and its inverse: what places a canonical shape in the world (slide "Model трансформация").
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transform {
     forward: Affine3A,
@@ -34,6 +35,12 @@ impl Default for Transform {
     }
 }
 
+/// The inverse of an affine map (the slide's T^-1, which moves rays into canonical space).
+fn inverse(t: Affine3A) -> Affine3A {
+    exercise!(transform_inverse(t));
+    t.inverse()
+}
+
 /// The largest absolute row sum of a matrix: a bound on how much it can grow a coordinate.
 fn norm_inf(m: &Mat3A) -> f32 {
     let t = m.transpose();
@@ -41,6 +48,7 @@ fn norm_inf(m: &Mat3A) -> f32 {
 }
 
 impl Transform {
+    /// The transform that changes nothing: where a chain of `.scale(..)`, `.rotate(..)`, `.translate(..)` starts.
     pub const IDENTITY: Transform = Transform {
         forward: Affine3A::IDENTITY,
         inverse: Affine3A::IDENTITY,
@@ -50,7 +58,7 @@ impl Transform {
 
     fn then(self, step: Affine3A) -> Transform {
         let forward = step * self.forward;
-        let inverse = forward.inverse();
+        let inverse = inverse(forward);
         let translation_only = forward.matrix3 == Mat3A::IDENTITY;
         Transform { forward, inverse, normal_matrix: inverse.matrix3.transpose(), translation_only }
     }

@@ -25,9 +25,12 @@ pub fn parse<E: Example>(args: &[&str]) -> Cli<E> {
     Cli::<E>::parse_args("example", args).unwrap_or_else(|e| panic!("bad test arguments {args:?}: {e}"))
 }
 
-/// Parses the example's options from `args` (as its `main` would) and renders it.
+/// Parses the example's options from `args` (as its `main` would) and renders it, checking that no camera
+/// sample came back NaN or infinite (they are counted before the renderer cleans them).
 pub fn render<E: Example>(args: &[&str]) -> Frame {
-    parse::<E>(args).render().unwrap_or_else(|e| panic!("{args:?}: {e}")).0
+    let (frame, stats) = parse::<E>(args).render().unwrap_or_else(|e| panic!("{args:?}: {e}"));
+    assert_eq!(stats.counters.non_finite_samples, 0, "{args:?}: samples came back NaN or infinite");
+    frame
 }
 
 /// Renders an example with its default options and compares it with `expected/<name>.png`. On a mismatch the

@@ -16,7 +16,9 @@ use std::f32::consts::PI;
 
 /// One file under `textures/`: its name and how to draw it.
 pub struct Asset {
+    /// Its path under `textures/` (`wood.png`).
     pub name: &'static str,
+    /// Draws the texture as 8-bit sRGB.
     pub draw: fn() -> RgbImage,
 }
 
@@ -32,7 +34,9 @@ pub const ASSETS: &[Asset] = &[
 
 /// One linear-light file under `textures/`, written as Radiance HDR: its name and how to draw it.
 pub struct HdrAsset {
+    /// Its path under `textures/` (`sky.hdr`, `sky_cubemap/posx.hdr`).
     pub name: &'static str,
+    /// Draws the image in linear light.
     pub draw: fn() -> Rgb32FImage,
 }
 
@@ -49,7 +53,9 @@ pub const HDR_ASSETS: &[HdrAsset] = &[
 
 /// One mesh under `textures/`: its name and its OBJ text.
 pub struct MeshAsset {
+    /// Its path under `textures/` (`teapot.obj`).
     pub name: &'static str,
+    /// Makes the mesh's Wavefront OBJ text.
     pub write: fn() -> String,
 }
 

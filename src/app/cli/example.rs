@@ -59,11 +59,14 @@ pub trait Example: clap::Args + Clone + Send + Sync + 'static {
 // The whole command line of an example: its own options, then the ones every example shares. (A plain
 // comment: a doc comment here would be every example's `--help` description; each example's own is its
 // `Options` doc comment.)
+#[allow(missing_docs)]
 #[derive(clap::Parser, Clone, Debug)]
 #[command(version)]
 pub struct Cli<E: Example> {
+    /// The example's own options.
     #[command(flatten)]
     pub example: E,
+    /// The options every example shares.
     #[command(flatten)]
     pub common: CommonArgs,
 }
@@ -101,6 +104,7 @@ impl<E: Example> Cli<E> {
     /// The render settings the options ask for.
     pub fn settings(&self) -> RenderSettings {
         let c = &self.common;
+        let spectral = c.spectral.unwrap_or_default();
         RenderSettings {
             width: c.width.unwrap_or(640),
             height: c.height.unwrap_or(480),
@@ -108,8 +112,8 @@ impl<E: Example> Cli<E> {
             threads: c.threads,
             seed: c.seed,
             progress: !c.quiet,
-            wavelengths: c.wavelengths.unwrap_or(RenderSettings::default().wavelengths),
-            spectral: c.spectral.unwrap_or_default(),
+            wavelengths: c.wavelengths.unwrap_or(spectral.default_wavelengths()),
+            spectral,
             adaptive_aa: c.adaptive_aa,
             max_sample: c.clamp_sample,
         }
@@ -154,6 +158,9 @@ impl<E: Example> Cli<E> {
         }
         if common.exhaustive {
             scene.min_ray_weight = 0.0;
+        }
+        if let Some(illuminant) = common.illuminant {
+            scene.illuminant = illuminant;
         }
         if let Some(axis) = common.fov_axis {
             let default = RenderSettings::default();
@@ -214,8 +221,12 @@ impl<E: Example> Cli<E> {
         } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
             notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());
         }
-        let dispersion_options =
-            given(&[("--wavelengths", c.wavelengths.is_some()), ("--spectral", c.spectral.is_some())]);
+        let dispersion_options = given(&[
+            ("--wavelengths", c.wavelengths.is_some()),
+            ("--spectral", c.spectral.is_some()),
+            ("--illuminant", c.illuminant.is_some()),
+            ("--gamut", c.gamut.is_some()),
+        ]);
         if !dispersion_options.is_empty() && !scene.is_dispersive() {
             notes.push(no_effect(
                 &dispersion_options,
@@ -227,9 +238,13 @@ impl<E: Example> Cli<E> {
         notes
     }
 
-    /// What happens to the rendered light before it is written: `--exposure` and `--tonemap`.
+    /// What happens to the rendered light before it is written: `--exposure`, `--tonemap` and `--gamut`.
     pub fn film(&self) -> Film {
-        Film { exposure: self.common.exposure, tone_map: self.common.tonemap }
+        Film {
+            exposure: self.common.exposure,
+            tone_map: self.common.tonemap,
+            gamut: self.common.gamut.unwrap_or_default(),
+        }
     }
 
     /// Where the picture of the example called `name` goes.

@@ -47,7 +47,7 @@ pub(super) fn help_command<E: Example>(name: &str) -> clap::Command {
     for id in ["photons", "k", "radius", "show_photons"] {
         command = command.mut_arg(id, |arg| arg.help_heading(caustics));
     }
-    for id in ["wavelengths", "spectral"] {
+    for id in ["wavelengths", "spectral", "illuminant", "gamut"] {
         command = command.mut_arg(id, |arg| arg.help_heading(dispersion));
     }
     command

@@ -7,7 +7,7 @@ use crate::lesson::camera::FovAxis;
 use crate::lesson::environment::CubemapLayout;
 use crate::lesson::photon_map::PhotonSettings;
 use crate::lesson::render::{MAX_SPP, MAX_THREADS};
-use crate::lesson::spectral::{MAX_WAVELENGTHS, SpectralMode};
+use crate::lesson::spectral::{GamutMapping, Illuminant, MAX_WAVELENGTHS, SpectralMode};
 use crate::lesson::tone_mapping::ToneMap;
 use clap::builder::RangedI64ValueParser;
 use std::path::PathBuf;
@@ -37,6 +37,7 @@ where
 
 // Options every example accepts. (A plain comment: a doc comment here would become every example's `--help`
 // description, which is its `Options` doc comment.)
+#[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
     /// Image width in pixels. [default: 640, or a scene file's own]
@@ -93,14 +94,26 @@ pub struct CommonArgs {
     /// course's cube maps, whose negz face is turned by 180°.
     #[arg(long, value_enum, default_value_t = CubemapLayout::OpenGl, help_heading = COMMON)]
     pub env_layout: CubemapLayout,
-    /// Wavelength passes K (the slide's method): the frame is traced K times, once per band of the
-    /// spectrum, and the passes are added with the bands' colours. [default: 8]
+    /// Wavelengths: with `--spectral hero` the wavelengths each camera path carries; with `passes` the passes
+    /// K (the slide's method: the frame is traced K times, once per band of the spectrum, and the passes are
+    /// added with the bands' colours). [default: 4 per path, 8 passes]
     #[arg(long, value_parser = whole_number::<u32>(1..=MAX_WAVELENGTHS as i64), help_heading = DISPERSION)]
     pub wavelengths: Option<u32>,
-    /// How the wavelengths are traced: `passes` (K wavelength passes, the slide's method) or `sampled` (one
-    /// pass; every anti-aliasing sample carries its own band of the spectrum). [default: passes]
+    /// How the wavelengths are traced: `hero` (every anti-aliasing sample carries --wavelengths wavelengths,
+    /// traced as one path until it meets dispersive glass, where it splits), `passes` (K wavelength passes,
+    /// the slide's method) or `sampled` (every sample carries its own band of the spectrum). [default: hero]
     #[arg(long, value_enum, help_heading = DISPERSION)]
     pub spectral: Option<SpectralMode>,
+    /// The spectrum of the scene's white light: `d65` (daylight, sRGB's white: white stays white) or
+    /// `equal-energy` (the same power at every wavelength: white comes out a little pink). [default: d65]
+    #[arg(long, value_enum, help_heading = DISPERSION)]
+    pub illuminant: Option<Illuminant>,
+    /// How a colour outside the sRGB gamut (a narrow band of the spectrum) is shown: `clip` (negative
+    /// channels become 0: saturated) or `fit` (grey of the same luminance mixed in: desaturated). EXR output
+    /// keeps the unmapped values, negative channels included. [default: clip]
+    #[arg(long, value_enum, help_heading = DISPERSION)]
+    pub gamut: Option<GamutMapping>,
+    /// The photon-mapping options (`--photons`, `--k`, `--radius`, `--show-photons`).
     #[command(flatten)]
     pub photons: PhotonArgs,
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
@@ -152,6 +165,7 @@ const HEADING: &str = "Caustics (photon mapping)";
 
 // The photon-mapping options every example accepts. (A plain comment, as on `cli::CommonArgs`: a doc comment
 // here would become every example's `--help` description.)
+#[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug, Default)]
 pub struct PhotonArgs {
     /// Photons shot at the mirrors and glass for the caustic photon map; 0 renders without one.

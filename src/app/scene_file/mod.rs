@@ -1,5 +1,5 @@
 //! The course's scene files (`.qdmg`): a scene described in text instead of code, as the course's own
-//! renderer reads it. The format is specified in the workbook's `qdmg-format.md` (the section numbers below
+//! renderer reads it. The format is specified in `docs/qdmg-format.md` (the section numbers below
 //! are its); this module reads the lecture-6 vocabulary of it and builds a [`Scene`].
 //!
 //! - [`parse`]: lines, comments and blocks, with line numbers (spec 1.1-1.5);
@@ -65,9 +65,11 @@ pub struct LoadOptions {
 
 /// A loaded scene file: the scene, the render settings the file asks for, and the warnings.
 pub struct SceneFile {
+    /// The scene the file describes.
     pub scene: Scene,
-    /// GlobalSettings `frameWidth` and `frameHeight`.
+    /// GlobalSettings `frameWidth`, in pixels.
     pub width: u32,
+    /// GlobalSettings `frameHeight`, in pixels.
     pub height: u32,
     /// GlobalSettings `wantAA`: the course's adaptive anti-aliasing.
     pub adaptive_aa: bool,

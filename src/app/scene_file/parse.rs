@@ -42,14 +42,18 @@ pub const MAX_VALUE: usize = 255;
 /// One property line of a block: its name, its raw value (quotes removed, spec 1.5) and its line.
 #[derive(Clone, Debug)]
 pub struct Property {
+    /// The property's name, as written (`color`).
     pub name: String,
+    /// Its value, as written after the name (quotes removed, spec 1.5).
     pub value: String,
+    /// The line it is on (the first line is 1).
     pub line: usize,
 }
 
 /// One block: `Class [name] { ... }`.
 #[derive(Clone, Debug)]
 pub struct Block {
+    /// The block's class (`Sphere`, `Lambert`, ...): one of [`CLASSES`].
     pub class: String,
     /// `None` for an unnamed block, which nothing can refer to.
     pub name: Option<String>,
@@ -57,13 +61,16 @@ pub struct Block {
     pub line: usize,
     /// The line of the closing `}` (where the course reports missing required properties).
     pub end_line: usize,
+    /// The block's property lines, in the order written.
     pub properties: Vec<Property>,
 }
 
 /// A syntax error: the line and what is wrong there.
 #[derive(Clone, Debug)]
 pub struct SyntaxError {
+    /// The line of the error (the first line is 1).
     pub line: usize,
+    /// What is wrong there, in one line.
     pub message: String,
 }
 

@@ -37,7 +37,12 @@ pub enum Kind {
     /// One of the listed values.
     Choice(Vec<String>),
     /// A whole number from `min` to `max`, the range the option's parser takes.
-    Integer { min: f64, max: f64 },
+    Integer {
+        /// The smallest value the option takes; minus infinity when its range could not be found.
+        min: f64,
+        /// The largest value the option takes; infinity when its range could not be found.
+        max: f64,
+    },
     /// A real number.
     Real,
     /// Anything else (a path).
@@ -53,6 +58,7 @@ pub struct Control {
     pub help: String,
     /// "Common options", or `None` for the example's own.
     pub heading: Option<String>,
+    /// What kind of value the option takes: what control shows it.
     pub kind: Kind,
     /// The value as the command line spells it: "" when the option is not given (it has no default),
     /// "true" or "false" for a flag.
@@ -75,6 +81,7 @@ impl Control {
 #[derive(Clone, Debug)]
 pub struct Controls {
     name: String,
+    /// The example's options, in the order of its `--help`.
     pub controls: Vec<Control>,
 }
 

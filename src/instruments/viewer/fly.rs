@@ -15,12 +15,16 @@ pub struct Motion {
     pub right: f32,
     /// Towards the picture's top edge.
     pub up: f32,
+    /// Degrees to turn; positive turns left, as [`Camera::yaw`].
     pub yaw: f32,
+    /// Degrees to tilt; positive looks up, as [`Camera::pitch`].
     pub pitch: f32,
+    /// Degrees to roll, added to [`Camera::roll`].
     pub roll: f32,
 }
 
 impl Motion {
+    /// True when the motion neither moves nor turns the camera.
     pub fn is_still(&self) -> bool {
         *self == Motion::default()
     }

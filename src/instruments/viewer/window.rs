@@ -15,7 +15,7 @@ use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::lesson::camera::Camera;
 use crate::lesson::error::Result;
 use crate::lesson::frame::keeps_linear_light;
-use crate::lesson::render::{RenderSettings, render_pixel, thread_pool};
+use crate::lesson::render::{RenderSettings, thread_pool};
 use eframe::egui;
 use std::ffi::OsString;
 use std::sync::Arc;
@@ -312,10 +312,11 @@ impl<E: Example> Viewer<E> {
         let rgb = [shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]];
         drop(shown);
         // On a pool's thread: a deep ray tree needs its stack.
-        let traced = thread_pool(Some(1)).and_then(|pool| pool.install(|| render_pixel(&scene, &settings, x, y, true)));
+        let traced = thread_pool(Some(1))
+            .and_then(|pool| pool.install(|| ray_tree::trace(&scene, &settings, PixelPos { x, y })));
         let (sees, tree) = match traced {
             Ok(trace) => {
-                let first_hit = trace.tree.as_deref().and_then(|tree| tree.rays[*tree.roots.first()?].hit.clone());
+                let first_hit = trace.tree.roots.first().and_then(|&root| trace.tree.rays[root].hit.clone());
                 let sees = match first_hit {
                     Some(hit) => {
                         format!("sees node {}, shader {}, at distance {:.3}", hit.node, hit.shader, hit.distance)

@@ -26,6 +26,8 @@ pub struct Job {
     pub rebuild: Option<BuildScene>,
     /// The camera to render from; `None` is the scene's own.
     pub camera: Option<Camera>,
+    /// The render settings of the new options, read only with `rebuild` (the scene may change them: a scene
+    /// file's frame size); without it the settings of the last rebuild stay.
     pub settings: RenderSettings,
     /// How the picture is exposed and tone mapped on the screen (`--exposure`, `--tonemap`).
     pub film: Film,
@@ -40,7 +42,9 @@ pub struct Job {
 pub struct Shown {
     /// 8-bit sRGB, `width` x `height` of the job's settings.
     pub rgb: Vec<u8>,
+    /// Width of `rgb`, in pixels.
     pub width: u32,
+    /// Height of `rgb`, in pixels.
     pub height: u32,
     /// Changed since the window last uploaded it.
     pub dirty: bool,
@@ -48,10 +52,13 @@ pub struct Shown {
     pub film: Film,
     /// Tiles of the full-quality picture drawn, of `tiles_total`.
     pub tiles_done: usize,
+    /// Tiles of the full-quality picture in all.
     pub tiles_total: usize,
     /// Samples per pixel of what is shown (1 for the coarse pass and the moving preview).
     pub spp: u32,
+    /// When the job being shown started.
     pub started: Instant,
+    /// How long the job has taken to draw what is shown (for a finished picture, the render's own time).
     pub elapsed: Duration,
     /// Rays traced for what is shown.
     pub rays: u64,
@@ -135,6 +142,7 @@ impl Shown {
 /// The render thread and what it shows.
 pub struct Worker {
     jobs: Sender<Job>,
+    /// What the window shows, painted by the render thread: lock it to read.
     pub shown: Arc<Mutex<Shown>>,
     /// The cancel flag of the last job sent, and whether it is a moving preview.
     current: Option<(Arc<AtomicBool>, bool)>,

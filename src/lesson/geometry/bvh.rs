@@ -371,6 +371,7 @@ impl Stack {
     }
 
     #[inline(always)]
+    #[allow(unsafe_code)] // Sound: see the SAFETY comment.
     fn pop(&mut self) -> Option<Entry> {
         self.len = self.len.checked_sub(1)?;
         // SAFETY: entries `..len` (before the decrement) were all written by `push`, which is the only way
@@ -443,6 +444,7 @@ fn best_split(
 mod cache {
     /// Starts loading the cache line holding `value` into every level of the cache.
     #[inline(always)]
+    #[allow(unsafe_code)] // Sound: see the SAFETY comment.
     pub fn prefetch<T>(value: &T) {
         #[cfg(target_arch = "x86_64")]
         {

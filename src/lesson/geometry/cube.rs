@@ -6,13 +6,18 @@ use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 
+/// The course's axis-aligned cube (lectures 2-3); its normals point out of it. A node's transform makes any
+/// box of it.
 #[derive(Clone, Copy, Debug)]
 pub struct Cube {
+    /// The centre of the cube.
     pub center: Vector,
+    /// Half the length of a side: the distance from the centre to each face.
     pub half_side: f32,
 }
 
 impl Cube {
+    /// The cube around `center` whose faces are `half_side` from it.
     pub fn new(center: Vector, half_side: f32) -> Cube {
         Cube { center, half_side }
     }

@@ -128,7 +128,15 @@ pub enum Hit {
     Complete(IntersectionInfo),
     /// Only the ray parameter, and what the shape needs to describe the surface later: which part of it was
     /// hit (a triangle, a face) and up to three coordinates on that part (barycentric coordinates).
-    Pending { distance: f32, part: u32, coords: [f32; 3] },
+    Pending {
+        /// The ray parameter of the hit.
+        distance: f32,
+        /// Which part was hit: a mesh's triangle, the axis of a cube's face; 0 for a shape of one part.
+        part: u32,
+        /// What the shape keeps to describe the surface later: a triangle's barycentric coordinates, a
+        /// plane's x and z; unused entries are 0.
+        coords: [f32; 3],
+    },
 }
 
 impl Hit {
@@ -181,21 +189,25 @@ pub trait Geometry: Send + Sync {
 
     /// What the ray tree (`--trace-pixel`) calls this shape: its type's name.
     fn name(&self) -> &'static str {
-        crate::instruments::ray_tree::type_label::<Self>()
+        crate::lesson::type_label::<Self>()
     }
 }
 
 /// An axis-aligned bounding box.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb {
+    /// The corner with the smallest x, y and z.
     pub min: Vector,
+    /// The corner with the largest x, y and z.
     pub max: Vector,
 }
 
 impl Aabb {
+    /// The box from corner `min` to corner `max`.
     pub fn new(min: Vector, max: Vector) -> Aabb {
         Aabb { min, max }
     }
+    /// The point halfway between `min` and `max`.
     pub fn center(&self) -> Vector {
         (self.min + self.max) * 0.5
     }

@@ -6,14 +6,17 @@ use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 
+/// The course's horizontal plane y = `y`, with u = x and v = z; its normal is +Y (up) whichever side a ray comes from.
 #[derive(Clone, Copy, Debug)]
 pub struct Plane {
+    /// The height of the plane.
     pub y: f32,
     /// Half the side of the square the plane is limited to; `f32::INFINITY` for an endless plane.
     pub limit: f32,
 }
 
 impl Plane {
+    /// The plane y = `y`, limited to |x| and |z| below `limit` (`f32::INFINITY` for no limit).
     pub fn new(y: f32, limit: f32) -> Plane {
         Plane { y, limit }
     }

@@ -13,11 +13,14 @@ use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
 
+/// A triangular prism, upright along Y and centred on the origin (slide "Хроматично пречупване").
 #[derive(Clone, Copy, Debug)]
 pub struct Prism {
     /// The angle between the two faces light passes through, in degrees (60 for the classic prism).
     pub apex_angle: f32,
+    /// Half the length of the base, the side opposite the apex edge (along X).
     pub half_base: f32,
+    /// Half the height, along Y: the prism runs from y = -`half_height` to `half_height`.
     pub half_height: f32,
     /// The faces as planes `dot(normal, p) = offset` with outward unit normals: base, left, right, bottom, top.
     planes: [(Vector, f32); 5],

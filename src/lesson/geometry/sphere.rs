@@ -7,13 +7,18 @@ use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
 use std::f32::consts::{FRAC_1_PI, PI};
 
+/// The course's sphere, with u/v from longitude and latitude; its normals point out of it. A node's transform
+/// scales it into an ellipsoid.
 #[derive(Clone, Copy, Debug)]
 pub struct Sphere {
+    /// The centre of the sphere.
     pub center: Vector,
+    /// The radius.
     pub radius: f32,
 }
 
 impl Sphere {
+    /// The sphere around `center` with the given radius.
     pub fn new(center: Vector, radius: f32) -> Sphere {
         Sphere { center, radius }
     }

@@ -119,6 +119,7 @@ impl Hits4 {
 }
 
 impl ShearedRay {
+    /// The sheared frame of `ray`, made once before the ray meets any triangles.
     pub fn new(ray: &Ray) -> ShearedRay {
         let d = ray.dir;
         let abs = d.abs();

@@ -8,7 +8,7 @@ use crate::lesson::math::{OrthonormalBasis, Vector};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{RECURSION_SAFETY_CAP, Scene};
-use crate::lesson::shader::PhotonScatter;
+use crate::lesson::shader::{PhotonScatter, casts_caustics, scatter_photon};
 use crate::lesson::spectral::{Band, bands};
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -89,6 +89,9 @@ pub struct Emitter {
     cones: Vec<Cone>,
     /// For a scene with dispersive materials, the bands of the photons' wavelengths; empty for white light.
     bands: Vec<Band>,
+    /// The colour of the scene's light ([`crate::lesson::spectral::Illuminant::white`]), which the wavelength
+    /// passes give the caustic estimate as they give every other light.
+    white: Color,
 }
 
 impl Emitter {
@@ -98,7 +101,7 @@ impl Emitter {
         let spheres: Vec<Option<(Vector, f32)>> = scene
             .nodes
             .iter()
-            .filter(|node| node.shader.casts_caustics())
+            .filter(|node| casts_caustics(&*node.shader))
             .map(|node| node.bounds().map(|b| (b.center(), 0.5 * (b.max - b.min).length())))
             .collect();
         let mut cones = Vec::new();
@@ -128,13 +131,16 @@ impl Emitter {
             (cone.first, cone.count, cone.shift) = (first, n, (rng.next_f32(), rng.next_f32()));
             first += n;
         }
-        let bands = if scene.is_dispersive() { bands(PHOTON_BANDS) } else { Vec::new() };
-        Some(Emitter { cones, bands })
+        let bands = if scene.is_dispersive() { bands(PHOTON_BANDS, scene.illuminant) } else { Vec::new() };
+        let [r, g, b] = scene.illuminant.white();
+        Some(Emitter { cones, bands, white: Color::new(r as f32, g as f32, b as f32) })
     }
 
     /// Photon number `index`: its ray from the light and its power. In a dispersive scene the photon gets a
     /// wavelength in one of the [`PHOTON_BANDS`] bands of the visible range, and carries the colour of its
-    /// band times the number of bands, so that together the photons are as white as the light.
+    /// band times the number of bands, as a part of the light's colour (divided by it, channel by channel:
+    /// the wavelength passes multiply the caustic estimate by the light's colour, as every light), so that
+    /// together the photons are as white as the light.
     fn emit(&self, scene: &Scene, index: u32, rng: &mut Rng) -> (Ray, Color) {
         let chosen = self.cones.partition_point(|c| c.first + c.count <= index);
         let cone = &self.cones[chosen];
@@ -159,7 +165,8 @@ impl Emitter {
         let k = self.bands.len() as u32;
         let band = &self.bands[((index - cone.first + (cone.shift.0 * k as f32) as u32) % k) as usize];
         let ray = Ray { wavelength: Some(band.at(rng.next_f32())), ..Ray::new(light.position, dir) };
-        (ray, power * band.color() * self.bands.len() as f32)
+        let colour = Color(band.color().0 / self.white.0);
+        (ray, power * colour * self.bands.len() as f32)
     }
 
     /// The photons emitted in all.
@@ -178,7 +185,7 @@ fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Opti
             return None;
         }
         let (info, node) = scene.closest_hit(&ray)?;
-        match node.shader.scatter_photon(&ray, &info, &mut rng) {
+        match scatter_photon(&*node.shader, &ray, &info, &mut rng) {
             PhotonScatter::Land { scale } => {
                 return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });
             }

@@ -7,7 +7,8 @@
 //! map (through the light loop, [`crate::lesson::light::light_loop`]), which finds the k nearest photons
 //! and turns their power into the caustic light arriving there.
 //!
-//! How a photon behaves at a surface is the shader's business: [`Shader::scatter_photon`](crate::lesson::shader::Shader::scatter_photon) returns a
+//! How a photon behaves at a surface is the shader's business: a mirror's or glass's
+//! [`CausticCaster::scatter_photon`](crate::lesson::shader::CausticCaster::scatter_photon) returns a
 //! [`PhotonScatter`](crate::lesson::shader::PhotonScatter): on a diffuse surface (Lambert, Phong) the photon lands; `Reflection`, `Refraction` and
 //! `Layered` send it on, and the `Fresnel` texture takes part through a layer's blend.
 //!
@@ -34,7 +35,7 @@
 //!   first that holds k photons, which then are the k nearest: in a dense caustic the nearest are close, and
 //!   most of the photons of the largest ball are never read. The photons found are gathered into a
 //!   per-thread buffer and the k nearest selected in place, by one integer key per photon (distance, then
-//!   index): no allocation per estimate, and measured faster than a k-d tree (kiddo's) on the workbook's
+//!   index): no allocation per estimate, and measured faster than a k-d tree on the workbook's
 //!   scenes, whose estimates all use the same radius.
 //! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
 //!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k
@@ -47,9 +48,12 @@
 //!   stored in index order: the same picture for any number of threads.
 //! - Chromatic caustics (the slide: "всеки да носи информация само за определена дължина на вълната"): in a
 //!   scene with dispersive materials every photon gets a wavelength and the colour of its band of the
-//!   spectrum. Photons are [`Ray`](crate::lesson::ray::Ray)s, so the glass bends each by the index at its wavelength and the map
-//!   holds coloured light. The estimate is already the sum over the spectrum, so the diffuse shaders add it
-//!   in every wavelength pass: the passes' colours add up to white, and the caustic is counted once.
+//!   spectrum (see [`crate::lesson::spectral::Band`]). Photons are [`Ray`](crate::lesson::ray::Ray)s, so the glass bends each by the index
+//!   at its wavelength and the map holds coloured light. The estimate is already the sum over the spectrum,
+//!   so the diffuse shaders add it in every wavelength pass: the passes' colours add up to the light's, and
+//!   the caustic is counted once. Its sum of single-wavelength colours may lie outside the sRGB gamut; since
+//!   light arriving at a surface cannot be negative, the estimate's negative channels are clipped (whatever
+//!   `--gamut` says of the picture).
 
 mod emitter;
 mod grid;
@@ -61,7 +65,7 @@ use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::Aabb;
 use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
-use crate::lesson::spectral::fit_to_gamut;
+use crate::lesson::spectral::clip_to_gamut;
 use grid::{CELLS_PER_RADIUS, Found, PhotonGrid, SEARCH_FRACTIONS};
 use std::cell::RefCell;
 use std::f32::consts::PI;
@@ -127,6 +131,7 @@ impl PhotonSettings {
 /// A photon stored where it landed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StoredPhoton {
+    /// Where the photon landed on a diffuse surface, in world space.
     pub position: Vector,
     /// The unit direction it travelled in when it landed.
     pub dir: Vector,
@@ -137,7 +142,9 @@ pub struct StoredPhoton {
 /// What building a map took.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PhotonStats {
+    /// Photons shot from the lights.
     pub emitted: u32,
+    /// Photons stored: those that reached a diffuse surface after at least one reflection or refraction.
     pub stored: usize,
     /// Emitting and tracing the photons.
     pub trace_time: Duration,
@@ -152,6 +159,7 @@ pub struct PhotonMap {
     k: NonZeroUsize,
     max_radius: f32,
     show: bool,
+    /// What building the map took: photons emitted and stored, and the time spent.
     pub stats: PhotonStats,
 }
 
@@ -219,6 +227,7 @@ impl PhotonMap {
         Ok(PhotonMap { photons, grid, k, max_radius, show, stats })
     }
 
+    /// The stored photons.
     pub fn photons(&self) -> &[StoredPhoton] {
         &self.photons
     }
@@ -257,6 +266,7 @@ impl PhotonMap {
                 }
                 found.iter().fold(0.0, |m, f| f.d2().max(m))
             };
+            exercise!(irradiance_estimate(found.iter().map(|f| (f.d2(), &self.photons[f.index()])), r2, n));
             let filter_radius = CONE_FILTER_K * r2.sqrt();
             let mut sum = Color::BLACK;
             for f in found.iter() {
@@ -265,9 +275,9 @@ impl PhotonMap {
                     sum += photon.power * (1.0 - d2.sqrt() / filter_radius);
                 }
             }
-            // Photons of single wavelengths carry colours outside the sRGB gamut; their sum is brought back
-            // to it.
-            fit_to_gamut(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2))
+            // Photons of single wavelengths carry colours outside the sRGB gamut, and so may their sum; the
+            // light arriving at a surface cannot be negative, so negative channels are clipped.
+            clip_to_gamut(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2))
         })
     }
 
@@ -281,7 +291,7 @@ impl PhotonMap {
         let Some(nearest) = nearest else {
             return Color::BLACK;
         };
-        let color = fit_to_gamut(self.photons[nearest.index()].power);
+        let color = clip_to_gamut(self.photons[nearest.index()].power);
         color * (DOT_IRRADIANCE / color.max_channel())
     }
 }

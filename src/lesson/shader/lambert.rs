@@ -8,16 +8,17 @@ use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::diffuse_light;
 use crate::lesson::math::faceforward;
 use crate::lesson::ray::Ray;
-use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 
+/// A perfectly diffuse (matte) surface, lit by the light loop (lectures 2-3).
 #[derive(Clone)]
 pub struct Lambert {
+    /// The diffuse colour: the fraction of each channel of the incoming light that the surface scatters.
     pub color: ColorSource,
 }
 
 impl Lambert {
+    /// A Lambert surface of the given colour or texture.
     pub fn new(color: impl Into<ColorSource>) -> Lambert {
         Lambert { color: color.into() }
     }
@@ -27,17 +28,6 @@ impl Shader for Lambert {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let diffuse = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
-        let mark = ctx.record_mark();
-        let color = diffuse * diffuse_light(ctx, info, n);
-        ctx.record(|tree| tree.scale(mark, diffuse));
-        color
-    }
-
-    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
-        PhotonScatter::Land { scale: 1.0 }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        false
+        diffuse * diffuse_light(ctx, info, n)
     }
 }

@@ -19,28 +19,32 @@
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
-use super::{IntoShader, Shader};
+use super::{CausticCaster, IntoShader, PhotonScatter, Shader, casts_caustics, scatter_photon};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::photon_map::strength;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 use crate::lesson::texture::Texture;
 use glam::Vec3A;
 use std::sync::Arc;
 
+/// One layer of a [`Layered`] shader: a shader and how opaque it is (slide "Layered Shader").
 #[derive(Clone)]
 pub struct Layer {
+    /// What the layer looks like where it covers the layers below.
     pub shader: Arc<dyn Shader>,
+    /// The layer's opacity, per channel: 0 transparent, 1 opaque.
     pub blend: Color,
+    /// A texture whose colour multiplies `blend` at each point (the Fresnel texture of the glass); `None`
+    /// leaves `blend` as it is.
     pub blend_tex: Option<Arc<dyn Texture>>,
 }
 
 impl Layer {
     /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
-    fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+    pub fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
         let blend = match &self.blend_tex {
             Some(tex) => self.blend * tex.get_tex_color(ray, info),
             None => self.blend,
@@ -49,9 +53,18 @@ impl Layer {
     }
 }
 
+/// The weight in the final colour of a layer of opacity `blend`, when the layers above it let `uncovered`
+/// through: the slide's `res = res * (1 - blend) + layer_color * blend`, unrolled from the top down.
+#[inline]
+pub fn layer_weight(uncovered: Color, blend: Color) -> Color {
+    exercise!(layer_weight(uncovered, blend));
+    uncovered * blend
+}
+
 /// The most layers a `Layered` may have (the slide's `MAX_LAYERS`).
 pub const MAX_LAYERS: usize = 32;
 
+/// A surface made of layers, bottom to top, each blended over the ones below (slide "Layered Shader").
 #[derive(Clone, Default)]
 pub struct Layered {
     layers: Vec<Layer>,
@@ -59,6 +72,7 @@ pub struct Layered {
 }
 
 impl Layered {
+    /// A shader with no layers yet; it is black until [`Layered::add_layer`] adds some.
     pub fn new() -> Layered {
         Layered::default()
     }
@@ -84,21 +98,9 @@ impl Layered {
         self
     }
 
+    /// The layers, bottom first.
     pub fn layers(&self) -> &[Layer] {
         &self.layers
-    }
-
-    /// How the ray tree names layer `i`, whose blend at the hit is `blend`: "layer 2 of 2 (Reflection, blend
-    /// Fresnel 0.0421)".
-    fn layer_label(&self, i: usize, blend: Color) -> String {
-        let layer = &self.layers[i];
-        let value = if blend.r() == blend.g() && blend.g() == blend.b() {
-            format!("{:.4}", blend.r())
-        } else {
-            format!("({:.4}, {:.4}, {:.4})", blend.r(), blend.g(), blend.b())
-        };
-        let source = layer.blend_tex.as_ref().map_or(String::new(), |tex| format!("{} ", tex.name()));
-        format!("layer {} of {} ({}, blend {source}{value})", i + 1, self.layers.len(), layer.shader.name())
     }
 
     /// The weight of each layer at this hit, computed from the top down as `shade` does, and the lowest
@@ -110,7 +112,7 @@ impl Layered {
         let mut bottom = self.layers.len();
         for (i, layer) in self.layers.iter().enumerate().rev() {
             let blend = layer.blend_at(ray, info);
-            weights[i] = uncovered * blend;
+            weights[i] = layer_weight(uncovered, blend);
             uncovered *= Color::WHITE - blend;
             bottom = i;
             if uncovered.max_channel() <= 0.0 {
@@ -127,19 +129,13 @@ impl Shader for Layered {
         // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
         let mut res = Color::BLACK;
         let mut uncovered = Color::WHITE;
-        for (i, layer) in self.layers.iter().enumerate().rev() {
+        for layer in self.layers.iter().rev() {
             let blend = layer.blend_at(ray, info);
-            let weight = uncovered * blend;
+            let weight = layer_weight(uncovered, blend);
             let strength = weight.max_channel();
             if strength > 0.0 || self.every_layer {
                 let layer_ray = Ray { weight: ray.weight * strength, ..*ray };
-                let mark = ctx.record_mark();
-                ctx.record(|tree| tree.enter_layer(self.layer_label(i, blend)));
-                res += layer.shader.shade(&layer_ray, info, ctx) * weight;
-                ctx.record(|tree| {
-                    tree.scale(mark, weight);
-                    tree.leave_layer();
-                });
+                res += ctx.shade_layer(layer, &layer_ray, info, weight);
             }
             uncovered *= Color::WHITE - blend;
             if uncovered.max_channel() <= 0.0 && !self.every_layer {
@@ -153,6 +149,13 @@ impl Shader for Layered {
         self.layers.iter().any(|l| l.shader.is_dispersive() || l.blend_tex.as_ref().is_some_and(|t| t.is_dispersive()))
     }
 
+    /// A caustic caster when one of its layers is.
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        self.layers.iter().any(|layer| casts_caustics(&*layer.shader)).then_some(self as &dyn CausticCaster)
+    }
+}
+
+impl CausticCaster for Layered {
     /// A photon follows one layer, chosen with probability proportional to the layer's weight (the mean of
     /// its channels); its power is multiplied by the weight over that probability, so on average it carries
     /// exactly what the blend lets through. Landing on a diffuse layer, it is stored with its power over the
@@ -173,16 +176,12 @@ impl Shader for Layered {
             })
             .unwrap_or(last);
         let probability = strength(weights[chosen]) / total;
-        match self.layers[chosen].shader.scatter_photon(ray, info, rng) {
+        match scatter_photon(&*self.layers[chosen].shader, ray, info, rng) {
             PhotonScatter::Land { scale } => PhotonScatter::Land { scale: scale / probability },
             PhotonScatter::Continue { dir, filter } => {
                 PhotonScatter::Continue { dir, filter: filter * weights[chosen] / probability }
             }
             PhotonScatter::Absorb => PhotonScatter::Absorb,
         }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        self.layers.iter().any(|layer| layer.shader.casts_caustics())
     }
 }

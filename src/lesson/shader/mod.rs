@@ -1,6 +1,7 @@
 //! Shaders (lectures 2-6): what colour a surface has where a ray hits it. A shader may trace further rays
 //! through the context (`ctx.raytrace`, the slides' global `raytrace()`), which is how reflection,
-//! refraction and layering recurse.
+//! refraction and layering recurse, and takes the light of the lamps from the light loop
+//! ([`light_loop`](crate::lesson::light::light_loop)).
 
 mod glass;
 mod lambert;
@@ -11,7 +12,7 @@ mod refraction;
 
 pub use glass::fresnel_glass;
 pub use lambert::Lambert;
-pub use layered::Layered;
+pub use layered::{Layer, Layered, MAX_LAYERS};
 pub use phong::Phong;
 pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
@@ -25,43 +26,52 @@ use crate::lesson::scene::TraceContext;
 use crate::lesson::texture::Texture;
 use std::sync::Arc;
 
-/// What a photon does where it hits a surface (see [`Shader::scatter_photon`] and [`crate::lesson::photon_map`]).
+/// What a photon does where it hits a surface (see [`CausticCaster::scatter_photon`] and [`crate::lesson::photon_map`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PhotonScatter {
     /// The surface is diffuse and the photon ends here. It is stored, its power multiplied by `scale`, if it
     /// was reflected or refracted on its way. `scale` is 1 except where a `Layered` shader chose this layer
     /// at random: then it is one over the probability of that choice.
-    Land { scale: f32 },
+    Land {
+        /// What the photon's power is multiplied by when it is stored: 1, or one over the probability of
+        /// the layer chosen.
+        scale: f32,
+    },
     /// The photon goes on in the unit direction `dir`, its power multiplied by `filter`.
-    Continue { dir: Vector, filter: Color },
+    Continue {
+        /// The unit direction the photon goes on in (world space).
+        dir: Vector,
+        /// What its power is multiplied by, per channel (the mirror's colour, the glass's multiplier).
+        filter: Color,
+    },
     /// The photon is absorbed.
     Absorb,
 }
 
 /// The course's `Shader` interface.
 ///
-/// A new shader implements `shade` and says how it takes part in photon mapping (the last two methods):
+/// A new shader implements `shade` alone, and works: with its own rays traced through `ctx.raytrace` and
+/// its light taken from [`light_loop`](crate::lesson::light::light_loop) (or
+/// [`diffuse_light`](crate::lesson::light::diffuse_light)), it gets the lamps, shadows, the photon map's
+/// caustics and the ray tree of `--trace-pixel` without a further line. What else a shader may override:
 ///
-/// - a diffuse surface (it uses [`light_loop`](crate::lesson::light::light_loop) or
-///   [`diffuse_light`](crate::lesson::light::diffuse_light), which bring it the lamps' light and the caustic light
-///   of the photon map alike): `scatter_photon` returns [`PhotonScatter::Land`] with `scale: 1.0`, and
-///   `casts_caustics` returns `false`;
-/// - a mirror or glass: `scatter_photon` returns where the photon goes next ([`PhotonScatter::Continue`]),
-///   as `shade` sends its rays, and `casts_caustics` returns `true`, so that the lights aim photons at it;
-/// - a surface that swallows light (a black body, a shader that only shows a debug colour):
-///   [`PhotonScatter::Absorb`] and `false`.
+/// - a mirror or glass, whose surface photons leave (slide "Photon Mapping"), implements [`CausticCaster`]
+///   (where a photon goes next, as `shade` sends its rays) and returns itself from
+///   [`Shader::caustic_caster`], so that the lights aim photons at it. Every other surface keeps the
+///   default, `None`: photons land on it, and a diffuse shader finds them in its light loop;
+/// - a shader whose colour depends on the ray's wavelength (a dispersive refraction, or a layer holding one)
+///   returns `true` from [`Shader::is_dispersive`], so that the renderer traces wavelengths for its scene;
+/// - [`Shader::name`] names it in the ray tree, its type's name by default.
 pub trait Shader: Send + Sync {
     /// The colour seen along `ray`, which hit a surface as described by `info`.
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
 
-    /// Photon mapping (slide "Photon Mapping"): what a photon travelling along `ray` does where it hits this
-    /// surface (see [`crate::lesson::photon_map`]).
-    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter;
-
-    /// Whether photons can leave this surface by reflection or refraction (whether `scatter_photon` can
-    /// return [`PhotonScatter::Continue`]): that makes its object a caustic caster, which the lights aim
-    /// photons at.
-    fn casts_caustics(&self) -> bool;
+    /// This shader as a caustic caster, if photons leave its surface by reflection or refraction (a mirror,
+    /// glass, or a `Layered` shader holding one); `None`, the default, for a surface that neither reflects
+    /// nor refracts, on which photons land.
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        None
+    }
 
     /// Whether the result depends on the ray's wavelength (a dispersive refraction, or a layer holding one).
     /// The renderer traces wavelengths separately only for scenes where some shader says so.
@@ -71,13 +81,37 @@ pub trait Shader: Send + Sync {
 
     /// What the ray tree (`--trace-pixel`) calls this shader: its type's name.
     fn name(&self) -> &'static str {
-        crate::instruments::ray_tree::type_label::<Self>()
+        crate::lesson::type_label::<Self>()
+    }
+}
+
+/// A surface that photons leave by reflection or refraction (slide "Photon Mapping"): a mirror, glass, or a
+/// `Layered` shader holding one. Its shader returns it from [`Shader::caustic_caster`].
+pub trait CausticCaster {
+    /// What a photon travelling along `ray` does where it hits this surface, as `shade` would send a ray:
+    /// where it goes next ([`PhotonScatter::Continue`]), or that it is absorbed (total internal reflection
+    /// in a refraction without a reflection layer).
+    fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter;
+}
+
+/// Whether `shader` makes its object a caustic caster, which the lights aim photons at.
+pub fn casts_caustics(shader: &dyn Shader) -> bool {
+    shader.caustic_caster().is_some()
+}
+
+/// What a photon does where it hits a surface with `shader`: what its caustic caster says, or, on a surface
+/// that neither reflects nor refracts, it lands.
+pub fn scatter_photon(shader: &dyn Shader, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter {
+    match shader.caustic_caster() {
+        Some(caster) => caster.scatter_photon(ray, info, rng),
+        None => PhotonScatter::Land { scale: 1.0 },
     }
 }
 
 /// Anything that can be a node's or a layer's shader: a shader, or a shader shared with other nodes
 /// (`Arc<Reflection>`, `Arc<dyn Shader>`).
 pub trait IntoShader {
+    /// The shader, in an `Arc` so that nodes and layers can share it.
     fn into_shader(self) -> Arc<dyn Shader>;
 }
 
@@ -102,11 +136,14 @@ impl IntoShader for Arc<dyn Shader> {
 /// A constant colour or a texture: how the course's shaders take their diffuse colour.
 #[derive(Clone)]
 pub enum ColorSource {
+    /// The same colour everywhere (linear RGB).
     Color(Color),
+    /// A texture's colour at the hit's u/v.
     Texture(Arc<dyn Texture>),
 }
 
 impl ColorSource {
+    /// The colour at the hit `info` (for a texture: [`Texture::get_tex_color`]).
     pub fn get(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
         match self {
             ColorSource::Color(c) => *c,

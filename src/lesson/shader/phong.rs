@@ -3,18 +3,17 @@
 //! course's Phong shader). Caustic light from the photon map, if the scene has one, adds to the diffuse term.
 
 use super::{ColorSource, Shader};
-use crate::instruments::ray_tree::LightKind;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::light_loop;
 use crate::lesson::math::{faceforward, reflect};
 use crate::lesson::ray::Ray;
-use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 
+/// A diffuse surface with the lamps' highlights on it (the course's Phong shader).
 #[derive(Clone)]
 pub struct Phong {
+    /// The diffuse colour, as [`Lambert`](super::Lambert)'s; the highlight takes the lamp's colour, not this one.
     pub color: ColorSource,
     /// Strength of the highlight.
     pub specular: f32,
@@ -23,6 +22,7 @@ pub struct Phong {
 }
 
 impl Phong {
+    /// A Phong surface of the given colour, highlight strength and highlight exponent.
     pub fn new(color: impl Into<ColorSource>, specular: f32, exponent: f32) -> Phong {
         Phong { color: color.into(), specular, exponent }
     }
@@ -32,26 +32,10 @@ impl Shader for Phong {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let diffuse_color = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
-        let mut specular = Color::BLACK;
-        let mark = ctx.record_mark();
-        let diffuse = light_loop(ctx, info, n, |l, irradiance| {
+        let light = light_loop(ctx, info, n, |l, irradiance| {
             let cos_gamma = (-ray.dir).dot(reflect(-l, n));
-            if cos_gamma > 0.0 {
-                specular += irradiance * (self.specular * cos_gamma.powf(self.exponent));
-            }
+            if cos_gamma > 0.0 { irradiance * (self.specular * cos_gamma.powf(self.exponent)) } else { Color::BLACK }
         });
-        ctx.record(|tree| {
-            tree.scale(mark, diffuse_color);
-            tree.light(LightKind::Highlight, specular);
-        });
-        diffuse_color * diffuse + specular
-    }
-
-    fn scatter_photon(&self, _ray: &Ray, _info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
-        PhotonScatter::Land { scale: 1.0 }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        false
+        diffuse_color * light.irradiance + light.highlights
     }
 }

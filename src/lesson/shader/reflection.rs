@@ -28,8 +28,7 @@
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
 //!   samples would converge to a different picture.
 
-use super::{ColorSource, Shader};
-use crate::instruments::ray_tree::RayKind;
+use super::{CausticCaster, ColorSource, PhotonScatter, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
@@ -38,7 +37,6 @@ use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 use std::f32::consts::FRAC_PI_2;
 
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
@@ -49,6 +47,7 @@ pub const SECONDARY_GLOSSY_SAMPLES: u32 = 2;
 /// that a mistyped count is refused at once instead of rendering for days.
 pub const MAX_GLOSSY_SAMPLES: u32 = 4096;
 
+/// A mirror, perfect or glossy (slides "Reflection v0.2" and "Грапави (glossy) отражения").
 #[derive(Clone)]
 pub struct Reflection {
     /// The colour of the mirror: what fraction of each channel it reflects. May come from a texture.
@@ -100,15 +99,11 @@ impl Reflection {
         self
     }
 
-    /// The perfect mirror ray.
+    /// The perfect mirror ray (the slide's Reflection v0.2): one ray in the mirror direction, one level
+    /// deeper, and what it brings back times the mirror's colour `m`.
     fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
-        let dir = reflect(ray.dir, n);
-        let new_ray = ray.spawn(info, dir, m.max_channel());
-        let mark = ctx.record_mark();
-        ctx.record(|tree| tree.next_ray(RayKind::Reflection));
-        let color = ctx.raytrace(&new_ray) * m;
-        ctx.record(|tree| tree.scale(mark, m));
-        color
+        let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
+        ctx.raytrace(&new_ray) * m
     }
 }
 
@@ -133,10 +128,8 @@ impl Shader for Reflection {
         let attenuation = multiplier.max_channel();
         let mut sum = Color::BLACK;
         let mut kept = 0u32;
-        let mark = ctx.record_mark();
         for i in 0..num_samples {
             if let Some(dir) = cone.direction(disc.point(i, &mut ctx.rng)) {
-                ctx.record(|tree| tree.next_ray(RayKind::GlossySample { index: i, count: num_samples }));
                 sum += ctx.raytrace(&ray.spawn(info, dir, attenuation));
                 kept += 1;
             }
@@ -144,10 +137,15 @@ impl Shader for Reflection {
         if kept == 0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
-        ctx.record(|tree| tree.scale(mark, multiplier / kept as f32));
         sum * multiplier / kept as f32
     }
 
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        Some(self)
+    }
+}
+
+impl CausticCaster for Reflection {
     /// A photon is reflected like a ray, its power multiplied by the mirror's colour: by a glossy mirror in
     /// one direction of the cone, drawn at random (the mirror direction should the draw go under the
     /// surface), so that glossy mirrors cast blurred caustics.
@@ -160,10 +158,6 @@ impl Shader for Reflection {
             GlossyCone::new(ray.dir, n, self.glossiness).direction(random_unit_disc_point(rng)).unwrap_or(mirror)
         };
         PhotonScatter::Continue { dir, filter: self.multiplier.get(ray, info) }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        true
     }
 }
 
@@ -180,15 +174,24 @@ pub struct GlossyCone {
 impl GlossyCone {
     /// The cone for the unit incoming direction `incoming` at a surface whose unit normal `n` faces it.
     pub fn new(incoming: Vector, n: Vector, glossiness: f32) -> GlossyCone {
-        GlossyCone { incoming, basis: OrthonormalBasis::new(n), scaling: ((1.0 - glossiness) * FRAC_PI_2).tan() }
+        GlossyCone { incoming, basis: OrthonormalBasis::new(n), scaling: glossy_scaling(glossiness) }
     }
 
     /// The reflection about the normal tilted by the disc point (x, y), or `None` when it goes under the
     /// surface.
     pub fn direction(&self, (x, y): (f32, f32)) -> Option<Vector> {
+        exercise!(glossy_direction(self.incoming, &self.basis, self.scaling, (x, y)));
         let normal = self.basis.normal;
         let perturbed = (normal + self.basis.to_world(x * self.scaling, y * self.scaling, 0.0)).normalize();
         let dir = reflect(self.incoming, perturbed);
         (dir.dot(normal) > 0.0).then_some(dir)
     }
+}
+
+/// How far a point of the unit disc tilts the normal, as a tangent, for a surface of this glossiness (step 3
+/// of the slide's algorithm): `tan((1 - glossiness) * pi/2)`, 0 for a perfect mirror, unbounded towards a
+/// matte surface.
+pub fn glossy_scaling(glossiness: f32) -> f32 {
+    exercise!(glossy_scaling(glossiness));
+    ((1.0 - glossiness) * FRAC_PI_2).tan()
 }

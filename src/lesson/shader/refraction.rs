@@ -11,17 +11,17 @@
 //! Deviation from the slides: the new ray starts at the hit point offset by its error bound to the side the
 //! refracted ray goes to ([`Ray::spawn`](crate::lesson::ray::Ray::spawn)), instead of `1e-6 * ray.dir`.
 
-use super::Shader;
-use crate::instruments::ray_tree::{LightKind, RayKind};
+use super::{CausticCaster, PhotonScatter, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, faceforward, refract};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::shader::PhotonScatter;
 use crate::lesson::spectral::Ior;
 
+/// A transparent surface that bends rays by Snell's law (slide "Refraction 0.2"); glass without Fresnel's
+/// reflection, which [`fresnel_glass`](super::fresnel_glass) adds.
 #[derive(Clone, Copy, Debug)]
 pub struct Refraction {
     /// Index of refraction of the material (glass about 1.5), possibly depending on the wavelength; the
@@ -32,6 +32,8 @@ pub struct Refraction {
 }
 
 impl Refraction {
+    /// A refraction of index `ior` (the same at every wavelength) letting through the fraction `multiplier` of
+    /// the light.
     pub fn new(ior: f32, multiplier: f32) -> Refraction {
         Refraction { ior: Ior::Constant(ior), multiplier }
     }
@@ -54,30 +56,27 @@ impl Refraction {
 impl Shader for Refraction {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let Some(dir) = self.refracted(ray, info) else {
-            ctx.record(|tree| tree.light(LightKind::TotalInternalReflection, Color::BLACK));
-            return Color::BLACK;
+            return Color::BLACK; // total internal reflection
         };
         let new_ray = ray.spawn(info, dir, self.multiplier);
-        let mark = ctx.record_mark();
-        ctx.record(|tree| tree.next_ray(RayKind::Refraction));
-        let color = ctx.raytrace(&new_ray) * self.multiplier;
-        ctx.record(|tree| tree.scale(mark, Color::gray(self.multiplier)));
-        color
+        ctx.raytrace(&new_ray) * self.multiplier
     }
 
     fn is_dispersive(&self) -> bool {
         self.ior.is_dispersive()
     }
 
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        Some(self)
+    }
+}
+
+impl CausticCaster for Refraction {
     /// A photon is refracted like a ray (and absorbed under total internal reflection, as the ray is).
     fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, _rng: &mut Rng) -> PhotonScatter {
         match self.refracted(ray, info) {
             Some(dir) => PhotonScatter::Continue { dir, filter: Color::gray(self.multiplier) },
             None => PhotonScatter::Absorb,
         }
-    }
-
-    fn casts_caustics(&self) -> bool {
-        true
     }
 }

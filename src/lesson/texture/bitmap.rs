@@ -12,11 +12,15 @@ use crate::lesson::ray::Ray;
 use std::path::Path;
 use std::sync::Arc;
 
+/// A diffuse texture read from an image (slide "Bitmap текстури"): the hit's u/v, divided by `scaling`, pick
+/// its colour.
 #[derive(Clone, Debug)]
 pub struct BitmapTexture {
+    /// The image, in an `Arc` so that several textures can share it.
     pub bitmap: Arc<Bitmap>,
     /// Texture units per copy of the image.
     pub scaling: f32,
+    /// How a colour is read between texel centres: nearest or bilinear.
     pub filter: Filter,
     /// Wrapping of u and of v.
     pub wrap: (Wrap, Wrap),
@@ -31,12 +35,15 @@ impl BitmapTexture {
     pub fn load(path: &Path) -> Result<BitmapTexture> {
         Ok(BitmapTexture::new(Arc::new(Bitmap::load(path)?)))
     }
+    /// The same texture with one copy of the image per `scaling` units of u/v (larger values make it larger).
     pub fn with_scaling(self, scaling: f32) -> BitmapTexture {
         BitmapTexture { scaling, ..self }
     }
+    /// The same texture read with `filter`.
     pub fn with_filter(self, filter: Filter) -> BitmapTexture {
         BitmapTexture { filter, ..self }
     }
+    /// The same texture with `u` wrapping across and `v` down the image.
     pub fn with_wrap(self, u: Wrap, v: Wrap) -> BitmapTexture {
         BitmapTexture { wrap: (u, v), ..self }
     }

@@ -7,9 +7,12 @@ use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::floor;
 use crate::lesson::ray::Ray;
 
+/// A checkerboard of two colours over the surface's u/v (the course's first procedural texture).
 #[derive(Clone, Copy, Debug)]
 pub struct CheckerTexture {
+    /// The colour of the square at the u/v origin and of every second square from it (linear RGB).
     pub color1: Color,
+    /// The colour of the other squares (linear RGB).
     pub color2: Color,
     /// Squares per texture unit.
     pub scaling: f32,

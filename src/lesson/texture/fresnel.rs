@@ -23,14 +23,18 @@ pub enum FresnelMode {
     Exact,
 }
 
+/// The Fresnel texture (slide "Fresnel Texture"): the reflectance of the surface at the angle the ray meets it,
+/// as a grey colour from 0 to 1.
 #[derive(Clone, Copy, Debug)]
 pub struct Fresnel {
     /// Index of refraction of the object (outside is air, 1.0), possibly depending on the wavelength.
     pub ior: Ior,
+    /// Schlick's approximation (the slide's) or the exact equations.
     pub mode: FresnelMode,
 }
 
 impl Fresnel {
+    /// A Fresnel texture for an object of index `ior` (the same at every wavelength) in air.
     pub fn new(ior: f32, mode: FresnelMode) -> Fresnel {
         Fresnel { ior: Ior::Constant(ior), mode }
     }

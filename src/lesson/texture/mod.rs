@@ -27,6 +27,6 @@ pub trait Texture: Send + Sync {
 
     /// What the ray tree (`--trace-pixel`) calls this texture: its type's name.
     fn name(&self) -> &'static str {
-        crate::instruments::ray_tree::type_label::<Self>()
+        crate::lesson::type_label::<Self>()
     }
 }

@@ -1,0 +1,93 @@
+//! `cargo test -p exercises`: grades every exercise handed out and prints one line for each:
+//! passed, FAILED with the first wrong value, or not yet written. An exercise passes when its facts hold and
+//! the workbook's example that uses it, rendered at its default settings with the student's functions (the
+//! workbook is built for the exercises), is within the regression tests' tolerance of `expected/`. A picture
+//! that differs is saved with a heat map of the difference under `target/exercises/`.
+//!
+//! The pictures are rendered at full size because `expected/` holds full-size pictures, and there is no
+//! other reference in the same run: built for the exercises, the workbook has no functions of its own left
+//! for the exercises handed out. The eight pictures take about ten seconds together, in the default (dev)
+//! build too, whose dependencies are optimised.
+
+#[macro_use]
+#[path = "../../tests/common/examples.rs"]
+mod examples;
+mod grading;
+
+use lecture6::app::cli::{Cli, Example};
+use lecture6::instruments::compare::{
+    Difference, REGRESSION_MAX_RMSE, REGRESSION_PIXELS_PER_LARGE, difference, heat_map, load_reference,
+};
+use lecture6::lesson::frame::Frame;
+use std::path::Path;
+use std::process::ExitCode;
+
+/// The workspace root: the workbook.
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("exercises/ lies in the workbook")
+}
+
+/// Renders one of the workbook's examples at its default settings, as its binary would.
+fn render(example: &str) -> Result<Frame, String> {
+    fn render_as<E: Example>(name: &str) -> Result<Frame, String> {
+        let cli = Cli::<E>::parse_args(name, ["--quiet"]).map_err(|e| e.to_string())?;
+        cli.render().map(|(frame, _)| frame).map_err(|e| e.to_string())
+    }
+    macro_rules! by_name {
+        ($($name:ident),*) => {
+            match example {
+                $(stringify!($name) => render_as::<examples::$name::Options>(example),)*
+                _ => Err(format!("the workbook has no example `{example}`")),
+            }
+        };
+    }
+    every_example!(by_name)
+}
+
+/// Renders `example` and compares it with `expected/<example>.png` under the regression tests' rule; on a
+/// difference, saves the picture and a heat map under `target/exercises/` and says how far it is.
+fn check_picture(example: &str) -> Result<(), String> {
+    let actual = render(example)?.to_rgb8();
+    let expected_path = root().join("expected").join(format!("{example}.png"));
+    let expected = load_reference(&expected_path).map_err(|e| e.to_string())?;
+    let d = difference(&actual, &expected).map_err(|e| e.to_string())?;
+    if d.within_regression_tolerance() {
+        return Ok(());
+    }
+    // Saved under the workbook's target/, and named from its root as a student's commands name files.
+    let folder = Path::new("target").join("exercises");
+    let (picture, diff) = (folder.join(format!("{example}.png")), folder.join(format!("{example}-diff.png")));
+    std::fs::create_dir_all(root().join(&folder)).map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
+    actual.save(root().join(&picture)).map_err(|e| format!("cannot write {}: {e}", picture.display()))?;
+    heat_map(&actual, &expected)
+        .map_err(|e| e.to_string())?
+        .save(root().join(&diff))
+        .map_err(|e| format!("cannot write {}: {e}", diff.display()))?;
+    Err(format!(
+        "the picture of `{example}` is not the expected one: {} of its {} pixels differ from expected/{example}.png \
+         by more than {} levels (at most {} may) and the RMSE is {:.2} levels (at most {REGRESSION_MAX_RMSE}); yours \
+         is {}, the difference {} (the picture also uses the other exercises: fix those that fail first)",
+        d.large_pixels,
+        d.pixels,
+        Difference::LARGE,
+        d.pixels / REGRESSION_PIXELS_PER_LARGE,
+        d.rmse_8bit,
+        picture.display(),
+        diff.display(),
+    ))
+}
+
+fn main() -> ExitCode {
+    // A blank's todo!() is reported in the verdict; any other panic is printed as usual, with its place.
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if grading::not_written(&grading::panic_message(info.payload())).is_none() {
+            default_hook(info);
+        }
+    }));
+    println!("\nGrading the lecture-6 exercises: facts first, then the picture of the example that uses each.\n");
+    let exercises = grading::workbook();
+    let verdicts = grading::grade(&exercises, &check_picture);
+    println!("{}\n", grading::report(&exercises, &verdicts));
+    if grading::all_passed(&verdicts) { ExitCode::SUCCESS } else { ExitCode::FAILURE }
+}

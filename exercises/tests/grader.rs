@@ -1,0 +1,217 @@
+//! The grader's own tests (with the reference solutions: `--features solutions`): every solution holds its
+//! facts; a blank is named and the others still grade; a wrong answer fails with a message that says what
+//! was expected, of what, and what came out; and every fact check can fail, on a plausible mistake.
+
+mod grading;
+
+use exercises::{Face, Vector};
+use glam::Affine3A;
+use grading::{Exercise, Verdict, facts, grade, workbook};
+
+/// A picture check that finds every picture as expected, so that only the facts decide.
+fn pictures_as_expected(_example: &str) -> Result<(), String> {
+    Ok(())
+}
+
+/// The workbook's exercises, with the one named `name` checked by `facts` instead.
+fn with(name: &str, facts: impl Fn() -> facts::Facts + 'static) -> Vec<Exercise> {
+    let mut exercises = workbook();
+    let exercise = exercises.iter_mut().find(|e| e.name == name).expect("an exercise of that name");
+    exercise.facts = Box::new(facts);
+    exercises
+}
+
+#[test]
+fn every_solution_holds_its_facts() {
+    let exercises = workbook();
+    for (exercise, verdict) in exercises.iter().zip(grade(&exercises, &pictures_as_expected)) {
+        assert_eq!(verdict, Verdict::Passed { example: exercise.example.to_string() }, "{}", exercise.name);
+    }
+    assert_eq!(exercises.len(), 11);
+}
+
+/// Schlick's f0 for water (1.33) whatever the index asked for: a student who copied a constant.
+fn fresnel_of_water(i: Vector, n: Vector, _eta1_over_eta2: f32) -> f32 {
+    exercises::fresnel_schlick::fresnel(i, n, 1.0 / 1.33)
+}
+
+#[test]
+fn a_wrong_fresnel_fails_with_a_message_a_student_understands() {
+    let exercises = with("fresnel_schlick", || facts::fresnel_schlick(fresnel_of_water));
+    let verdicts = grade(&exercises, &pictures_as_expected);
+    for (exercise, verdict) in exercises.iter().zip(&verdicts) {
+        if exercise.name == "fresnel_schlick" {
+            let Verdict::Failed(message) = verdict else { panic!("a wrong Fresnel passed: {verdict:?}") };
+            // What was checked, in the student's terms, the value the slide's formula gives, and theirs.
+            for part in
+                ["Head-on", "entering glass of index 1.5", "f0 = ((1 - 1/1.5) / (1 + 1/1.5))^2", "0.0400", "got 0.0201"]
+            {
+                assert!(message.contains(part), "the message does not say {part:?}: {message}");
+            }
+        } else {
+            assert!(matches!(verdict, Verdict::Passed { .. }), "{}: {verdict:?}", exercise.name);
+        }
+    }
+    let report = grading::report(&exercises, &verdicts);
+    assert!(report.contains("fresnel_schlick    FAILED: Head-on"), "{report}");
+    assert!(report.contains("10 of 11 exercises handed out passed"), "{report}");
+}
+
+/// A blank exercise, as a student receives it.
+fn blank_refract(_i: Vector, _n: Vector, _eta1_over_eta2: f32) -> Option<Vector> {
+    todo!("refract")
+}
+
+#[test]
+fn a_blank_exercise_is_named_and_the_others_still_grade() {
+    let exercises = with("refract", || facts::refract(blank_refract));
+    let verdicts = grade(&exercises, &pictures_as_expected);
+    for (exercise, verdict) in exercises.iter().zip(&verdicts) {
+        if exercise.name == "refract" {
+            assert_eq!(*verdict, Verdict::NotWritten("refract".into()));
+        } else {
+            assert!(matches!(verdict, Verdict::Passed { .. }), "{}: {verdict:?}", exercise.name);
+        }
+    }
+    let report = grading::report(&exercises, &verdicts);
+    assert!(report.contains("refract            not yet written: todo!(\"refract\") is still there"), "{report}");
+}
+
+#[test]
+fn a_picture_that_needs_a_blank_exercise_waits_for_it_and_one_that_differs_fails() {
+    // `fresnel` renders as if `faceforward` were blank; `glossy` differs; the others are as expected.
+    let pictures = |example: &str| match example {
+        "fresnel" => todo!("faceforward"),
+        "glossy" => Err("the picture of `glossy` is not the expected one".to_string()),
+        _ => Ok(()),
+    };
+    let exercises = workbook();
+    let verdicts = grade(&exercises, &pictures);
+    for (exercise, verdict) in exercises.iter().zip(&verdicts) {
+        let expected = match exercise.example {
+            "fresnel" => Verdict::PictureWaits { example: "fresnel".into(), on: "faceforward".into() },
+            "glossy" => Verdict::Failed("every fact holds, but the picture of `glossy` is not the expected one".into()),
+            example => Verdict::Passed { example: example.into() },
+        };
+        assert_eq!(*verdict, expected, "{}", exercise.name);
+    }
+    assert!(verdicts[2].to_string().contains("set FACEFORWARD to false"), "{}", verdicts[2]);
+}
+
+#[test]
+fn an_exercise_that_panics_fails_and_one_not_handed_out_is_skipped() {
+    let mut exercises = with("bilinear", || facts::bilinear(|_, _, texel| texel(i64::MAX, 0) * 0.0));
+    exercises[1].handed_out = false;
+    exercises[2].facts = Box::new(|| panic!("index out of bounds"));
+    let verdicts = grade(&exercises, &pictures_as_expected);
+    assert!(matches!(&verdicts[0], Verdict::Failed(m) if m.contains("centre of texel (2, 1)")), "{:?}", verdicts[0]);
+    assert_eq!(verdicts[1], Verdict::NotHandedOut);
+    assert_eq!(verdicts[2], Verdict::Failed("it panicked: index out of bounds".into()));
+    assert!(!grading::all_passed(&verdicts));
+}
+
+/// Runs a fact check that must fail, and returns its message.
+fn fails(check: facts::Facts) -> String {
+    check.expect_err("a wrong answer held every fact")
+}
+
+#[test]
+fn every_fact_check_fails_on_a_plausible_mistake() {
+    use exercises::*;
+    // Bilinear without the half-texel offset.
+    let message = fails(facts::bilinear(|x, y, texel| bilinear::bilinear(x + 0.5, y + 0.5, texel)));
+    assert!(message.contains("centre of texel (2, 1)"), "{message}");
+    // The inverse as the transpose: right for a rotation only.
+    let message =
+        fails(facts::transform_inverse(|t| Affine3A { matrix3: t.matrix3.transpose(), translation: -t.translation }));
+    assert!(message.contains("scale by (2, 1.5, 0.9)"), "{message}");
+    // The cube map with v growing upwards.
+    let message = fails(facts::cube_map(|d| {
+        let (face, u, v) = cube_map::cube_face_uv(d);
+        (face, u, 1.0 - v)
+    }));
+    assert!(message.contains("(0, 0.5, 1) should land on PosZ at (u, v) = (0.5, 0.25)"), "{message}");
+    // The cube map choosing the face by the largest signed component.
+    let message = fails(facts::cube_map(|d| {
+        let (_, u, v) = cube_map::cube_face_uv(d);
+        let face = if d.x >= d.y && d.x >= d.z {
+            Face::PosX
+        } else if d.y >= d.z {
+            Face::PosY
+        } else {
+            Face::PosZ
+        };
+        (face, u, v)
+    }));
+    assert!(message.contains("should land in the middle of NegX"), "{message}");
+    // faceforward the wrong way round.
+    let message = fails(facts::faceforward(|n, i| -faceforward::faceforward(n, i)));
+    assert!(message.contains("sees its normal n = (0, 1, 0) as it is"), "{message}");
+    // refract with the slide's comment's ratio (eta2 / eta1).
+    let message = fails(facts::refract(|i, n, eta| refract::refract(i, n, 1.0 / eta)));
+    assert!(message.contains("entering glass of index 1.5 at 45 degrees refracts"), "{message}");
+    // refract without total internal reflection.
+    let message = fails(facts::refract(|i, n, eta| refract::refract(i, n, eta).or(Some(Vector::ZERO))));
+    assert!(message.contains("total internal reflection"), "{message}");
+    // The layer weight forgetting the layers above.
+    let message = fails(facts::layered_blend(|_, blend| blend));
+    assert!(message.contains("under an opaque one"), "{message}");
+    // The slide's Schlick, without the workbook's rule for rays leaving the glass.
+    let message = fails(facts::fresnel_schlick(|i, n, eta| {
+        let f0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
+        f0 + (1.0 - f0) * (1.0 + n.dot(i)).powi(5)
+    }));
+    assert!(message.contains("past the critical angle"), "{message}");
+    // The exact equations with rs only.
+    let message = fails(facts::fresnel_exact(|i, n, eta| {
+        let cos_i = -n.dot(i);
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        if sin2_t >= 1.0 {
+            return 1.0;
+        }
+        let cos_t = (1.0 - sin2_t).sqrt();
+        ((eta * cos_i - cos_t) / (eta * cos_i + cos_t)).powi(2)
+    }));
+    assert!(message.contains("Brewster"), "{message}");
+    // A random radius and angle: points crowd at the centre.
+    let message = fails(facts::glossy_disc(
+        |random| {
+            let (r, phi) = (random(), 2.0 * std::f32::consts::PI * random());
+            (r * phi.cos(), r * phi.sin())
+        },
+        glossy_disc::concentric_disc,
+    ));
+    assert!(message.contains("From the random numbers 0.5, 0.75"), "{message}");
+    let message = fails(facts::glossy_disc(
+        |random| glossy_disc::random_unit_disc_point(random),
+        |u, v| {
+            let (r, phi) = (u.sqrt(), 2.0 * std::f32::consts::PI * v);
+            (r * phi.cos(), r * phi.sin())
+        },
+    ));
+    assert!(message.contains("concentric mapping the centre of the square"), "{message}");
+    // A glossy cone that lets rays go under the surface.
+    let message = fails(facts::glossy_cone(glossy_cone::glossy_scaling, |i, n, t, b, s, (x, y)| {
+        Some(reflect(i, (n + x * s * t + y * s * b).normalize()))
+    }));
+    assert!(message.contains("goes under the surface"), "{message}");
+    // A glossy scaling that is linear rather than the slide's tangent.
+    let message = fails(facts::glossy_cone(|g| 1.0 - g, glossy_cone::glossy_direction));
+    assert!(message.contains("tan((1 - glossiness) * pi/2) at glossiness 0.95"), "{message}");
+    // The photon estimate without the cone filter: a plain sum over the area.
+    let message = fails(facts::photon_estimate(|photons: &[Photon], r2, n| {
+        photons.iter().filter(|p| p.dir.dot(n) < 0.0).map(|p| p.power).sum::<Color>() / (std::f32::consts::PI * r2)
+    }));
+    assert!(message.contains("counts fully"), "{message}");
+}
+
+#[test]
+fn the_exercises_types_agree_with_the_workbooks() {
+    use lecture6::lesson::environment::CubeFace;
+    let faces = [Face::PosX, Face::NegX, Face::PosY, Face::NegY, Face::PosZ, Face::NegZ];
+    for (face, workbook) in faces.into_iter().zip(CubeFace::ALL) {
+        assert_eq!(face as usize, workbook as usize);
+        assert_eq!(format!("{face:?}"), format!("{workbook:?}"));
+    }
+    assert_eq!(exercises::CONE_FILTER_K, lecture6::lesson::photon_map::CONE_FILTER_K);
+}

@@ -1,0 +1,99 @@
+//! The renderer's one observation hook: how an instrument (the ray tree of `--trace-pixel`, the viewer's
+//! clicked pixel) watches the slides' recursion without being part of it.
+//!
+//! An [`Observer`] put into [`TraceContext::observer`] is told what the recursion does, by the core alone:
+//! [`TraceContext::raytrace`] reports every ray it traces, what the ray hits and what colour it brings back;
+//! the light loop ([`crate::lesson::light::light_loop`]) reports the light it finds at a surface point; and
+//! [`TraceContext::shade_layer`] reports the layers of a `Layered` shader. A shader never reports anything:
+//! a student's shader that traces its rays with `ctx.raytrace` and takes its light from the light loop is
+//! observed exactly as the shipped ones are. With no observer (every render but one pixel's), each report is
+//! one test of an `Option`.
+//!
+//! Not on the slides: the course's renderer has no such hook; it is what lets the workbook show the ray tree
+//! of a pixel without a line of recording code in the lesson.
+
+use crate::lesson::color::Color;
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::math::Vector;
+use crate::lesson::node::Node;
+use crate::lesson::ray::Ray;
+use crate::lesson::scene::Scene;
+use crate::lesson::shader::Layer;
+
+#[cfg(doc)]
+use crate::lesson::scene::TraceContext;
+
+/// Why [`TraceContext::raytrace`] did not follow a ray further.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stop {
+    /// It hit nothing: its colour is the environment's.
+    Missed,
+    /// It was deeper than the scene's `max_depth` (the slide's `MAX_RAY_DEPTH`): black.
+    DepthLimit,
+    /// Its weight was below the adaptive cut-off (`Scene::min_ray_weight`): black.
+    WeightCutoff,
+    /// It was deeper than the recursion safety cap: black.
+    SafetyCap,
+}
+
+impl std::fmt::Display for Stop {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(match self {
+            Stop::Missed => "missed: environment colour",
+            Stop::DepthLimit => "depth limit: black",
+            Stop::WeightCutoff => "weight below the adaptive cut-off: black",
+            Stop::SafetyCap => "recursion safety cap: black",
+        })
+    }
+}
+
+/// Light the light loop found at the surface point being shaded, without tracing a ray for it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Light {
+    /// The scene's ambient light (irradiance).
+    Ambient,
+    /// Lamp `index`, asked by a shadow ray that starts at `from` towards the lamp (`dir`); `visible` says
+    /// whether it got there. Its colour is the irradiance it brings, the cosine included.
+    Lamp {
+        /// The lamp's index in [`Scene::lights`].
+        index: usize,
+        /// The surface point the shadow ray leaves from, in world space.
+        from: Vector,
+        /// The unit direction from `from` to the lamp.
+        dir: Vector,
+        /// True when nothing stands between the point and the lamp.
+        visible: bool,
+    },
+    /// The caustic light of the photon map (irradiance).
+    Photons,
+    /// What the shader added of its own for lamp `index` (Phong's highlight): a colour seen as it is, not an
+    /// irradiance the shader multiplies by its diffuse colour.
+    Highlight {
+        /// The lamp's index in [`Scene::lights`].
+        index: usize,
+    },
+}
+
+impl Light {
+    /// Whether this light is an irradiance, which the shader multiplies by its colour (all but highlights).
+    pub fn is_irradiance(&self) -> bool {
+        !matches!(self, Light::Highlight { .. })
+    }
+}
+
+/// What an instrument is told about the recursion (see the module documentation). Every method has an
+/// empty default, so an observer implements only what it needs.
+pub trait Observer {
+    /// `raytrace` starts tracing `ray`.
+    fn ray_begins(&mut self, _ray: &Ray) {}
+    /// The ray being traced hit `node` of `scene`, as `info` describes; its shader is about to run.
+    fn ray_hits(&mut self, _scene: &Scene, _node: &Node, _info: &IntersectionInfo) {}
+    /// The light loop found `light` of colour `color` at the point being shaded.
+    fn light_found(&mut self, _light: Light, _color: Color) {}
+    /// A `Layered` shader starts shading `layer` at the point being shaded.
+    fn layer_begins(&mut self, _layer: &Layer) {}
+    /// ... and is done with it: the layer's shader returned `color`, which counts `weight` times.
+    fn layer_ends(&mut self, _color: Color, _weight: Color) {}
+    /// The ray being traced is finished: it brought back `color`, and was not followed for `stop`, if given.
+    fn ray_ends(&mut self, _color: Color, _stop: Option<Stop>) {}
+}
