@@ -297,6 +297,26 @@ fn case_7_numbers_that_are_not_finite_as_32_bit_floats_are_refused() {
 }
 
 #[test]
+fn fuzz_finding_a_mirror_or_glass_that_amplifies_light_is_refused() {
+    // Found by the fuzz target: the glass's Refr multiplier 1e38 (or 1e10) with `maxTraceDepth 2147483647`
+    // hung; a surface that gives back more light than it receives keeps its rays from being pruned.
+    let refr = "ior         1.6\n\tmultiplier  0.9";
+    for (name, old, new, value) in [
+        ("refr-1e10", refr, "ior         1.6\n\tmultiplier  1e10", "`multiplier` 10000000000"),
+        (
+            "refl-negative",
+            "Refl glass_reflection {\n\tmultiplier  0.9",
+            "Refl glass_reflection {\n\tmultiplier  -0.5",
+            "-0.5",
+        ),
+    ] {
+        let scene = scene_with(old, new) + "GlobalSettings {\n maxTraceDepth 2147483647\n}\n";
+        let line = format!("line {}", line_of(&scene, new.lines().last().unwrap().trim()));
+        scene_refused(&format!("{name}.qdmg"), &scene, &[&line, value, "[0, 1]"]);
+    }
+}
+
+#[test]
 fn case_8_a_mesh_with_nothing_to_render_is_refused() {
     for (name, obj) in [
         ("no-faces", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),

@@ -214,7 +214,7 @@ impl Loader<'_> {
                 Arc::new(Phong::new(color, multiplier as f32, exponent as f32))
             }
             "Refl" => {
-                let multiplier = r.float(self, "multiplier", 0.99, -1e120, 1e120)? as f32;
+                let multiplier = r.float(self, "multiplier", 0.99, 0.0, 1.0)? as f32;
                 let glossiness = r.float(self, "glossiness", 1.0, 0.0, 1.0)?;
                 let samples = r.int(self, "numSamples", 32, 1, i32::MAX as i64)?;
                 // Glossiness 0 (an unbounded cone) is refused by `Reflection::glossy`, as on the command line.
@@ -227,7 +227,7 @@ impl Loader<'_> {
             }
             "Refr" => {
                 let ior = r.float(self, "ior", 1.33, 1e-6, 10.0)?;
-                let multiplier = r.float(self, "multiplier", 0.99, -1e120, 1e120)?;
+                let multiplier = r.float(self, "multiplier", 0.99, 0.0, 1.0)?;
                 Arc::new(Refraction::new(ior as f32, multiplier as f32))
             }
             _ => Arc::new(self.layered(blocks, b)?),

@@ -35,6 +35,10 @@
 //!   Camera `position` are errors; so are the degenerate values the course does not check (zero scales,
 //!   `glossiness 0`, BitmapTexture `scaling 0`), a file that cannot be decoded, and a Mesh with no
 //!   triangle to render.
+//! - A Refl or Refr `multiplier` must be within [0, 1], as on the command line (the course sets no range): a
+//!   surface that gives back more light than it receives keeps the rays behind it above the weight at which
+//!   they are pruned, and in a deep scene the ray tree grows without bound (`multiplier 1e10` on the glass
+//!   with `maxTraceDepth 2147483647` hung).
 //! - Numbers must be finite as the renderer's 32-bit floats, not only within the course's bounds (1e39 is
 //!   within ±1e120 and would become infinity), colours and layer blends included; positions and lengths
 //!   (positions, `O`, `R`, `halfSide`, a Plane's `y`, `translate`) stay within ±1e18, so that the renderer
