@@ -327,6 +327,7 @@ impl<'a> TraceContext<'a> {
     }
 
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
+    #[inline]
     pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
         self.counters.shadow_rays += 1;
         let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
