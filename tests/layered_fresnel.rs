@@ -279,12 +279,13 @@ fn share_within_one_level(a: &Frame, b: &Frame) -> f64 {
 
 #[test]
 fn adaptive_fresnel_is_within_one_level_of_exhaustive() {
-    let adaptive = common::render::<fresnel_example::Options>(&[]);
-    let exhaustive = common::render::<fresnel_example::Options>(&["--exhaustive"]);
+    let (adaptive, adaptive_stats) = common::parse::<fresnel_example::Options>(&[]).render().unwrap();
+    let (exhaustive, exhaustive_stats) = common::parse::<fresnel_example::Options>(&["--exhaustive"]).render().unwrap();
     let share = share_within_one_level(&adaptive, &exhaustive);
     assert!(share >= 0.999, "only {:.4}% of pixels within one level", share * 100.0);
-    // Adaptive control did leave rays out: the two renders are not the same render.
-    assert_ne!(adaptive, exhaustive);
+    // Adaptive control did leave rays out.
+    let (saved, all) = (adaptive_stats.counters.total(), exhaustive_stats.counters.total());
+    assert!(saved < all, "adaptive traced {saved} rays, exhaustive {all}");
 }
 
 #[test]
@@ -312,7 +313,10 @@ fn fresnel_modes_and_threads() {
     let two = common::render::<fresnel_example::Options>(&[&small[..], &["--threads", "2"]].concat());
     assert!(one == two, "the picture changed with the thread count");
     let exact = common::render::<fresnel_example::Options>(&[&small[..], &["--fresnel", "exact"]].concat());
-    assert_ne!(one, exact, "--fresnel exact must change the glass");
+    // Exact Fresnel changes the glass where Schlick's fit is least exact (towards grazing angles, a few
+    // levels; 8 at 160x120), yet it is the same physics: the pictures agree to well under 2 levels RMSE.
+    let d = lecture6::instruments::compare::difference(&one.to_rgb8(), &exact.to_rgb8()).unwrap();
+    assert!(d.max_diff >= 4 && d.rmse_8bit < 2.0, "--fresnel exact against Schlick: {d}");
 }
 
 fn stderr(out: &std::process::Output) -> String {
