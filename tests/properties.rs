@@ -3,6 +3,7 @@
 //! non-negative.
 
 use lecture6::Color;
+use lecture6::lesson::bitmap::{Bitmap, Filter, Wrap};
 use lecture6::lesson::camera::Camera;
 use lecture6::lesson::environment::ConstantEnvironment;
 use lecture6::lesson::geometry::{Cube, Geometry, Mesh, Plane, Prism, Sphere};
@@ -157,5 +158,42 @@ proptest! {
         let mut ctx = TraceContext::new(scene, Rng::for_keys(&[seed]));
         let c = ctx.raytrace(&Ray { wavelength, ..Ray::new(start, dir) });
         prop_assert!(c.is_finite() && c.0.min_element() >= 0.0, "{c:?}");
+    }
+
+    /// The bilinear look-up, whose usual case reads the four texels as two pairs without wrapping each
+    /// index, gives what the slide's filter gives with every index wrapped on its own, for any (u, v) and
+    /// every wrap mode, inside the image, across its edges and tiles away.
+    #[test]
+    fn bilinear_sampling_matches_the_filter_with_every_index_wrapped(
+        u in -3.0f32..3.0,
+        v in -3.0f32..3.0,
+        wrap_u in prop::sample::select(vec![Wrap::Repeat, Wrap::Mirror, Wrap::Clamp]),
+        wrap_v in prop::sample::select(vec![Wrap::Repeat, Wrap::Mirror, Wrap::Clamp]),
+    ) {
+        let (w, h) = (5usize, 3usize);
+        let texel = |i: usize, j: usize| Color::new(i as f32, j as f32, (i * 7 + j * 3) as f32 * 0.01);
+        let bitmap = Bitmap::from_pixels(w, h, (0..h).flat_map(|j| (0..w).map(move |i| texel(i, j))).collect());
+        let wrapped = |k: i64, n: usize, wrap: Wrap| {
+            let n = n as i64;
+            (match wrap {
+                Wrap::Repeat => k.rem_euclid(n),
+                Wrap::Clamp => k.clamp(0, n - 1),
+                Wrap::Mirror => {
+                    let m = k.rem_euclid(2 * n);
+                    if m < n { m } else { 2 * n - 1 - m }
+                }
+            }) as usize
+        };
+        let (fx, fy) = (u * w as f32 - 0.5, v * h as f32 - 0.5);
+        let (x0, y0) = (fx.floor(), fy.floor());
+        let (tx, ty) = (fx - x0, fy - y0);
+        let at = |di: i64, dj: i64| {
+            texel(wrapped(x0 as i64 + di, w, wrap_u), wrapped(y0 as i64 + dj, h, wrap_v))
+        };
+        let top = at(0, 0) * (1.0 - tx) + at(1, 0) * tx;
+        let bottom = at(0, 1) * (1.0 - tx) + at(1, 1) * tx;
+        let expected = top * (1.0 - ty) + bottom * ty;
+        let got = bitmap.sample(u, v, Filter::Bilinear, (wrap_u, wrap_v));
+        prop_assert!((got.0 - expected.0).abs().max_element() < 1e-5, "{got:?} against {expected:?}");
     }
 }

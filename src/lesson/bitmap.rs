@@ -40,6 +40,28 @@ pub enum Filter {
 }
 
 impl Wrap {
+    /// The pair of neighbouring texels around the coordinate `f` (in texels, their centres at whole numbers)
+    /// in a row or a column of `n`, when the two lie side by side there: where the first one is, and how far
+    /// past its centre `f` lies. Always so for `Repeat` (unless the first is the last texel of a tile), only
+    /// inside the image for the other modes; never for a coordinate too large for an `i32`.
+    #[inline(always)]
+    fn pair(self, f: f32, n: usize) -> Option<(usize, f32)> {
+        const I32_RANGE: f32 = 2_147_483_648.0;
+        // Also false for NaN.
+        let fits = f.abs() < I32_RANGE;
+        // `f as i32` rounds towards zero: one step down where that rounded up gives the floor (it wraps
+        // only where `f` does not fit, and is not used then).
+        let i = f as i32;
+        let i = i.wrapping_sub(((i as f32) > f) as i32);
+        let past = f - i as f32;
+        let i = if self == Wrap::Repeat && !(0..n as i64).contains(&(i as i64)) {
+            (i as i64).rem_euclid(n as i64)
+        } else {
+            i as i64
+        };
+        (fits && (0..n as i64 - 1).contains(&i)).then_some((i as usize, past))
+    }
+
     /// Maps an integer texel index into [0, n).
     #[inline(always)]
     fn texel(self, i: i64, n: usize) -> usize {
@@ -139,18 +161,26 @@ impl Bitmap {
     pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
         // The storage is chosen once per look-up, not once per texel.
         match &self.texels {
-            Texels::Linear(pixels) => self.filtered(u, v, filter, wrap, |i| pixels[i]),
-            Texels::Srgb8 { codes, table } => self.filtered(u, v, filter, wrap, |i| decode(codes[i], table)),
+            Texels::Linear(pixels) => self.filtered(u, v, filter, wrap, pixels, |c| c),
+            Texels::Srgb8 { codes, table } => self.filtered(u, v, filter, wrap, codes, |code| decode(code, table)),
         }
     }
 
-    /// [`Bitmap::sample`], with `texel(i)` the linear colour of the texel at index `i` (row by row).
+    /// [`Bitmap::sample`] from the texels `texels` (row by row), `linear` making a linear colour of one.
     #[inline(always)]
-    fn filtered(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap), texel: impl Fn(usize) -> Color) -> Color {
+    fn filtered<T: Copy>(
+        &self,
+        u: f32,
+        v: f32,
+        filter: Filter,
+        wrap: (Wrap, Wrap),
+        texels: &[T],
+        linear: impl Fn(T) -> Color,
+    ) -> Color {
         // NaN coordinates (a degenerate hit) read the first texel rather than index out of range.
         let x = if u.is_finite() { u * self.width as f32 } else { 0.0 };
         let y = if v.is_finite() { v * self.height as f32 } else { 0.0 };
-        let at = |i: usize, j: usize| texel(j * self.width + i);
+        let at = |i: usize, j: usize| linear(texels[j * self.width + i]);
         match filter {
             Filter::Nearest => {
                 at(wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height))
@@ -159,17 +189,30 @@ impl Bitmap {
                 exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
                 // Texel centres sit at half-integer coordinates.
                 let (fx, fy) = (x - 0.5, y - 0.5);
+                // The usual case: the four texels lie two by two in two neighbouring rows, read as two
+                // slices of two without wrapping each index.
+                if let (Some((i, tx)), Some((j, ty))) = (wrap.0.pair(fx, self.width), wrap.1.pair(fy, self.height)) {
+                    let first = j * self.width + i;
+                    let (top, bottom) = (&texels[first..][..2], &texels[first + self.width..][..2]);
+                    return bilinear([top[0], top[1], bottom[0], bottom[1]].map(linear), tx, ty);
+                }
                 let (x0, y0) = (floor(fx), floor(fy));
                 let (tx, ty) = (fx - x0, fy - y0);
                 let (x0, y0) = (x0 as i64, y0 as i64);
                 let (i0, i1) = (wrap.0.texel(x0, self.width), wrap.0.texel(x0 + 1, self.width));
                 let (j0, j1) = (wrap.1.texel(y0, self.height), wrap.1.texel(y0 + 1, self.height));
-                let top = at(i0, j0) * (1.0 - tx) + at(i1, j0) * tx;
-                let bottom = at(i0, j1) * (1.0 - tx) + at(i1, j1) * tx;
-                top * (1.0 - ty) + bottom * ty
+                bilinear([at(i0, j0), at(i1, j0), at(i0, j1), at(i1, j1)], tx, ty)
             }
         }
     }
+}
+
+/// The mix of four texels, the top two then the bottom two, at (tx, ty) between their centres.
+#[inline(always)]
+fn bilinear([a, b, c, d]: [Color; 4], tx: f32, ty: f32) -> Color {
+    let top = a * (1.0 - tx) + b * tx;
+    let bottom = c * (1.0 - tx) + d * tx;
+    top * (1.0 - ty) + bottom * ty
 }
 
 /// The linear colour of an 8-bit sRGB texel.

@@ -63,8 +63,8 @@ impl Color {
     /// Replaces NaN and negative channels by zero and infinities by `f32::MAX`, so that one broken sample
     /// can never poison a pixel average.
     pub fn sanitized(self) -> Color {
-        let c = self.0.to_array().map(|v| if v.is_nan() || v < 0.0 { 0.0 } else { v.min(f32::MAX) });
-        Color(Vec3A::from_array(c))
+        // `v >= 0` is false for NaN and for negative channels alike.
+        Color(Vec3A::select(self.0.cmpge(Vec3A::ZERO), self.0, Vec3A::ZERO).min(Vec3A::splat(f32::MAX)))
     }
 }
 

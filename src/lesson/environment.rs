@@ -188,20 +188,22 @@ impl CubeFace {
 /// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
 pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
     exercise!(cube_face_uv(dir));
+    use CubeFace::*;
     let a = dir.abs();
-    let face = if a.x >= a.y && a.x >= a.z {
-        if dir.x >= 0.0 { CubeFace::PosX } else { CubeFace::NegX }
+    // The largest component picks the face. `major` is the component along the face's centre, `along_u` and
+    // `along_v` those along its u and v directions: the rows of the table in the module docs, read
+    // straight from `dir` (the products with the axes of `CubeFace::axes`, without the arithmetic).
+    let (face, major, along_u, along_v) = if a.x >= a.y && a.x >= a.z {
+        if dir.x >= 0.0 { (PosX, dir.x, -dir.z, -dir.y) } else { (NegX, -dir.x, dir.z, -dir.y) }
     } else if a.y >= a.z {
-        if dir.y >= 0.0 { CubeFace::PosY } else { CubeFace::NegY }
+        if dir.y >= 0.0 { (PosY, dir.y, dir.x, dir.z) } else { (NegY, -dir.y, dir.x, -dir.z) }
     } else if dir.z >= 0.0 {
-        CubeFace::PosZ
+        (PosZ, dir.z, dir.x, -dir.y)
     } else {
-        CubeFace::NegZ
+        (NegZ, -dir.z, -dir.x, -dir.y)
     };
-    let (centre, u_axis, v_axis) = face.axes();
     // Project onto the face's plane at distance 1: the major component becomes 1.
-    let major = dir.dot(centre);
-    (face, 0.5 + 0.5 * dir.dot(u_axis) / major, 0.5 + 0.5 * dir.dot(v_axis) / major)
+    (face, 0.5 + 0.5 * along_u / major, 0.5 + 0.5 * along_v / major)
 }
 
 /// The unit direction through (u, v) of a cube face: the inverse of [`cube_face_uv`].

@@ -50,6 +50,7 @@ pub struct Lighting {
 /// direction to the lamp and its irradiance before the cosine, and adds what it returns to the
 /// [`Lighting::highlights`]: the light that depends on where the lamp is (Phong's highlight). A shader that
 /// takes its light from here gets caustics without asking.
+#[inline]
 pub fn light_loop(
     ctx: &mut TraceContext,
     info: &IntersectionInfo,
@@ -96,6 +97,7 @@ pub fn light_loop(
 }
 
 /// The irradiance a diffuse surface receives at the hit point (see [`light_loop`]).
+#[inline]
 pub fn diffuse_light(ctx: &mut TraceContext, info: &IntersectionInfo, n: Vector) -> Color {
     light_loop(ctx, info, n, |_, _| Color::BLACK).irradiance
 }

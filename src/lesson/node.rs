@@ -88,12 +88,20 @@ impl Node {
     }
 
     /// The first phase of [`Node::intersect`] ([`Geometry::hit`] in canonical space): where the ray meets
-    /// the node, with the surface perhaps not yet described.
+    /// the node, with the surface not yet described.
+    #[inline]
     pub fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         match &self.transform {
             None => self.geometry.hit(ray, t_max),
-            Some(t) => self.geometry.hit(&t.ray_to_canonical(ray), t_max),
+            Some(t) => self.hit_transformed(t, ray, t_max),
         }
+    }
+
+    /// [`Node::hit`] through the node's transform. Kept out of the node loop, so that a scene of
+    /// untransformed nodes does not prepare every ray for a transform it never applies.
+    #[inline(never)]
+    fn hit_transformed(&self, t: &Transform, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.geometry.hit(&t.ray_to_canonical(ray), t_max)
     }
 
     /// The second phase: the surface at a hit that [`Node::hit`] found for the same ray, in world space.
@@ -105,11 +113,18 @@ impl Node {
     }
 
     /// Whether the ray hits this node before `t_max` (shadow rays).
+    #[inline]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         match &self.transform {
             None => self.geometry.intersects(ray, t_max),
-            Some(t) => self.geometry.intersects(&t.ray_to_canonical(ray), t_max),
+            Some(t) => self.intersects_transformed(t, ray, t_max),
         }
+    }
+
+    /// [`Node::intersects`] through the node's transform, out of the node loop as [`Node::hit_transformed`].
+    #[inline(never)]
+    fn intersects_transformed(&self, t: &Transform, ray: &Ray, t_max: f32) -> bool {
+        self.geometry.intersects(&t.ray_to_canonical(ray), t_max)
     }
 
     /// The node's bounding box in world space, if its geometry is bounded.
@@ -162,24 +177,29 @@ impl Closest {
         let earlier = self.best.as_ref().is_some_and(|&(_, b)| i < b);
         let limit = if earlier { self.t_max.next_up() } else { self.t_max };
         if let Some(hit) = nodes[i].hit(ray, limit) {
-            self.t_max = hit.distance();
+            self.t_max = hit.distance;
             self.best = Some((hit, i));
         }
     }
 
-    /// The winner's surface (the second phase).
-    fn finish<'a>(self, nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
-        let (hit, i) = self.best?;
-        let node = &nodes[i];
-        node.surface(ray, &hit).map(|info| (info, node))
+    /// The winner and where it was hit.
+    fn finish(self, nodes: &[Node]) -> Option<(Hit, &Node)> {
+        self.best.map(|(hit, i)| (hit, &nodes[i]))
     }
 }
 
-/// The closest node hit by the ray, testing every node in turn (the slides' loop).
-pub fn closest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
-    let mut closest = Closest::new();
-    (0..nodes.len()).for_each(|i| closest.consider(nodes, i, ray));
-    closest.finish(nodes, ray)
+/// The nearest node hit by the ray, testing every node in turn (the slides' loop). In the scene's order a
+/// later node wins only when it is strictly closer, so the ties go to the earlier node without a test.
+pub fn nearest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
+    let mut nearest = None;
+    let mut t_max = f32::INFINITY;
+    for node in nodes {
+        if let Some(hit) = node.hit(ray, t_max) {
+            t_max = hit.distance;
+            nearest = Some((hit, node));
+        }
+    }
+    nearest
 }
 
 impl NodeTree {
@@ -205,8 +225,8 @@ impl NodeTree {
         Some(NodeTree { bvh, bounded, unbounded })
     }
 
-    /// The closest of `nodes` (the ones the tree was built over) hit by the ray.
-    pub fn closest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
+    /// The nearest of `nodes` (the ones the tree was built over) hit by the ray, and where.
+    pub fn nearest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
         let mut closest = Closest::new();
         for &i in &self.unbounded {
             closest.consider(nodes, i as usize, ray);
@@ -218,7 +238,7 @@ impl NodeTree {
             *t_max = closest.t_max;
             false
         });
-        closest.finish(nodes, ray)
+        closest.finish(nodes)
     }
 
     /// Whether any of `nodes` is hit before `t_max` (shadow rays).

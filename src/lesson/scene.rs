@@ -16,10 +16,10 @@ use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::environment::Environment;
 use crate::lesson::error::Result;
-use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::geometry::{Hit, IntersectionInfo};
 use crate::lesson::light::PointLight;
 use crate::lesson::math::{Vector, max_abs};
-use crate::lesson::node::{Node, NodeTree, closest_hit_linear};
+use crate::lesson::node::{Node, NodeTree, nearest_hit_linear};
 use crate::lesson::observer::{Observer, Stop};
 use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::ray::{Ray, spawn_point};
@@ -171,13 +171,20 @@ impl Scene {
         format!("{} #{}", node.geometry.name(), index.map_or("?".to_string(), |i| i.to_string()))
     }
 
-    /// The closest node hit by the ray, and where: the nearest hit is found first ([`Node::hit`]), and only
-    /// the winner's surface is described ([`Node::surface`]).
-    pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
+    /// The nearest node hit by the ray, and where (the first phase of [`Scene::closest_hit`]: [`Node::hit`]
+    /// on every node, or on the nodes the node tree leads the ray to).
+    pub fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, &Node)> {
         match &self.node_tree {
-            Some(tree) => tree.closest_hit(&self.nodes, ray),
-            None => closest_hit_linear(&self.nodes, ray),
+            Some(tree) => tree.nearest_hit(&self.nodes, ray),
+            None => nearest_hit_linear(&self.nodes, ray),
         }
+    }
+
+    /// The closest node hit by the ray, and its surface there: the nearest hit is found first
+    /// ([`Scene::nearest_hit`]), and only the winner's surface is described ([`Node::surface`]).
+    pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
+        let (hit, node) = self.nearest_hit(ray)?;
+        Some((node.surface(ray, &hit)?, node))
     }
 
     /// Whether anything is hit by the ray before `t_max`.
@@ -320,6 +327,7 @@ impl<'a> TraceContext<'a> {
     }
 
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
+    #[inline]
     pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
         self.counters.shadow_rays += 1;
         let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);

@@ -321,7 +321,7 @@ impl Geometry for Mesh {
                     if hits.before(lane, *t_max) && !self.culled(group + lane, ray.dir) {
                         let (t, coords) = hits.get(lane);
                         *t_max = t;
-                        best = Some(Hit::Pending { distance: t, part: (group + lane) as u32, coords });
+                        best = Some(Hit { distance: t, part: (group + lane) as u32, coords });
                     }
                 }
             }
@@ -331,10 +331,7 @@ impl Geometry for Mesh {
     }
 
     fn surface(&self, _ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        match *hit {
-            Hit::Pending { distance, part, coords } => Some(self.info(part as usize, distance, coords)),
-            Hit::Complete(info) => Some(info),
-        }
+        Some(self.info(hit.part as usize, hit.distance, hit.coords))
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

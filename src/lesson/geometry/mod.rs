@@ -55,24 +55,31 @@ pub struct IntersectionInfo {
 #[derive(Clone, Copy, Debug)]
 pub struct TexCoords {
     args: [f32; 3],
-    compute: fn([f32; 3]) -> (f32, f32),
+    /// `None` when `args` hold (u, v) themselves: reading them then costs no call.
+    compute: Option<UvFunction>,
 }
+
+/// How a shape makes u/v of up to three numbers (see [`TexCoords::deferred`]).
+pub type UvFunction = fn([f32; 3]) -> (f32, f32);
 
 impl TexCoords {
     /// The coordinates (u, v).
     pub fn new(u: f32, v: f32) -> TexCoords {
-        TexCoords { args: [u, v, 0.0], compute: |[u, v, _]| (u, v) }
+        TexCoords { args: [u, v, 0.0], compute: None }
     }
 
     /// Coordinates that `compute(args)` gives, computed only when read.
-    pub fn deferred(args: [f32; 3], compute: fn([f32; 3]) -> (f32, f32)) -> TexCoords {
-        TexCoords { args, compute }
+    pub fn deferred(args: [f32; 3], compute: UvFunction) -> TexCoords {
+        TexCoords { args, compute: Some(compute) }
     }
 
     /// (u, v).
     #[inline]
     pub fn get(&self) -> (f32, f32) {
-        (self.compute)(self.args)
+        match self.compute {
+            None => (self.args[0], self.args[1]),
+            Some(compute) => compute(self.args),
+        }
     }
 }
 
@@ -116,36 +123,31 @@ impl IntersectionInfo {
     }
 }
 
-/// What the first, cheap phase of a closest-hit search found on a shape (see [`Geometry::hit`]).
+/// What the first, cheap phase of a closest-hit search found on a shape (see [`Geometry::hit`]): the ray
+/// parameter, and what the shape needs to describe its surface there later: which part of it was hit (a
+/// triangle, a face) and up to three coordinates on that part (barycentric coordinates).
 ///
 /// The scene looks for the nearest hit over all its nodes with [`Geometry::hit`] and describes only the
 /// winner's surface ([`Geometry::surface`]): the normal, u/v (spherical coordinates cost two inverse
 /// trigonometric functions) and the error bound are computed once per ray instead of once per candidate
-/// (pbrt's two-phase intersection).
-#[derive(Clone, Copy, Debug)]
-pub enum Hit {
-    /// The hit with its surface already described (what the default [`Geometry::hit`] returns).
-    Complete(IntersectionInfo),
-    /// Only the ray parameter, and what the shape needs to describe the surface later: which part of it was
-    /// hit (a triangle, a face) and up to three coordinates on that part (barycentric coordinates).
-    Pending {
-        /// The ray parameter of the hit.
-        distance: f32,
-        /// Which part was hit: a mesh's triangle, the axis of a cube's face; 0 for a shape of one part.
-        part: u32,
-        /// What the shape keeps to describe the surface later: a triangle's barycentric coordinates, a
-        /// plane's x and z; unused entries are 0.
-        coords: [f32; 3],
-    },
+/// (pbrt's two-phase intersection). A `Hit` is kept small (20 bytes) because the search copies one for every
+/// candidate that comes closer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// The ray parameter of the hit.
+    pub distance: f32,
+    /// Which part was hit: a mesh's triangle, the axis of a cube's face; 0 for a shape of one part.
+    pub part: u32,
+    /// What the shape keeps to describe the surface later: a triangle's barycentric coordinates, a plane's x
+    /// and z; unused entries are 0.
+    pub coords: [f32; 3],
 }
 
 impl Hit {
-    /// The ray parameter of the hit.
-    pub fn distance(&self) -> f32 {
-        match self {
-            Hit::Complete(info) => info.distance,
-            Hit::Pending { distance, .. } => *distance,
-        }
+    /// A hit at ray parameter `distance`, on part 0, with no coordinates: all a shape needs when it finds
+    /// its surface from the distance alone.
+    pub fn at(distance: f32) -> Hit {
+        Hit { distance, part: 0, coords: [0.0; 3] }
     }
 }
 
@@ -153,29 +155,26 @@ impl Hit {
 ///
 /// A new shape needs [`intersect`](Geometry::intersect) (its closest hit, described with
 /// [`IntersectionInfo::new`]) and [`bounds`](Geometry::bounds) (or `None`); the other methods have correct
-/// defaults. A shape whose surface description is expensive may also override [`hit`](Geometry::hit), to
-/// return [`Hit::Pending`] with just the ray parameter, together with [`surface`](Geometry::surface), which
-/// finishes it; if it overrides `hit` alone, the default `surface` intersects the ray again, which is
-/// correct but slower.
+/// defaults, which call `intersect`: for the closest hit of a ray, once for the search and once more for
+/// the surface of the winner. A shape whose surface description is expensive (or that wants to avoid the
+/// second intersection) overrides [`hit`](Geometry::hit), to return just the ray parameter and what it needs
+/// later, together with [`surface`](Geometry::surface), which finishes it.
 pub trait Geometry: Send + Sync {
     /// The closest hit with ray parameter in (0, `t_max`), if any. The ray direction need not be unit
     /// (rays reach here through a node's inverse transform); `distance` is the ray parameter either way.
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo>;
 
-    /// The first phase of a closest-hit search: the same hit as `intersect`, possibly without its surface
-    /// description (see [`Hit`]).
+    /// The first phase of a closest-hit search: where the ray meets the shape, the same hit as `intersect`,
+    /// without its surface description (see [`Hit`]).
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        self.intersect(ray, t_max).map(Hit::Complete)
+        self.intersect(ray, t_max).map(|info| Hit::at(info.distance))
     }
 
     /// The second phase: the surface description of a hit that [`hit`](Geometry::hit) found for the same
     /// ray. `None` only if the shape cannot find the hit again.
-    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        match hit {
-            Hit::Complete(info) => Some(*info),
-            // The closest hit in (0, inf) is the closest one in (0, t_max) that `hit` found.
-            Hit::Pending { .. } => self.intersect(ray, f32::INFINITY),
-        }
+    fn surface(&self, ray: &Ray, _hit: &Hit) -> Option<IntersectionInfo> {
+        // The closest hit in (0, inf) is the closest one in (0, t_max) that `hit` found.
+        self.intersect(ray, f32::INFINITY)
     }
 
     /// Whether anything is hit with ray parameter in (0, `t_max`) (shadow rays). Shapes with a cheaper

@@ -38,18 +38,18 @@ impl Geometry for Plane {
         if ip.x.abs() >= self.limit || ip.z.abs() >= self.limit {
             return None;
         }
-        Some(Hit::Pending { distance: t, part: 0, coords: [ip.x, ip.z, 0.0] })
+        Some(Hit { distance: t, part: 0, coords: [ip.x, ip.z, 0.0] })
     }
 
     fn surface(&self, _ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        match *hit {
-            // The hit lies on the plane by definition: its y is the plane's, so only x and z carry rounding
-            // error.
-            Hit::Pending { distance, coords: [x, z, _], .. } => {
-                Some(IntersectionInfo::new(Vector::new(x, self.y, z), Vector::Y, distance, (x, z)))
-            }
-            Hit::Complete(info) => Some(info),
-        }
+        // The hit lies on the plane by definition: its y is the plane's, so only x and z carry rounding error.
+        let [x, z, _] = hit.coords;
+        Some(IntersectionInfo::new(Vector::new(x, self.y, z), Vector::Y, hit.distance, (x, z)))
+    }
+
+    /// The first phase alone: a shadow ray needs no surface.
+    fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        self.hit(ray, t_max).is_some()
     }
 
     fn bounds(&self) -> Option<Aabb> {

@@ -107,14 +107,11 @@ impl Geometry for Prism {
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let (t_in, face_in, t_out, face_out) = self.clip(ray)?;
         let (t, face) = if t_in > 0.0 { (t_in, face_in) } else { (t_out, face_out) };
-        (t > 0.0 && t < t_max).then_some(Hit::Pending { distance: t, part: face as u32, coords: [0.0; 3] })
+        (t > 0.0 && t < t_max).then_some(Hit { part: face as u32, ..Hit::at(t) })
     }
 
     fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        match *hit {
-            Hit::Pending { distance, part, .. } => Some(self.info(ray, distance, part as usize)),
-            Hit::Complete(info) => Some(info),
-        }
+        Some(self.info(ray, hit.distance, hit.part as usize))
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

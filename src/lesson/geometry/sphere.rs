@@ -74,18 +74,18 @@ fn spherical_uv([x, y, z]: [f32; 3]) -> (f32, f32) {
 
 impl Geometry for Sphere {
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        self.hit(ray, t_max).map(|hit| self.info(ray, hit.distance()))
+        self.hit(ray, t_max).map(|hit| self.info(ray, hit.distance))
     }
 
     /// Only the ray parameter: the normal waits for the winner, and its u/v for a shader that reads them.
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let (t0, t1) = self.roots(ray)?;
         let t = if t0 > 0.0 { t0 } else { t1 };
-        (t > 0.0 && t < t_max).then_some(Hit::Pending { distance: t, part: 0, coords: [0.0; 3] })
+        (t > 0.0 && t < t_max).then_some(Hit::at(t))
     }
 
     fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        Some(self.info(ray, hit.distance()))
+        Some(self.info(ray, hit.distance))
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {

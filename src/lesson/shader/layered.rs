@@ -129,12 +129,13 @@ impl Shader for Layered {
         // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
         let mut res = Color::BLACK;
         let mut uncovered = Color::WHITE;
+        let mut layer_ray = *ray;
         for layer in self.layers.iter().rev() {
             let blend = layer.blend_at(ray, info);
             let weight = layer_weight(uncovered, blend);
             let strength = weight.max_channel();
             if strength > 0.0 || self.every_layer {
-                let layer_ray = Ray { weight: ray.weight * strength, ..*ray };
+                layer_ray.weight = ray.weight * strength;
                 res += ctx.shade_layer(layer, &layer_ray, info, weight);
             }
             uncovered *= Color::WHITE - blend;
