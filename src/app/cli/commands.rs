@@ -11,7 +11,6 @@ use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::save_atomically;
 use clap::ValueEnum;
 use std::ffi::OsString;
-use std::path::Path;
 use std::time::Instant;
 
 /// `--trace-pixel`: renders only `pixel` of the example's picture, recording its rays, and describes the
@@ -29,10 +28,7 @@ pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Res
     let start = Instant::now();
     let picture = render_view(&scene, &settings, view)?;
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
-    let path = match &args.common.output {
-        Some(path) => path.clone(),
-        None => Path::new("out").join(format!("{name}-{label}.png")),
-    };
+    let path = args.output_path_for(name, &format!("-{label}"));
     save_atomically(&path, |tmp| picture.image.save_with_format(tmp, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: view {label}, {}x{}, {:.3} s -> {}\n{name}: scale: {}\n",
@@ -93,7 +89,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     let (picture, diff) = a_b_difference(pa, pb).map_err(|_| {
         Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
     })?;
-    let path = a.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}-side-by-side.png")));
+    let path = a.output_path_for(name, "-side-by-side");
     save_atomically(&path, |tmp| picture.save_with_format(tmp, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",
