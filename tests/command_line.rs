@@ -399,3 +399,27 @@ fn fov_axis_vertical_keeps_the_height_of_the_picture_when_the_aspect_ratio_chang
         assert!(d.max_diff <= 1, "{axis}: {d:?}");
     }
 }
+
+/// README step 3: comparing another version with a reference, without `-o`, keeps the render a student made
+/// before at `out/EXAMPLE.png`; the compared picture and its heat map get names of their own.
+#[test]
+fn compare_without_output_keeps_the_earlier_render() {
+    let dir = scratch("keeps-earlier");
+    let _ = std::fs::remove_dir_all(dir.join("out"));
+    let run = |args: &[&str]| {
+        let size = ["--width", "64", "--height", "48", "-q"];
+        let out = std::process::Command::new(common::example_binary("fresnel"))
+            .args(size.iter().chain(args))
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{args:?}: {}", text(&out.stderr));
+    };
+    run(&[]);
+    let kept = std::fs::read(dir.join("out/fresnel.png")).unwrap();
+    let reference = root().join("target/command-line/keeps-earlier-reference.png");
+    run(&["--spp", "1", "-o", reference.to_str().unwrap()]);
+    run(&["--fresnel", "exact", "--compare", reference.to_str().unwrap()]);
+    assert_eq!(std::fs::read(dir.join("out/fresnel.png")).unwrap(), kept, "the earlier render was replaced");
+    assert!(dir.join("out/fresnel-compared.png").exists() && dir.join("out/fresnel-compared-diff.png").exists());
+}

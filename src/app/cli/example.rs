@@ -249,9 +249,10 @@ impl<E: Example> Cli<E> {
     }
 
     /// Where the picture of the example called `name` goes: `--output`, or `out/<picture name>.png` (see
-    /// [`Example::picture_name`]).
+    /// [`Example::picture_name`]); with `--compare`, `out/<picture name>-compared.png`, so that comparing
+    /// another version with a reference never replaces the render a student kept at `out/<picture name>.png`.
     pub fn output_path(&self, name: &str) -> PathBuf {
-        self.output_path_for(name, "")
+        self.output_path_for(name, if self.common.compare.is_some() { "-compared" } else { "" })
     }
 
     /// Where a picture of the example called `name` goes: `--output`, or `out/<picture name><suffix>.png`

@@ -69,7 +69,7 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,
     /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
-    /// [default: out/EXAMPLE.png]
+    /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
     /// Print nothing but errors: no progress bar, no summary.
@@ -77,7 +77,8 @@ pub struct CommonArgs {
     pub quiet: bool,
     /// Compare the picture with a reference (checked before the render): print RMSE, PSNR, the largest
     /// difference and whether it is within the regression tests' tolerance, and write a heat map of the
-    /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). An 8-bit reference
+    /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). Without --output the
+    /// picture goes to out/EXAMPLE-compared.png: out/EXAMPLE.png, an earlier render, stays. An 8-bit reference
     /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too.
     #[arg(long, value_name = "REFERENCE", help_heading = COMMON)]
     pub compare: Option<PathBuf>,
