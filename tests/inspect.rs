@@ -281,6 +281,11 @@ fn side_by_side_of_an_example_writes_three_panels_of_its_size() {
     let out = image::open(&path).unwrap().to_rgb8();
     assert_eq!(out.width(), 3 * 64);
     assert!(out.height() > 48);
+    // The difference panel is --compare's heat map: white at the largest difference, and its colour bar
+    // (black to white) under it.
+    let heat = |x: u32, y: u32| out.get_pixel(2 * 64 + x, y).0;
+    assert!((0..64).any(|x| (0..48).any(|y| heat(x, y) == [255, 255, 255])), "no white at the largest difference");
+    assert!(heat(0, 48 + 6).iter().all(|&v| v < 40) && heat(63, 48 + 6).iter().all(|&v| v > 215), "no colour bar");
     let bad = lecture6::app::cli::commands::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
     assert!(bad.is_err(), "A and B of different sizes cannot be compared");
 }

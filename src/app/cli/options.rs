@@ -132,6 +132,8 @@ pub struct CommonArgs {
     pub view: Option<DebugView>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
+    /// The heat map is --compare's: black where A and B agree, white at their largest difference, with its
+    /// colour bar.
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
     pub side_by_side: Option<String>,
     /// Open a window that shows the picture building up, with the options as controls and a camera that
