@@ -15,7 +15,7 @@ use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::lesson::camera::Camera;
 use crate::lesson::error::Result;
 use crate::lesson::frame::keeps_linear_light;
-use crate::lesson::render::{RenderSettings, thread_pool};
+use crate::lesson::render::thread_pool;
 use eframe::egui;
 use std::ffi::OsString;
 use std::sync::Arc;
