@@ -62,7 +62,7 @@ fn main() {
     // `cargo bench` passes `--bench`; everything else is the example's own options.
     let argv = std::env::args().skip(1).filter(|a| a != "--bench");
     let args = Cli::<Options>::parse_args("photon_map", argv).unwrap_or_else(|e| e.exit());
-    let mut scene = args.prepare_scene().unwrap_or_else(|e| panic!("{e}"));
+    let (mut scene, _) = args.prepare().unwrap_or_else(|e| panic!("{e}"));
     scene.photon_map = None;
     let settings = scene.photons;
     let seed = args.common.seed;

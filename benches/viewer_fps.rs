@@ -35,8 +35,7 @@ fn camera_at(start: &Camera, i: u32) -> Camera {
 
 fn measure<E: Example>(name: &str, frames: u32, threads: usize) {
     let cli: Cli<E> = Cli::parse_args(name, ["--quiet", "--threads", &threads.to_string()]).expect("valid arguments");
-    let mut full = cli.settings();
-    let base = cli.prepare_scene_and_settings(&mut full).expect("the example builds");
+    let (base, full) = cli.prepare().expect("the example builds");
     let settings = preview_settings(&full);
     let pool = thread_pool(Some(threads)).expect("a thread pool");
     let cancel = AtomicBool::new(false);

@@ -6,6 +6,9 @@
 //!
 //!     cargo run --release --example scene_file -- examples/data/fresnel.qdmg
 //!
+//! A scene file's picture is named after it (`beer.qdmg` renders to `out/beer.png`; `-o` says otherwise);
+//! the bundled `examples/data/fresnel.qdmg`, the default, renders to `out/scene_file.png`.
+//!
 //! The frame size, the camera, the lights, the environment and the ray depth come from the file
 //! (`GlobalSettings`, `Camera`, `PointLight`, `CubemapEnvironment`); `--width`, `--height`, `--env` and
 //! `--max-depth` override them. Without `--spp` the file's `wantAA` decides: the course's adaptive
@@ -28,11 +31,14 @@ use lecture6::app::scene_file::{self, LoadOptions};
 use lecture6::lesson::render::RenderSettings;
 use lecture6::prelude::*;
 
+/// The scene file rendered when none is given: the `fresnel` example's scene.
+const DEFAULT_FILE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/data/fresnel.qdmg");
+
 /// Renders a scene file of the course's format (.qdmg).
 #[derive(clap::Args, Clone, Debug)]
 pub struct Options {
     /// The scene file.
-    #[arg(value_name = "FILE.qdmg", default_value = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/data/fresnel.qdmg"))]
+    #[arg(value_name = "FILE.qdmg", default_value = DEFAULT_FILE)]
     pub file: PathBuf,
     /// Skip the elements of later lectures (RectLight, CSG, Heightfield, Const, bump maps) with a warning,
     /// instead of refusing the file, so that the rest renders.
@@ -68,6 +74,17 @@ impl Example for Options {
             settings.adaptive_aa |= file.adaptive_aa;
         }
         Ok(file.scene)
+    }
+
+    /// The file's name: `beer.qdmg` renders to `out/beer.png` (and its views to `out/beer-depth.png`, ...).
+    /// The bundled `examples/data/fresnel.qdmg`, given or not, keeps the example's own name,
+    /// `out/scene_file.png`, so that it does not overwrite the `fresnel` example's picture.
+    fn picture_name(&self, program: &str) -> String {
+        let bundled = std::fs::canonicalize(&self.file).ok() == std::fs::canonicalize(DEFAULT_FILE).ok();
+        match self.file.file_stem() {
+            Some(stem) if !bundled => stem.to_string_lossy().into_owned(),
+            _ => program.to_string(),
+        }
     }
 }
 

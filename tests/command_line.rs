@@ -182,7 +182,7 @@ fn help_shows_each_examples_own_defaults() {
     };
     let photon_map = help("photon_map");
     assert!(!photon_map.contains("the scene's own"), "{photon_map}");
-    let scene = common::parse::<photon_map::Options>(&[]).prepare_scene().unwrap();
+    let (scene, _) = common::parse::<photon_map::Options>(&[]).prepare().unwrap();
     for value in [scene.photons.count, scene.photons.k, scene.max_depth] {
         assert!(photon_map.contains(&format!("[default: {value}]")), "{value} missing: {photon_map}");
     }
@@ -198,7 +198,7 @@ fn help_shows_each_examples_own_defaults() {
 fn an_example_can_tell_whether_spp_was_given() {
     let cli = common::parse::<fresnel::Options>(&[]);
     assert_eq!(cli.common.spp, None);
-    assert_eq!(cli.settings().spp, 5, "the example's default");
+    assert_eq!(cli.prepare().unwrap().1.spp, 5, "the example's default");
     assert_eq!(common::parse::<fresnel::Options>(&["--spp", "1"]).common.spp, Some(1));
 }
 
@@ -379,7 +379,7 @@ fn fov_axis_vertical_keeps_the_height_of_the_picture_when_the_aspect_ratio_chang
     let top = |args: &[&str], width: u32, height: u32| {
         let (width_text, height_text) = (width.to_string(), height.to_string());
         let size = [&["--width", &width_text, "--height", &height_text][..], args].concat();
-        let scene = common::parse::<fresnel::Options>(&size).prepare_scene().unwrap();
+        let (scene, _) = common::parse::<fresnel::Options>(&size).prepare().unwrap();
         scene.camera.frame(width, height).get_screen_ray(width as f32 / 2.0, 0.0).dir
     };
     let angle = |a: lecture6::Vector, b: lecture6::Vector| a.cross(b).length().atan2(a.dot(b)).to_degrees();
@@ -398,4 +398,28 @@ fn fov_axis_vertical_keeps_the_height_of_the_picture_when_the_aspect_ratio_chang
         let d = lecture6::instruments::compare::difference(&plain.to_rgb8(), &other.to_rgb8()).unwrap();
         assert!(d.max_diff <= 1, "{axis}: {d:?}");
     }
+}
+
+/// README step 3: comparing another version with a reference, without `-o`, keeps the render a student made
+/// before at `out/EXAMPLE.png`; the compared picture and its heat map get names of their own.
+#[test]
+fn compare_without_output_keeps_the_earlier_render() {
+    let dir = scratch("keeps-earlier");
+    let _ = std::fs::remove_dir_all(dir.join("out"));
+    let run = |args: &[&str]| {
+        let size = ["--width", "64", "--height", "48", "-q"];
+        let out = std::process::Command::new(common::example_binary("fresnel"))
+            .args(size.iter().chain(args))
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{args:?}: {}", text(&out.stderr));
+    };
+    run(&[]);
+    let kept = std::fs::read(dir.join("out/fresnel.png")).unwrap();
+    let reference = root().join("target/command-line/keeps-earlier-reference.png");
+    run(&["--spp", "1", "-o", reference.to_str().unwrap()]);
+    run(&["--fresnel", "exact", "--compare", reference.to_str().unwrap()]);
+    assert_eq!(std::fs::read(dir.join("out/fresnel.png")).unwrap(), kept, "the earlier render was replaced");
+    assert!(dir.join("out/fresnel-compared.png").exists() && dir.join("out/fresnel-compared-diff.png").exists());
 }

@@ -527,7 +527,7 @@ fn glass_without_dispersion_renders_as_the_constant_index_glass() {
     // The same scene traced in 8 wavelength passes gives the same picture, bit for bit.
     let scene = args.example.scene().unwrap();
     let plan = SpectralPlan::Passes(bands(8, Illuminant::D65));
-    let (passes, _) = render_with_plan(&scene, &args.settings(), plan).unwrap();
+    let (passes, _) = render_with_plan(&scene, &args.prepare().unwrap().1, plan).unwrap();
     assert!(white == passes, "V_d = inf traced in 8 passes differs from the white render");
     // A little dispersion does change the picture (so the comparison above could fail).
     let (dispersive, _) = parse(&["--glass", "abbe", "--nd", "1.7", "--abbe", "60", "--spp", "1"]).render().unwrap();

@@ -235,7 +235,7 @@ fn the_two_environment_kinds_are_equally_close_to_the_sky_they_sample() {
     let render = |sky: Arc<dyn Environment>| {
         let mut scene = spherical.example.scene().unwrap();
         scene.environment = Some(sky);
-        lecture6::lesson::render::render(&scene, &spherical.settings()).unwrap().0
+        lecture6::lesson::render::render(&scene, &spherical.prepare().unwrap().1).unwrap().0
     };
     let truth = render(Arc::new(SkyFunction));
     let from_image = render(Arc::new(SphericalEnvironment::load(&sky_path()).unwrap()));

@@ -136,3 +136,49 @@ fn look_at_points_the_centre_of_the_picture_at_the_target() {
         assert!(top.dir.y > bottom.dir.y);
     }
 }
+
+/// The homework of the API page (docs/homework-api.md), the file docs/homework_scene.rs, as a student
+/// copies it to examples/hw1.rs.
+#[path = "../docs/homework_scene.rs"]
+#[allow(dead_code)] // its `main`, which `cargo run --example` calls
+mod homework_scene;
+
+/// The API page's homework is the file as it is, it renders without NaN, and its own shader shows exactly
+/// its two band colours, lit (each pixel of the ball is one of them times the light, a grey).
+#[test]
+fn the_api_pages_homework_renders_and_its_own_shader_shows_its_bands() {
+    let page = std::fs::read_to_string(root().join("docs/homework-api.md")).unwrap();
+    assert!(page.contains(include_str!("../docs/homework_scene.rs")), "the page shows docs/homework_scene.rs as it is");
+    let cli = common::parse::<homework_scene::Options>(&["--width", "160", "--height", "120", "--spp", "1"]);
+    let (scene, settings) = cli.prepare().unwrap();
+    let (frame, stats) = lecture6::lesson::render::render(&scene, &settings).unwrap();
+    assert_eq!(stats.counters.non_finite_samples, 0);
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let bands = scene.nodes.iter().position(|n| n.name.as_deref() == Some("bands")).unwrap();
+    let (a, b) = (Color::new(0.9, 0.5, 0.1), Color::new(0.1, 0.3, 0.8));
+    // The pixel is `band * grey`: its channels over the band's are equal.
+    let is_lit = |c: Color, band: Color| {
+        let r = c.0 / band.0;
+        r.min_element() > 0.0 && r.max_element() - r.min_element() <= 1e-4 * r.max_element()
+    };
+    let (mut seen_a, mut seen_b) = (0, 0);
+    for y in 0..settings.height {
+        for x in 0..settings.width {
+            let ray = camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5);
+            match scene.closest_hit(&ray) {
+                Some((_, node)) if std::ptr::eq(node, &scene.nodes[bands]) => {
+                    let c = frame.get(x, y);
+                    if is_lit(c, a) {
+                        seen_a += 1;
+                    } else if is_lit(c, b) {
+                        seen_b += 1;
+                    } else {
+                        panic!("pixel ({x}, {y}) of the bands ball is {c:?}, neither band lit");
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    assert!(seen_a > 20 && seen_b > 20, "the ball shows {seen_a} pixels of one band and {seen_b} of the other");
+}

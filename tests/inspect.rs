@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract};
+use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract, scene_file};
 use lecture6::app::cli::Example;
 use lecture6::instruments::debug_view::{DebugView, render_view};
 use lecture6::instruments::ray_tree::{self, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
@@ -37,7 +37,9 @@ fn check_scene_trees(scene: &Scene, settings: &RenderSettings, pixels: &[(u32, u
         let traced = ray_tree::trace(scene, settings, PixelPos { x, y }).unwrap();
         assert_eq!(traced.color, frame.get(x, y), "{what} pixel ({x}, {y}) alone differs from the frame's");
         let tree = traced.tree;
-        assert_eq!(tree.roots.len(), settings.spp as usize, "one camera ray per sample");
+        // One camera ray per sample; a pixel that adaptive anti-aliasing refines has five.
+        let samples = if settings.adaptive_aa { vec![1, 5] } else { vec![settings.spp as usize] };
+        assert!(samples.contains(&tree.roots.len()), "{what} ({x}, {y}): {} camera rays", tree.roots.len());
         let mut mean = Color::BLACK;
         for &root in &tree.roots {
             let explained = tree.explained(root, Color::WHITE);
@@ -242,9 +244,11 @@ fn debug_views_have_their_documented_ranges() {
 #[test]
 fn the_rays_view_shows_what_adaptive_depth_control_saves() {
     let cli = common::parse::<fresnel::Options>(&["--width", "48", "--height", "36"]);
-    let adaptive = render_view(&cli.prepare_scene().unwrap(), &cli.settings(), DebugView::Rays).unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
+    let adaptive = render_view(&scene, &settings, DebugView::Rays).unwrap();
     let cli = common::parse::<fresnel::Options>(&["--width", "48", "--height", "36", "--exhaustive"]);
-    let exhaustive = render_view(&cli.prepare_scene().unwrap(), &cli.settings(), DebugView::Rays).unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
+    let exhaustive = render_view(&scene, &settings, DebugView::Rays).unwrap();
     assert!(exhaustive.range.1 > adaptive.range.1, "{:?} vs {:?}", exhaustive.range, adaptive.range);
 }
 
@@ -277,6 +281,46 @@ fn side_by_side_of_an_example_writes_three_panels_of_its_size() {
     let out = image::open(&path).unwrap().to_rgb8();
     assert_eq!(out.width(), 3 * 64);
     assert!(out.height() > 48);
+    // The difference panel is --compare's heat map: white at the largest difference, and its colour bar
+    // (black to white) under it.
+    let heat = |x: u32, y: u32| out.get_pixel(2 * 64 + x, y).0;
+    assert!((0..64).any(|x| (0..48).any(|y| heat(x, y) == [255, 255, 255])), "no white at the largest difference");
+    assert!(heat(0, 48 + 6).iter().all(|&v| v < 40) && heat(63, 48 + 6).iter().all(|&v| v > 215), "no colour bar");
     let bad = lecture6::app::cli::commands::side_by_side::<fresnel::Options>("fresnel", &args, "--width 32");
     assert!(bad.is_err(), "A and B of different sizes cannot be compared");
+}
+
+/// A small scene file with its own frame size (not 640 x 480) and the course's adaptive anti-aliasing.
+const OWN_SIZE_AND_AA: &str = "GlobalSettings {\n frameWidth 96\n frameHeight 60\n wantAA true\n ambientLight (0.2, 0.2, 0.2)\n}\n\
+    Camera {\n position (0, 10, -60)\n pitch -10\n fov 60\n aspectRatio 1.6\n}\n\
+    PointLight {\n pos (-30, 60, -40)\n power 5000\n}\nSphere ball {\n R 10\n}\nPlane floor {\n y -10\n}\n\
+    Lambert red {\n color (0.9, 0.2, 0.1)\n}\nLambert grey {\n color (0.5, 0.5, 0.5)\n}\n\
+    Node {\n geometry ball\n shader red\n}\nNode {\n geometry floor\n shader grey\n}\n";
+
+/// The instruments see the scene file's own frame size and anti-aliasing, exactly as the render: the settings
+/// come from one place ([`Cli::prepare`]), the depth view has the file's size, and the ray tree of a pixel
+/// the adaptive pass refines holds its five camera rays and gives the rendered pixel's colour.
+#[test]
+fn the_instruments_use_a_scene_files_own_size_and_anti_aliasing() {
+    let file = common::temp_file("inspect", "own-size-and-aa.qdmg", OWN_SIZE_AND_AA);
+    let cli = common::parse::<scene_file::Options>(&[file.to_str().unwrap()]);
+    let (scene, settings) = cli.prepare().unwrap();
+    assert_eq!((settings.width, settings.height, settings.spp, settings.adaptive_aa), (96, 60, 1, true));
+    let (frame, _) = cli.render().unwrap();
+    assert_eq!((frame.width, frame.height), (96, 60));
+    let depth = render_view(&scene, &settings, DebugView::Depth).unwrap();
+    assert_eq!(depth.image.dimensions(), (96, 60));
+    // Which pixels the adaptive pass refines: those of the single-sample frame that differ from a neighbour.
+    let (single, _) = render(&scene, &RenderSettings { adaptive_aa: false, ..settings }).unwrap();
+    let marks = lecture6::lesson::adaptive_aa::marked(&single);
+    let pixel = |i: usize| (i as u32 % 96, i as u32 / 96);
+    let refined = pixel(marks.iter().position(|&m| m).expect("the ball's edge is refined"));
+    let plain = pixel(marks.iter().position(|&m| !m).expect("the sky is not"));
+    let trees = check_scene_trees(&scene, &settings, &[refined, plain], "own-size-and-aa.qdmg");
+    assert_eq!((trees[0].roots.len(), trees[1].roots.len()), (5, 1), "refined {refined:?}, plain {plain:?}");
+    // The rays view counts the refined pixel's extra samples too.
+    let rays = render_view(&scene, &settings, DebugView::Rays).unwrap();
+    assert_eq!(rays.image.dimensions(), (96, 60));
+    let single_rays = render_view(&scene, &RenderSettings { adaptive_aa: false, ..settings }, DebugView::Rays).unwrap();
+    assert!(rays.range.1 > single_rays.range.1, "{:?} against {:?}", rays.range, single_rays.range);
 }

@@ -230,7 +230,7 @@ fn in_prepared_scene(prepared: &Scene, p: Vector) -> Vector {
 fn caustic_chroma(args: &[&str]) -> f32 {
     use photon_map::{GLASS_CENTER, LIGHT};
     let axis = GLASS_CENTER - LIGHT;
-    let scene = common::parse::<photon_map::Options>(args).prepare_scene().unwrap();
+    let scene = common::parse::<photon_map::Options>(args).prepare().unwrap().0;
     let focus = in_prepared_scene(&scene, GLASS_CENTER + axis * (GLASS_CENTER.y / -axis.y));
     let map = scene.photon_map.as_ref().unwrap();
     let mut chroma: f32 = 0.0;
@@ -271,8 +271,8 @@ fn the_caustic_under_the_glass_sphere_outshines_the_lit_floor_beside_it() {
     // on a square of the same colour as the focus's: directly lit floor.
     let across = Vector::new(axis.z, 0.0, -axis.x).normalize();
     let beside = focus + across * (3.0 * GLASS_RADIUS) + Vector::new(0.0, 0.0, 25.0);
-    let with_map = common::parse::<photon_map::Options>(&[]).prepare_scene().unwrap();
-    let without = common::parse::<photon_map::Options>(&["--photons", "0"]).prepare_scene().unwrap();
+    let with_map = common::parse::<photon_map::Options>(&[]).prepare().unwrap().0;
+    let without = common::parse::<photon_map::Options>(&["--photons", "0"]).prepare().unwrap().0;
     assert!(with_map.photon_map.is_some() && without.photon_map.is_none());
 
     let (focus, beside) = (in_prepared_scene(&with_map, focus), in_prepared_scene(&with_map, beside));
@@ -296,7 +296,7 @@ fn no_photons_renders_exactly_as_without_a_photon_map() {
     let mut scene = args.example.scene().unwrap();
     scene.relative_to_camera();
     assert!(scene.photon_map.is_none() && scene.photons.count > 0);
-    let (plain, _) = render(&scene, &args.settings()).unwrap();
+    let (plain, _) = render(&scene, &args.prepare().unwrap().1).unwrap();
     assert!(zero == plain, "--photons 0 changed the picture");
     // The caustic only adds light: no pixel gets darker, and the caustic's pixels get visibly brighter.
     let with_map = common::render::<photon_map::Options>(&SMALL);
@@ -309,7 +309,7 @@ fn no_photons_renders_exactly_as_without_a_photon_map() {
 #[test]
 fn a_scene_without_caustic_casters_builds_no_map_and_renders_as_before() {
     let args = common::parse::<bitmap_textures::Options>(&["--photons", "100000"]);
-    let scene = args.prepare_scene().unwrap();
+    let scene = args.prepare().unwrap().0;
     assert_eq!(scene.photons.count, 100_000);
     assert!(scene.photon_map.is_none(), "a photon map without casters");
     let with = common::render::<bitmap_textures::Options>(&args_with(&["--photons", "100000"]));
@@ -333,7 +333,7 @@ fn the_photon_map_and_picture_are_the_same_for_any_thread_count() {
 
 #[test]
 fn show_photons_draws_dots_where_photons_landed() {
-    let scene = common::parse::<photon_map::Options>(&["--show-photons"]).prepare_scene().unwrap();
+    let scene = common::parse::<photon_map::Options>(&["--show-photons"]).prepare().unwrap().0;
     let map = scene.photon_map.as_ref().unwrap();
     let photon = map.photons()[0];
     let dot = map.irradiance(photon.position, -photon.dir);

@@ -15,8 +15,7 @@ use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 /// viewer's rays per second) are the plain render's.
 fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
     let cli: Cli<E> = common::parse(args);
-    let settings = cli.settings();
-    let scene = cli.prepare_scene().unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
     let (plain, plain_stats) = render(&scene, &settings).unwrap();
     let seen = Mutex::new(Vec::new());
     let tile_rays = AtomicU64::new(0);
@@ -79,8 +78,7 @@ fn tiles_cover_the_picture_centre_first() {
 /// (those already being drawn) may follow.
 fn cancel_after(after: usize, threads: usize) {
     let cli: Cli<fresnel::Options> = common::parse(&["--width", "256", "--height", "192", "--spp", "1"]);
-    let settings = cli.settings();
-    let scene = cli.prepare_scene().unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
     let cancel = AtomicBool::new(false);
     let done = AtomicUsize::new(0);
     let on_update = |update: Update| {
@@ -111,10 +109,10 @@ fn a_cancelled_render_stops_within_one_tile() {
 #[test]
 fn a_render_cancelled_before_it_starts_draws_nothing() {
     let cli: Cli<fresnel::Options> = common::parse(&["--width", "64", "--height", "48"]);
-    let scene = cli.prepare_scene().unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
     let cancel = AtomicBool::new(true);
     let updates = AtomicUsize::new(0);
-    let outcome = render_progressive(&scene, &cli.settings(), &cancel, &|_| {
+    let outcome = render_progressive(&scene, &settings, &cancel, &|_| {
         updates.fetch_add(1, Ordering::SeqCst);
     });
     assert!(matches!(outcome.unwrap(), Outcome::Cancelled));

@@ -411,7 +411,7 @@ fn every_error_row_of_the_format_is_one_line_with_its_line_number() {
         ("layer-cycle", format!("{CAMERA}Layered l {{\n layer l (1, 1, 1)\n}}\n"), "contains itself"),
         (
             "later-lecture",
-            format!("{CAMERA}CsgMinus floor {{\n left a\n right b\n}}\n"),
+            format!("{CAMERA}CsgMinus floor {{\n left a\n right b\n}}\nNode {{\n geometry floor\n}}\n"),
             "line 4: `CsgMinus` (constructive solid geometry) belongs to a later lecture",
         ),
     ];
@@ -443,6 +443,31 @@ fn elements_of_later_lectures_can_be_skipped_with_a_warning() {
 }
 
 #[test]
+fn an_unused_element_of_a_later_lecture_is_skipped_with_a_warning_and_a_used_one_is_refused() {
+    // As in the course's testmesh.qdmg: a BumpTexture that no node uses.
+    let scene = |bump_use: &str| {
+        format!(
+            "{CAMERA}BumpTexture bumps {{\n strength 15\n}}\nLambert white {{\n}}\nLambert dull {{\n{bump_use}}}\n\
+             Sphere ball {{\n}}\nNode {{\n geometry ball\n shader white\n}}\n"
+        )
+    };
+    let file = loaded("unused-bump.qdmg", &scene(""));
+    assert_eq!(file.scene.nodes.len(), 1);
+    let warning = file.warnings.iter().find(|w| w.contains("BumpTexture")).expect("a warning");
+    assert!(warning.contains("unused-bump.qdmg:4: warning:") && warning.contains("no node uses it"), "{warning}");
+    assert_eq!(file.warnings.len(), 1, "{:?}", file.warnings);
+    // Used by a shader that no node uses: still unused.
+    assert!(loaded("unused-bump-shader.qdmg", &scene(" texture bumps\n")).warnings[0].contains("no node uses it"));
+    // Used by the shader of a node: refused, naming the line.
+    let used = scene(" texture bumps\n").replace("shader white", "shader dull");
+    let e = error("used-bump.qdmg", &used);
+    assert!(e.contains("line 4: `BumpTexture` (bump mapping) belongs to a later lecture"), "{e}");
+    // A Node's own `bump`, as in the course's bumpmap.qdmg.
+    let e = error("node-bump.qdmg", &scene("").replace("shader white", "shader white\n bump bumps"));
+    assert!(e.contains("line 4: `BumpTexture`"), "{e}");
+}
+
+#[test]
 fn a_cube_map_in_the_course_layout_is_read_by_default_and_opengl_on_request() {
     let dir = common::root().join("textures/sky_cubemap");
     let text = |layout: &str| format!("{CAMERA}CubemapEnvironment {{\n folder {}\n{layout}}}\n", dir.display());
@@ -457,4 +482,38 @@ fn a_cube_map_in_the_course_layout_is_read_by_default_and_opengl_on_request() {
     assert!(same(a.get(side), reference.get(side)), "only negz differs");
     assert!(!same(a.get(behind), reference.get(behind)), "negz is turned in the course's layout");
     assert!(same(a.get(behind), reference.get(Vector::new(-0.3, 0.2, -1.0))), "by 180 degrees");
+}
+
+/// A scene file's pictures are named after it (`beer.qdmg` -> `out/beer.png`, its views `out/beer-VIEW.png`),
+/// so that the course's scenes do not overwrite each other; `-o` still says where; the bundled default file
+/// keeps the example's own name.
+#[test]
+fn a_scene_files_picture_is_named_after_it() {
+    let dir = common::root().join("target").join(FOLDER).join("named");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = format!("GlobalSettings {{\n frameWidth 40\n frameHeight 30\n}}\n{CAMERA}");
+    let file = dir.join("little room.qdmg");
+    std::fs::write(&file, text).unwrap();
+    let run = |args: &[&str]| {
+        let out = std::process::Command::new(common::example_binary("scene_file"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let file = file.to_str().unwrap();
+    assert!(run(&[file]).contains("-> out/little room.png"));
+    assert!(run(&[file, "--view", "depth"]).contains("-> out/little room-depth.png"));
+    run(&[file, "-o", "elsewhere.png"]);
+    run(&["--width", "8", "--height", "6"]);
+    let size = |name: &str| image::image_dimensions(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert_eq!(size("out/little room.png"), (40, 30));
+    assert_eq!(size("out/little room-depth.png"), (40, 30), "the view has the file's own size");
+    assert_eq!(size("elsewhere.png"), (40, 30));
+    assert_eq!(size("out/scene_file.png"), (8, 6), "the bundled file keeps the example's name");
+    let written = std::fs::read_dir(dir.join("out")).unwrap().count();
+    assert_eq!(written, 3, "nothing else in out/");
 }

@@ -130,3 +130,57 @@ fn a_singular_transform_is_an_error_before_rendering() {
     }
     assert!(render(&scene_with(vec![sphere]), &RenderSettings { width: 8, height: 8, ..Default::default() }).is_ok());
 }
+
+/// Two transformed nodes with coincident faces, as in the course's hw6/window: a glass pane standing on a
+/// bar of its frame (the pane's bottom face and the bar's top face are both at y = 6.5, each reached
+/// through its own scale, translation and turn). Rays from inside the pane down through the seam meet both
+/// faces at distances that differ only by rounding; the node added first must win every such tie, in the
+/// slides' loop over the nodes and in the tree over them, as in the course's loop.
+#[test]
+fn coincident_faces_go_to_the_node_added_first() {
+    use lecture6::lesson::geometry::Cube;
+    use lecture6::lesson::node::{NodeTree, nearest_hit_linear};
+    let bar = Node::new(Cube::new(Vector::ZERO, 1.5), Lambert::new(Color::new(0.9, 0.3, 0.1)))
+        .scale(Vector::new(60.0, 1.0, 1.0))
+        .translate(Vector::new(0.0, 5.0, 0.0))
+        .rotate(-5.0, 0.0, 0.0);
+    let pane = Node::new(Cube::new(Vector::ZERO, 1.5), Lambert::new(Color::WHITE))
+        .scale(Vector::new(59.0, 59.0, 0.75))
+        .translate(Vector::new(0.0, 95.0, 0.0))
+        .rotate(-5.0, 0.0, 0.0);
+    // Far-away spheres, so that the scene is large enough for a tree over its nodes.
+    let far = (0..8).map(|i| {
+        Node::new(Sphere::new(Vector::new(1000.0 + 10.0 * i as f32, 0.0, 0.0), 1.0), Lambert::new(Color::WHITE))
+    });
+    let mut rng = Rng::for_keys(&[25]);
+    for (first, nodes) in [
+        ("bar", [vec![bar.clone(), pane.clone()], far.clone().collect()].concat()),
+        ("pane", [vec![pane, bar], far.collect()].concat()),
+    ] {
+        let tree = NodeTree::build(&nodes).expect("enough nodes for a tree");
+        let (mut rays, mut ties_lost) = (0, 0);
+        for _ in 0..2000 {
+            // A point inside the pane just above the seam, and a direction down through it, no more grazing than
+            // a camera ray refracted into the pane (the window's line: 12 degrees below the seam).
+            let (x, dy) = (rng.next_f32() * 160.0 - 80.0, 0.2 + 0.8 * rng.next_f32());
+            let z = -x * 5f32.to_radians().tan() + (rng.next_f32() - 0.5) * 2.0;
+            let start = Vector::new(x, 6.5 + 0.5 * rng.next_f32(), z);
+            let dir = Vector::new(rng.next_f32() - 0.5, -dy, rng.next_f32() - 0.5).normalize();
+            let ray = Ray::new(start, dir);
+            let Some((hit, node)) = nearest_hit_linear(&nodes, &ray) else { continue };
+            let Some(info) = node.surface(&ray, &hit) else { continue };
+            if (info.ip.y - 6.5).abs() > 1e-3
+                || nodes[1].intersect(&ray, f32::INFINITY).is_none_or(|h| (h.ip.y - 6.5).abs() > 1e-3)
+            {
+                continue; // the ray left the pane through another face, or missed the bar
+            }
+            rays += 1;
+            let (_, tree_node) = tree.nearest_hit(&nodes, &ray).expect("the tree finds the hit too");
+            if !std::ptr::eq(node, &nodes[0]) || !std::ptr::eq(tree_node, &nodes[0]) {
+                ties_lost += 1;
+            }
+        }
+        assert!(rays > 500, "only {rays} rays met the seam");
+        assert_eq!(ties_lost, 0, "{first} added first lost {ties_lost} of {rays} ties");
+    }
+}

@@ -61,18 +61,18 @@ fn empty_optional_controls_leave_the_defaults_and_negative_numbers_reach_their_c
     let mut controls = Controls::new::<fresnel::Options>("fresnel", &[]).unwrap();
     let cli: Cli<fresnel::Options> = controls.parse().unwrap();
     assert_eq!((cli.common.spp, cli.common.wavelengths, cli.common.spectral), (None, None, None));
-    assert_eq!(cli.settings().spp, fresnel::Options::DEFAULT_SPP);
+    assert_eq!(cli.prepare().unwrap().1.spp, fresnel::Options::DEFAULT_SPP);
     assert!(!controls.args().iter().any(|a| a == "--spp" || a == "--spectral"), "{:?}", controls.args());
 
     controls.get_mut("spp").unwrap().value = "9".into();
-    assert_eq!(controls.parse::<fresnel::Options>().unwrap().settings().spp, 9);
+    assert_eq!(controls.parse::<fresnel::Options>().unwrap().prepare().unwrap().1.spp, 9);
     controls.get_mut("spp").unwrap().value = "-1".into();
     let error = controls.parse::<fresnel::Options>().unwrap_err().to_string();
     assert!(error.contains("-1") && error.contains("--spp"), "{error}");
     controls.get_mut("spp").unwrap().value.clear();
     controls.get_mut("ior").unwrap().value = "-1".into();
     let cli: Cli<fresnel::Options> = controls.parse().unwrap();
-    let error = cli.prepare_scene().map(|_| ()).unwrap_err().to_string();
+    let error = cli.prepare().map(|_| ()).unwrap_err().to_string();
     assert!(error.contains("--ior") && error.contains("-1"), "{error}");
 }
 
@@ -143,9 +143,8 @@ fn finished(worker: &Worker) -> Frame {
 fn job<E: Example>(cli: &Cli<E>, camera: Option<Camera>, rebuild: bool) -> Job {
     let build = cli.clone();
     Job {
-        rebuild: rebuild.then(|| Box::new(move |settings: &mut _| build.prepare_scene_and_settings(settings)) as _),
+        rebuild: rebuild.then(|| Box::new(move || build.prepare()) as _),
         camera,
-        settings: cli.settings(),
         film: cli.film(),
         preview: false,
         cancel: Arc::new(AtomicBool::new(false)),
@@ -174,9 +173,9 @@ fn the_render_thread_rebuilds_the_scene_for_new_options_and_ends_on_the_plain_re
     let camera = Camera { position: Vector::new(0.0, 60.0, -100.0), pitch: -35.0, fov: 90.0, ..Camera::default() };
     worker.submit(job(&second, Some(camera), false));
     let moved = finished(&worker);
-    let mut scene = second.prepare_scene().unwrap();
+    let (mut scene, settings) = second.prepare().unwrap();
     scene.camera = camera;
-    assert!(moved == lecture6::lesson::render::render(&scene, &second.settings()).unwrap().0);
+    assert!(moved == lecture6::lesson::render::render(&scene, &settings).unwrap().0);
 }
 
 #[test]

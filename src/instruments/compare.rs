@@ -153,16 +153,27 @@ fn heat_colour(t: f32) -> image::Rgb<u8> {
 const COLOUR_BAR_HEIGHT: u32 = 12;
 
 /// The heat map with its colour bar below it: the ramp from 0 to `full_scale` levels, captioned with its
-/// scale, so that the picture says what its colours mean.
+/// scale ([`heat_map_scale`]), so that the picture says what its colours mean.
 pub fn with_colour_bar(heat: &image::RgbImage, full_scale: u8) -> Result<image::RgbImage> {
+    let caption = format!("difference: {}", heat_map_scale(full_scale));
+    compose(&[Panel { image: colour_bar_under(heat), caption }])
+}
+
+/// The heat map with the ramp of its colours, from black on the left to white on the right, in a bar below.
+pub fn colour_bar_under(heat: &image::RgbImage) -> image::RgbImage {
     let width = heat.width();
     let bar =
         image::RgbImage::from_fn(width, COLOUR_BAR_HEIGHT, |x, _| heat_colour((x as f32 + 0.5) / width.max(1) as f32));
-    let mut top = image::RgbImage::new(width, heat.height() + COLOUR_BAR_HEIGHT);
-    image::imageops::replace(&mut top, heat, 0, 0);
-    image::imageops::replace(&mut top, &bar, 0, heat.height() as i64);
-    let caption = format!("difference: black 0 .. white {} levels (in any channel)", full_scale.max(1));
-    compose(&[Panel { image: top, caption }])
+    let mut out = image::RgbImage::new(width, heat.height() + COLOUR_BAR_HEIGHT);
+    image::imageops::replace(&mut out, heat, 0, 0);
+    image::imageops::replace(&mut out, &bar, 0, heat.height() as i64);
+    out
+}
+
+/// The one convention of every difference heat map (`--compare`'s and `--side-by-side`'s), in words: black
+/// where the pictures agree, white at the largest difference found, `full_scale` levels.
+pub fn heat_map_scale(full_scale: u8) -> String {
+    format!("black 0 .. white {} levels, the largest difference (in any channel)", full_scale.max(1))
 }
 
 /// A picture a render is compared with.

@@ -25,15 +25,13 @@ pub struct Panel {
     pub caption: String,
 }
 
-/// The panels left to right, all of the same height, each with its caption (wrapped to its width) under it.
+/// The panels left to right, top-aligned, each with its caption (wrapped to its width) under the tallest
+/// (the difference panel is taller by its colour bar).
 pub fn compose(panels: &[Panel]) -> Result<image::RgbImage> {
     let font = FontRef::try_from_slice(DEJAVU_SANS_MONO)
         .map_err(|e| Error::parameter("bundled caption font", "DejaVuSansMono", e))?;
     let font = font.as_scaled(PxScale::from(CAPTION_SIZE));
-    let height = panels.first().map_or(0, |p| p.image.height());
-    if panels.iter().any(|p| p.image.height() != height) {
-        return Err(Error::parameter("side-by-side pictures", panels.len(), "must all have the same height"));
-    }
+    let height = panels.iter().map(|p| p.image.height()).max().unwrap_or(0);
     let lines: Vec<Vec<String>> = panels.iter().map(|p| wrap(&p.caption, columns(&font, p.image.width()))).collect();
     let line_height = (font.height() + font.line_gap()).ceil() as u32;
     let caption_height = lines.iter().map(Vec::len).max().unwrap_or(0) as u32 * line_height + 2 * CAPTION_PADDING;
@@ -109,11 +107,13 @@ fn draw_text<F: Font>(out: &mut image::RgbImage, font: &PxScaleFont<F>, text: &s
 }
 
 /// A | B | difference: the two renders `a` and `b`, each with its caption, and the heat map of their
-/// difference, as one picture; and the difference in words. Fails when the two are not of the same size.
+/// difference with its colour bar, as one picture; and the difference in words. The heat map is the one
+/// `--compare` writes: white at the largest difference ([`compare::heat_map_scale`]). Fails when the two
+/// are not of the same size.
 pub fn a_b_difference(a: Panel, b: Panel) -> Result<(image::RgbImage, compare::Difference)> {
     let diff = compare::difference(&a.image, &b.image)?;
-    let heat = compare::heat_map(&a.image, &b.image)?;
-    let caption = format!("difference A-B (black: equal, white: 64+ levels)\n{diff}");
+    let heat = compare::colour_bar_under(&compare::heat_map_scaled(&a.image, &b.image, diff.max_diff)?);
+    let caption = format!("difference A-B: {}\n{diff}", compare::heat_map_scale(diff.max_diff));
     let picture = compose(&[a, b, Panel { caption, image: heat }])?;
     Ok((picture, diff))
 }

@@ -15,7 +15,9 @@
 //! five samples of an ordinary render would.
 
 use crate::lesson::camera::CameraFrame;
+use crate::lesson::color::Color;
 use crate::lesson::frame::Frame;
+use crate::lesson::observer::Observer;
 use crate::lesson::render::{RenderSettings, pixel_key};
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{Counters, PixelSample, Scene, TraceContext};
@@ -38,21 +40,25 @@ const AA_KEY: u64 = 0x4144_4150_5449_5645;
 /// Which pixels of a frame of single samples differ from a neighbour by more than [`THRESHOLD`] (found in
 /// parallel, on the current rayon pool: nine reads per pixel are a serial step otherwise).
 pub fn marked(frame: &Frame) -> Vec<bool> {
+    let w = frame.width;
+    (0..frame.pixels.len()).into_par_iter().map(|i| marked_at(frame, i as u32 % w, i as u32 / w)).collect()
+}
+
+/// Whether pixel (x, y) of a frame of single samples differs from one of its neighbours in the frame by
+/// more than [`THRESHOLD`] in some channel, both clamped to 1: whether the adaptive pass refines it. The
+/// frame may be a piece of the picture around the pixel (`--trace-pixel` renders only the pixel's
+/// neighbourhood); a pixel on the picture's border has fewer neighbours.
+pub fn marked_at(frame: &Frame, x: u32, y: u32) -> bool {
     let (w, h) = (frame.width as i64, frame.height as i64);
     let at = |x: i64, y: i64| frame.pixels[(y * w + x) as usize].0.min(glam::Vec3A::ONE);
-    (0..frame.pixels.len())
-        .into_par_iter()
-        .map(|i| (i as i64 % w, i as i64 / w))
-        .map(|(x, y)| {
-            let own = at(x, y);
-            (-1..=1).any(|dy| {
-                (-1..=1).any(|dx| {
-                    let (nx, ny) = (x + dx, y + dy);
-                    (0..w).contains(&nx) && (0..h).contains(&ny) && (own - at(nx, ny)).abs().max_element() > THRESHOLD
-                })
-            })
+    let (x, y) = (x as i64, y as i64);
+    let own = at(x, y);
+    (-1..=1).any(|dy| {
+        (-1..=1).any(|dx| {
+            let (nx, ny) = (x + dx, y + dy);
+            (0..w).contains(&nx) && (0..h).contains(&ny) && (own - at(nx, ny)).abs().max_element() > THRESHOLD
         })
-        .collect()
+    })
 }
 
 /// The adaptive pass over a frame of single samples: four more samples in every marked pixel, which
@@ -72,17 +78,7 @@ pub fn refine(scene: &Scene, camera: &CameraFrame, settings: &RenderSettings, fr
         .map(|(y, (row, marks))| {
             let mut counters = Counters::default();
             for (x, pixel) in row.iter_mut().enumerate().filter(|(x, _)| marks[*x]) {
-                let rng = Rng::for_keys(&[settings.seed, x as u64, y as u64, AA_KEY]);
-                let mut ctx = TraceContext::new(scene, rng);
-                let pixel_key = pixel_key(&[settings.seed, x as u64, y as u64]);
-                let mut sum = *pixel;
-                for (index, (dx, dy)) in (1..).zip(EXTRA_SAMPLES) {
-                    ctx.pixel_sample = Some(PixelSample { index, count: SAMPLES_PER_REFINED_PIXEL, pixel_key });
-                    let color = ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy));
-                    sum += settings.sample(color, &mut ctx.counters);
-                }
-                *pixel = sum / SAMPLES_PER_REFINED_PIXEL as f32;
-                counters.add(&ctx.counters);
+                *pixel = refine_pixel(scene, camera, settings, (x as u32, y as u32), *pixel, &mut counters, None);
             }
             counters
         })
@@ -92,10 +88,35 @@ pub fn refine(scene: &Scene, camera: &CameraFrame, settings: &RenderSettings, fr
         })
 }
 
+/// The colour of the marked pixel `(x, y)` whose first sample is `first`: the average of its five samples.
+/// Traces the four extra samples, counting their rays in `counters` and telling `observer`, if given, what
+/// the recursion does (`--trace-pixel` records them as the pixel's camera rays 1 to 4).
+pub fn refine_pixel(
+    scene: &Scene,
+    camera: &CameraFrame,
+    settings: &RenderSettings,
+    (x, y): (u32, u32),
+    first: Color,
+    counters: &mut Counters,
+    observer: Option<&mut dyn Observer>,
+) -> Color {
+    let rng = Rng::for_keys(&[settings.seed, x as u64, y as u64, AA_KEY]);
+    let mut ctx = TraceContext::new(scene, rng);
+    ctx.observer = observer.map(|o| o as &mut dyn Observer);
+    let pixel_key = pixel_key(&[settings.seed, x as u64, y as u64]);
+    let mut sum = first;
+    for (index, (dx, dy)) in (1..).zip(EXTRA_SAMPLES) {
+        ctx.pixel_sample = Some(PixelSample { index, count: SAMPLES_PER_REFINED_PIXEL, pixel_key });
+        let color = ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy));
+        sum += settings.sample(color, &mut ctx.counters);
+    }
+    counters.add(&ctx.counters);
+    sum / SAMPLES_PER_REFINED_PIXEL as f32
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lesson::color::Color;
 
     #[test]
     fn pixels_next_to_an_edge_are_marked_and_flat_ones_are_not() {

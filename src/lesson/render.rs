@@ -18,6 +18,7 @@
 //! ([`crate::lesson::spectral::GamutMapping`]). A scene with nothing dispersive is traced once, in white
 //! light, whatever `wavelengths` says.
 
+use crate::lesson::adaptive_aa;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
@@ -250,9 +251,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
         ProgressBar::hidden()
     };
     let mut frame = pool.install(|| Frame::new(w, h));
-    if settings.adaptive_aa && plan != SpectralPlan::White {
-        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
-    }
+    check_adaptive_aa(settings, &plan)?;
     let mut counters = pool.install(|| {
         frame
             .pixels
@@ -276,7 +275,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     });
     bar.finish_and_clear();
     if settings.adaptive_aa {
-        counters.add(&pool.install(|| crate::lesson::adaptive_aa::refine(scene, &camera, settings, &mut frame)));
+        counters.add(&pool.install(|| adaptive_aa::refine(scene, &camera, settings, &mut frame)));
     }
     let stats = RenderStats {
         elapsed: start.elapsed(),
@@ -297,7 +296,8 @@ pub struct PixelTrace {
     pub counters: Counters,
 }
 
-/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would, counting its rays and telling
+/// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would (the course's adaptive
+/// anti-aliasing included: a pixel it refines gets its five samples), counting its rays and telling
 /// `observer`, if given, what the recursion does (see [`crate::lesson::observer`]; `--trace-pixel` records the
 /// ray tree so).
 pub fn render_pixel(
@@ -314,29 +314,68 @@ pub fn render_pixel(
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    settings.check()?;
-    let plan = spectral_plan(scene, settings);
-    let camera = scene.camera.frame(settings.width, settings.height);
-    let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
-    tracer.observer = observer.map(|o| o as &mut dyn Observer);
-    let color = tracer.pixel(x, y);
-    Ok(PixelTrace { color, counters: tracer.counters })
+    let mut pixels = render_pixels(scene, settings, y, x..x + 1, observer)?;
+    Ok(pixels.remove(0))
 }
 
-/// Renders the pixels `xs` of row `y` as [`render`] would, each with its own ray counters. The debug views
-/// use it.
+/// Renders the pixels `xs` of row `y` as [`render`] would (adaptive anti-aliasing included), each with its
+/// own ray counters. The debug views use it.
 pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
+    render_pixels(scene, settings, y, xs, None)
+}
+
+/// The pixels `xs` of row `y`, as [`render`] renders them, each with its own ray counters; `observer` sees
+/// every ray traced for them. With adaptive anti-aliasing the single samples of the pixels around them are
+/// rendered too (not counted): they decide which of the pixels the adaptive pass refines.
+fn render_pixels(
+    scene: &Scene,
+    settings: &RenderSettings,
+    y: u32,
+    xs: Range<u32>,
+    observer: Option<&mut dyn Observer>,
+) -> Result<Vec<PixelTrace>> {
     settings.check()?;
     let plan = spectral_plan(scene, settings);
+    check_adaptive_aa(settings, &plan)?;
     let camera = scene.camera.frame(settings.width, settings.height);
+    let xs = xs.start..xs.end.min(settings.width);
     let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
+    tracer.observer = observer.map(|o| o as &mut dyn Observer);
     let mut pixels = Vec::with_capacity(xs.len());
-    for x in xs.start..xs.end.min(settings.width) {
+    for x in xs.clone() {
         tracer.counters = Counters::default();
         let color = tracer.pixel(x, y);
         pixels.push(PixelTrace { color, counters: tracer.counters.clone() });
     }
+    if settings.adaptive_aa && !xs.is_empty() {
+        let (x0, x1) = (xs.start.saturating_sub(1), (xs.end + 1).min(settings.width));
+        let (y0, y1) = (y.saturating_sub(1), (y + 2).min(settings.height));
+        let mut around = Frame::new(x1 - x0, y1 - y0);
+        render_rect(scene, settings, &plan, x0..x1, y0..y1, &mut around.pixels);
+        for (pixel, x) in pixels.iter_mut().zip(xs) {
+            if adaptive_aa::marked_at(&around, x - x0, y - y0) {
+                let observer = tracer.observer.as_deref_mut().map(|o| o as &mut dyn Observer);
+                pixel.color = adaptive_aa::refine_pixel(
+                    scene,
+                    &camera,
+                    settings,
+                    (x, y),
+                    pixel.color,
+                    &mut pixel.counters,
+                    observer,
+                );
+            }
+        }
+    }
     Ok(pixels)
+}
+
+/// Adaptive anti-aliasing refines single white-light samples: a dispersive scene is refused.
+fn check_adaptive_aa(settings: &RenderSettings, plan: &SpectralPlan) -> Result<()> {
+    if settings.adaptive_aa && *plan != SpectralPlan::White {
+        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
+    }
+    Ok(())
 }
 
 /// Renders the pixels `xs` of the rows `ys` of the frame that `settings` describes into `out`, row by row, on
@@ -398,7 +437,7 @@ impl<'a> PixelTracer<'a> {
     fn new(scene: &'a Scene, camera: &'a CameraFrame, settings: &'a RenderSettings, plan: &'a SpectralPlan) -> Self {
         let stratifier = Stratifier::new(settings.spp);
         let samples_per_pixel =
-            if settings.adaptive_aa { crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL } else { settings.spp };
+            if settings.adaptive_aa { adaptive_aa::SAMPLES_PER_REFINED_PIXEL } else { settings.spp };
         PixelTracer {
             scene,
             camera,

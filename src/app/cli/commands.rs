@@ -12,7 +12,6 @@ use crate::lesson::frame::save_atomically;
 use crate::lesson::input;
 use clap::ValueEnum;
 use std::ffi::OsString;
-use std::path::Path;
 use std::time::Instant;
 
 /// `--trace-pixel`: renders only `pixel` of the example's picture, recording its rays, and describes the
@@ -28,10 +27,7 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
 pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
     let (scene, settings) = args.prepare()?;
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
-    let path = match &args.common.output {
-        Some(path) => path.clone(),
-        None => Path::new("out").join(format!("{name}-{label}.png")),
-    };
+    let path = args.output_path_for(name, &format!("-{label}"));
     // The scene's files have been read: the view may not replace one of them.
     input::check_not_an_input(&path, "the debug view")?;
     let start = Instant::now();
@@ -96,7 +92,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     let (picture, diff) = a_b_difference(pa, pb).map_err(|_| {
         Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
     })?;
-    let path = a.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}-side-by-side.png")));
+    let path = a.output_path_for(name, "-side-by-side");
     input::check_not_an_input(&path, "the side-by-side picture")?;
     save_atomically(&path, |file| picture.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(

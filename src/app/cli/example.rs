@@ -54,6 +54,13 @@ pub trait Example: clap::Args + Clone + Send + Sync + 'static {
     fn scene_and_settings(&self, _common: &CommonArgs, _settings: &mut RenderSettings) -> Result<Scene> {
         self.scene()
     }
+    /// The name of the pictures the example writes where `--output` does not say: `out/<name>.png`,
+    /// `out/<name>-depth.png`, ... By default the example's binary's name, `program` (`fresnel`, or `hw1` for
+    /// a student's copy); a scene file's example names them after the file, so that scenes do not overwrite
+    /// each other.
+    fn picture_name(&self, program: &str) -> String {
+        program.to_string()
+    }
 }
 
 // The whole command line of an example: its own options, then the ones every example shares. (A plain
@@ -101,8 +108,9 @@ impl<E: Example> Cli<E> {
         <Cli<E> as clap::FromArgMatches>::from_arg_matches(&matches)
     }
 
-    /// The render settings the options ask for.
-    pub fn settings(&self) -> RenderSettings {
+    /// The render settings the options alone ask for, before the scene decides what they leave open (a scene
+    /// file's frame size and anti-aliasing): [`Cli::prepare`] gives the ones the render uses.
+    pub(crate) fn settings(&self) -> RenderSettings {
         let c = &self.common;
         let spectral = c.spectral.unwrap_or_default();
         RenderSettings {
@@ -121,28 +129,28 @@ impl<E: Example> Cli<E> {
 
     /// The scene and the render settings exactly as the render uses them: the options' settings, with what
     /// the scene decides where they leave it open (a scene file's frame size and anti-aliasing), the photon
-    /// map built, and no progress bar. The instruments (`--trace-pixel`, `--view`, the viewer) start here.
+    /// map built, and no progress bar. The instruments (`--trace-pixel`, `--view`, the viewer) and the tests
+    /// start here; [`Cli::render`] renders what it returns. This is the one path from the options to a
+    /// scene and its settings.
     pub fn prepare(&self) -> Result<(Scene, RenderSettings)> {
-        let mut settings = RenderSettings { progress: false, ..self.settings() };
-        settings.check()?;
-        let scene = self.prepare_scene_and_settings(&mut settings)?;
-        settings.check()?;
-        Ok((scene, settings))
+        let (scene, settings) = self.prepare_checked(|_, _| Ok(()))?;
+        Ok((scene, RenderSettings { progress: false, ..settings }))
     }
 
-    /// Builds the example's scene as the options say, ready to render: the scene's own settings overridden
-    /// by the common options, and its caustic photon map built (in parallel, on `--threads` threads) if it
-    /// needs one.
-    pub fn prepare_scene(&self) -> Result<Scene> {
-        self.prepare_scene_and_settings(&mut self.settings())
-    }
-
-    /// [`Cli::prepare_scene`], letting the scene set what the options leave open in `settings` (see
-    /// [`Example::scene_and_settings`]).
-    pub fn prepare_scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
-        let mut scene = self.scene_and_settings(settings)?;
+    /// [`Cli::prepare`], calling `check` with the scene and the settings once they are known and before any
+    /// tracing (the photon map included), and keeping the progress bar the options ask for.
+    fn prepare_checked(
+        &self,
+        check: impl FnOnce(&Scene, &RenderSettings) -> Result<()>,
+    ) -> Result<(Scene, RenderSettings)> {
+        let mut settings = self.settings();
+        settings.check()?;
+        self.film().check()?;
+        let mut scene = self.scene_and_settings(&mut settings)?;
+        settings.check()?;
+        check(&scene, &settings)?;
         self.build_photon_map(&mut scene)?;
-        Ok(scene)
+        Ok((scene, settings))
     }
 
     /// The example's scene with the common options applied and checked, and the settings it decides; the
@@ -187,20 +195,13 @@ impl<E: Example> Cli<E> {
         self.render_checked(|_, _| Ok(())).map(|(frame, stats, _)| (frame, stats))
     }
 
-    /// [`Cli::render`], calling `check` with the scene and the settings once they are known and before any
-    /// tracing (the photon map included): `run` checks there that the reference fits and says which
-    /// options change nothing. Returns the settings it rendered with too.
+    /// [`Cli::render`], calling `check` as [`Cli::prepare_checked`] does: `run` checks there that the
+    /// reference fits and says which options change nothing. Returns the settings it rendered with too.
     pub(super) fn render_checked(
         &self,
         check: impl FnOnce(&Scene, &RenderSettings) -> Result<()>,
     ) -> Result<(Frame, RenderStats, RenderSettings)> {
-        let mut settings = self.settings();
-        settings.check()?;
-        self.film().check()?;
-        let mut scene = self.scene_and_settings(&mut settings)?;
-        settings.check()?;
-        check(&scene, &settings)?;
-        self.build_photon_map(&mut scene)?;
+        let (scene, settings) = self.prepare_checked(check)?;
         let (frame, stats) = render(&scene, &settings)?;
         Ok((frame, stats, settings))
     }
@@ -247,9 +248,18 @@ impl<E: Example> Cli<E> {
         }
     }
 
-    /// Where the picture of the example called `name` goes.
+    /// Where the picture of the example called `name` goes: `--output`, or `out/<picture name>.png` (see
+    /// [`Example::picture_name`]); with `--compare`, `out/<picture name>-compared.png`, so that comparing
+    /// another version with a reference never replaces the render a student kept at `out/<picture name>.png`.
     pub fn output_path(&self, name: &str) -> PathBuf {
-        self.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{name}.png")))
+        self.output_path_for(name, if self.common.compare.is_some() { "-compared" } else { "" })
+    }
+
+    /// Where a picture of the example called `name` goes: `--output`, or `out/<picture name><suffix>.png`
+    /// (`suffix` is `-depth` for the depth view, `-side-by-side` for `--side-by-side`).
+    pub fn output_path_for(&self, name: &str, suffix: &str) -> PathBuf {
+        let picture = self.example.picture_name(name);
+        self.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{picture}{suffix}.png")))
     }
 }
 

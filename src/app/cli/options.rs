@@ -69,7 +69,7 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,
     /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
-    /// [default: out/EXAMPLE.png]
+    /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
     /// Print nothing but errors: no progress bar, no summary.
@@ -77,7 +77,8 @@ pub struct CommonArgs {
     pub quiet: bool,
     /// Compare the picture with a reference (checked before the render): print RMSE, PSNR, the largest
     /// difference and whether it is within the regression tests' tolerance, and write a heat map of the
-    /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). An 8-bit reference
+    /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). Without --output the
+    /// picture goes to out/EXAMPLE-compared.png: out/EXAMPLE.png, an earlier render, stays. An 8-bit reference
     /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too. Its size is checked
     /// from its header; it counts towards the images' budget of 67108864 pixels (see --env).
     #[arg(long, value_name = "REFERENCE", help_heading = COMMON)]
@@ -134,6 +135,8 @@ pub struct CommonArgs {
     pub view: Option<DebugView>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
+    /// The heat map is --compare's: black where A and B agree, white at their largest difference, with its
+    /// colour bar.
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
     pub side_by_side: Option<String>,
     /// Open a window that shows the picture building up, with the options as controls and a camera that

@@ -15,7 +15,7 @@ use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
 use crate::lesson::shader::Shader;
 use crate::lesson::texture::Texture;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -96,6 +96,7 @@ impl<'a> Loader<'a> {
                 }
             }
         }
+        let used = self.reachable_from_nodes(blocks);
         let mut order: Vec<usize> = (0..blocks.len()).collect();
         order.sort_by_key(|&i| fill_group(&blocks[i].class));
         let mut settings = Settings {
@@ -114,7 +115,14 @@ impl<'a> Loader<'a> {
         for &i in &order {
             let b = &blocks[i];
             if let Some((_, what)) = UNSUPPORTED.iter().find(|(c, _)| *c == b.class) {
-                self.unsupported(b, what)?;
+                if namespace(&b.class).is_some() && !used.contains(&i) {
+                    self.warn(
+                        b.line,
+                        format!("`{}` ({what}) belongs to a later lecture; no node uses it, so it is skipped", b.class),
+                    );
+                } else {
+                    self.unsupported(b, what)?;
+                }
                 match namespace(&b.class) {
                     Some(Namespace::Geometry) => _ = self.geometries.insert(i, None),
                     Some(Namespace::Texture) => _ = self.textures.insert(i, None),
@@ -195,7 +203,27 @@ impl<'a> Loader<'a> {
         })
     }
 
-    /// An element of a later lecture: an error, or a warning when such elements are skipped.
+    /// The blocks that the file's Nodes reach through their references, directly or through other elements
+    /// (a Node's shader, that shader's textures, ...): what the spec's scene table calls *used*. Every word
+    /// of a property value that names a geometry, a shader or a texture counts as a reference to it (names
+    /// resolve to the first block of that name, spec 1.8).
+    fn reachable_from_nodes(&self, blocks: &[Block]) -> HashSet<usize> {
+        let mut reached = HashSet::new();
+        let mut todo: Vec<usize> = (0..blocks.len()).filter(|&i| blocks[i].class == "Node").collect();
+        while let Some(i) = todo.pop() {
+            if !reached.insert(i) {
+                continue;
+            }
+            for word in blocks[i].properties.iter().flat_map(|p| p.value.split_ascii_whitespace()) {
+                for ns in [Namespace::Geometry, Namespace::Shader, Namespace::Texture] {
+                    todo.extend(self.names.get(&(ns, word.to_string())));
+                }
+            }
+        }
+        reached
+    }
+
+    /// An element of a later lecture that the scene uses (or a light): an error, or a warning when such elements are skipped.
     pub(super) fn unsupported(&mut self, b: &Block, what: &str) -> Result<()> {
         let message = format!("`{}` ({what}) belongs to a later lecture and is not rendered by the workbook", b.class);
         if !self.options.skip_unsupported {

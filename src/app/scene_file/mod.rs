@@ -10,8 +10,10 @@
 //! Supported elements: GlobalSettings, Camera, PointLight, Plane, Sphere, Cube, Mesh, Node, Lambert, Phong,
 //! Refl (mirror and glossy), Refr, Layered, Fresnel, CheckerTexture, BitmapTexture, CubemapEnvironment.
 //! The elements of later lectures (RectLight, CsgPlus, CsgAnd, CsgMinus, Heightfield, Const, BumpTexture,
-//! Bumps) are an error naming the line and the element, or, with [`LoadOptions::skip_unsupported`],
-//! skipped with a warning (with whatever refers to them).
+//! Bumps) that no Node uses (directly or through a shader or texture it uses) are skipped with a warning
+//! naming the line, as the spec's scene table counts them; a used one (and a RectLight, which lights the
+//! scene by being there) is an error naming the line and the element, or, with
+//! [`LoadOptions::skip_unsupported`], skipped with a warning (with whatever refers to it).
 //!
 //! Deviations from the course, each because the workbook's renderer differs or the course's behaviour is
 //! undefined, as the spec recommends:

@@ -15,7 +15,7 @@ use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::lesson::camera::Camera;
 use crate::lesson::error::Result;
 use crate::lesson::frame::keeps_linear_light;
-use crate::lesson::render::{RenderSettings, thread_pool};
+use crate::lesson::render::thread_pool;
 use eframe::egui;
 use std::ffi::OsString;
 use std::sync::Arc;
@@ -93,18 +93,12 @@ impl<E: Example> Viewer<E> {
         Ok(viewer)
     }
 
-    fn settings(&self) -> RenderSettings {
-        RenderSettings { progress: false, ..self.cli.settings() }
-    }
-
     fn submit(&mut self, rebuild: bool, preview: bool) {
         let cli = self.cli.clone();
-        let settings = self.settings();
         self.heat_map = None;
         self.worker.submit(Job {
-            rebuild: rebuild.then(|| Box::new(move |settings: &mut _| cli.prepare_scene_and_settings(settings)) as _),
+            rebuild: rebuild.then(|| Box::new(move || cli.prepare()) as _),
             camera: self.camera,
-            settings,
             film: self.cli.film(),
             preview,
             cancel: Arc::new(AtomicBool::new(false)),

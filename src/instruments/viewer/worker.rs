@@ -16,9 +16,10 @@ use std::sync::mpsc::{Receiver, Sender, channel};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-/// Builds the scene for new options (parsing them was done by the window; building may be slow: a photon
-/// map), setting in the render settings what the scene decides (a scene file's frame size).
-pub type BuildScene = Box<dyn FnOnce(&mut RenderSettings) -> Result<Scene> + Send>;
+/// Builds the scene for new options and the render settings it is rendered with, exactly as the command
+/// line's render would (`Cli::prepare`: a scene file's frame size and anti-aliasing included). Parsing them
+/// was done by the window; building may be slow: a photon map.
+pub type BuildScene = Box<dyn FnOnce() -> Result<(Scene, RenderSettings)> + Send>;
 
 /// What to render next.
 pub struct Job {
@@ -26,9 +27,6 @@ pub struct Job {
     pub rebuild: Option<BuildScene>,
     /// The camera to render from; `None` is the scene's own.
     pub camera: Option<Camera>,
-    /// The render settings of the new options, read only with `rebuild` (the scene may change them: a scene
-    /// file's frame size); without it the settings of the last rebuild stay.
-    pub settings: RenderSettings,
     /// How the picture is exposed and tone mapped on the screen (`--exposure`, `--tonemap`).
     pub film: Film,
     /// The camera is moving: draw one quick frame ([`crate::instruments::progressive::preview_settings`]) and no
@@ -200,9 +198,7 @@ fn run_job(
 ) -> Result<()> {
     let lock = || shown.lock().expect("the window never panics holding the picture");
     if let Some(build) = job.rebuild {
-        let mut settings = job.settings;
-        let built = build(&mut settings)?;
-        settings.check()?;
+        let (built, settings) = build()?;
         lock().scene_camera = Some(built.camera);
         // With the tree over its nodes that `render` builds: a camera moved later keeps it.
         *scene = Some((Arc::new(built.with_node_tree()), settings));
