@@ -215,17 +215,13 @@ impl Closest {
 }
 
 /// The nearest node hit by the ray, testing every node in turn (the slides' loop). In the scene's order a
-/// later node wins only when it is strictly closer, so the ties go to the earlier node without a test.
+/// later node wins only when it is closer by more than a tie ([`TIE`]), so ties go to the earlier node.
 pub fn nearest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
-    let mut nearest = None;
-    let mut t_max = f32::INFINITY;
-    for node in nodes {
-        if let Some(hit) = node.hit(ray, t_max) {
-            t_max = hit.distance;
-            nearest = Some((hit, node));
-        }
+    let mut closest = Closest::new();
+    for i in 0..nodes.len() {
+        closest.consider(nodes, i, ray);
     }
-    nearest
+    closest.finish(nodes)
 }
 
 impl NodeTree {
