@@ -13,7 +13,7 @@
 //! load-independent cost.
 
 #[macro_use]
-#[path = "../tests/common/examples.rs"]
+#[path = "../tests/workbook/common/examples.rs"]
 mod examples;
 
 use examples::{bitmap_textures, dispersion};

@@ -18,7 +18,7 @@
 //! To add an example, add its sweeps to `sweeps()`.
 
 #[macro_use]
-#[path = "../tests/common/examples.rs"]
+#[path = "../tests/workbook/common/examples.rs"]
 mod examples;
 
 use examples::{bitmap_textures, dispersion, glossy, photon_map};

@@ -19,7 +19,7 @@
 
 mod common;
 #[macro_use]
-#[path = "../tests/common/examples.rs"]
+#[path = "../tests/workbook/common/examples.rs"]
 mod examples;
 
 use common::cpu_time;

@@ -8,7 +8,7 @@
 //! ```
 
 #[macro_use]
-#[path = "../tests/common/examples.rs"]
+#[path = "../tests/workbook/common/examples.rs"]
 mod examples;
 
 use examples::photon_map::Options;

@@ -13,7 +13,7 @@
 
 mod common;
 #[macro_use]
-#[path = "../tests/common/examples.rs"]
+#[path = "../tests/workbook/common/examples.rs"]
 mod examples;
 
 use common::cpu_time;

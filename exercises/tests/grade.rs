@@ -10,7 +10,7 @@
 //! build too, whose dependencies are optimised.
 
 #[macro_use]
-#[path = "../../tests/common/examples.rs"]
+#[path = "../../tests/workbook/common/examples.rs"]
 mod examples;
 mod grading;
 

@@ -9,7 +9,7 @@
 //! A variant that needs a file of your own (`--texture my_photo.jpg`) cannot be rendered here; the page
 //! says so, with the error, instead of a picture.
 
-#[path = "../../tests/common/examples.rs"]
+#[path = "../../tests/workbook/common/examples.rs"]
 #[macro_use]
 mod examples;
 

@@ -12,7 +12,7 @@
 //! `benches/error_vs_time.rs` runs the study of every stochastic example and writes a Markdown table and a
 //! log-log chart, with the equal-time and equal-error comparisons of the ways to do the same thing (glossy
 //! samplers; wavelength passes against per-path spectral sampling). Another example joins it with one more [`Sweep::new`] there; a test
-//! (`tests/study.rs`) checks on a tiny picture that the error really falls as the sample count rises.
+//! (`tests/workbook/study.rs`) checks on a tiny picture that the error really falls as the sample count rises.
 
 use crate::app::cli::{Cli, Example};
 use crate::lesson::error::{Error, Result};

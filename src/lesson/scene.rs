@@ -44,7 +44,7 @@ pub const RECURSION_SAFETY_CAP: u32 = 1000;
 /// most one level. A ray whose weight is below this cannot change its pixel by more than one level when what
 /// it sees is no brighter than white, the default [`Scene::min_ray_weight`]. What a pruned ray would have
 /// seen may be brighter (the sun of an HDR sky), and a sample may prune several rays: the guarantee is a
-/// statistical one, which `tests/layered_fresnel.rs` checks on the examples (within one level of
+/// statistical one, which `tests/workbook/layered_fresnel.rs` checks on the examples (within one level of
 /// `--exhaustive` on at least 99.9% of pixels).
 pub fn srgb8_finest_step() -> f32 {
     srgb_to_linear(1.0 / 255.0)

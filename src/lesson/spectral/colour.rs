@@ -23,7 +23,7 @@
 //!
 //! The traced range holds nearly all of the light: outside 400-700 nm lie 0.19% of D65's X, 0.04% of its Y
 //! and 0.30% of its Z (0.26%, 0.06% and 0.49% of an equal-energy spectrum's; checked in
-//! `tests/dispersion.rs`).
+//! `tests/workbook/dispersion.rs`).
 
 use super::cie;
 use crate::lesson::color::Color;

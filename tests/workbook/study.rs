@@ -1,7 +1,7 @@
 //! The error-versus-time study measures what it claims: on tiny pictures, the error against the converged
 //! reference falls as the sample count rises, and the stratified disc sampler beats the slide's random one.
 
-mod common;
+use crate::common;
 
 use common::examples::{bitmap_textures, glossy};
 use lecture6::instruments::study::{Measurement, Sweep, cost_at_rmse, pareto_front, rmse_at_time};

@@ -3,8 +3,7 @@
 //! `textures/`, a shader of the student's own gets the caustics through the light loop, and
 //! `Camera::look_at` frames what it is told to.
 
-#[macro_use]
-mod common;
+use crate::common;
 
 use common::{example_binary, root};
 use lecture6::prelude::*;
@@ -139,7 +138,7 @@ fn look_at_points_the_centre_of_the_picture_at_the_target() {
 
 /// The homework of the API page (docs/homework-api.md), the file docs/homework_scene.rs, as a student
 /// copies it to examples/hw1.rs.
-#[path = "../docs/homework_scene.rs"]
+#[path = "../../docs/homework_scene.rs"]
 #[allow(dead_code)] // its `main`, which `cargo run --example` calls
 mod homework_scene;
 
@@ -148,7 +147,10 @@ mod homework_scene;
 #[test]
 fn the_api_pages_homework_renders_and_its_own_shader_shows_its_bands() {
     let page = std::fs::read_to_string(root().join("docs/homework-api.md")).unwrap();
-    assert!(page.contains(include_str!("../docs/homework_scene.rs")), "the page shows docs/homework_scene.rs as it is");
+    assert!(
+        page.contains(include_str!("../../docs/homework_scene.rs")),
+        "the page shows docs/homework_scene.rs as it is"
+    );
     let cli = common::parse::<homework_scene::Options>(&["--width", "160", "--height", "120", "--spp", "1"]);
     let (scene, settings) = cli.prepare().unwrap();
     let (frame, stats) = lecture6::lesson::render::render(&scene, &settings).unwrap();

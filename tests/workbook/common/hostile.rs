@@ -1,4 +1,4 @@
-//! Hostile input for the tests of `tests/hostile_input.rs` and `tests/fuzz_scene_file.rs`: running an example
+//! Hostile input for the tests of `tests/workbook/hostile_input.rs` and `tests/workbook/fuzz_scene_file.rs`: running an example
 //! binary within a time and memory bound, and making the hostile files (decompression bombs, FIFOs, sparse
 //! giants) at run time rather than keeping them in the repository.
 

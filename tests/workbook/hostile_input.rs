@@ -5,7 +5,7 @@
 //! leaving an earlier output as it was. The big and special files (decompression bombs, FIFOs, a sparse
 //! file of gigabytes) are made here at run time.
 
-mod common;
+use crate::common;
 
 use common::hostile::{Run, black_png, fifo, run_bounded, run_bounded_with, scratch};
 use std::path::{Path, PathBuf};

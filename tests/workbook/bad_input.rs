@@ -6,7 +6,7 @@
 //! that cannot be written, and every impossible value goes through [`rejected`], which runs the example
 //! binary with an earlier picture at its output path and checks all of that.
 
-mod common;
+use crate::common;
 
 use common::run_example;
 

@@ -4,7 +4,7 @@
 //! so `cargo test` checks the first message and `cargo test --features viewer` the second (`.ci/run` runs
 //! both).
 
-mod common;
+use crate::common;
 
 use common::example_binary;
 use std::process::Command;

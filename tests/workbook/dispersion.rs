@@ -2,7 +2,7 @@
 //! tables, the light's spectrum, the gamut), the prism's deviation against Snell's law, and that the renderer
 //! traces wavelengths only where they matter (the skip, and hero-wavelength sampling's split).
 
-mod common;
+use crate::common;
 
 use common::examples::{bitmap_textures, dispersion};
 use glam::{DMat3, DVec3};

@@ -2,7 +2,7 @@
 //! rows of the format's section 5, the transform order, relative paths and the legacy light keys, all with
 //! scene files written here; and the fresnel example's scene in the format against `expected/fresnel.png`.
 
-mod common;
+use crate::common;
 
 use common::examples::scene_file as scene_file_example;
 

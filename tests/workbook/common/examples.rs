@@ -3,7 +3,7 @@
 //! scene a student reads in `examples/<name>.rs`. `every_example!(m)` expands `m! { name, name, ... }`.
 //!
 //! A file of the student's own in `examples/` is not in this list, so it never makes `cargo test` fail;
-//! `tests/regression.rs` checks that every example listed here exists and has its expected picture.
+//! `tests/workbook/regression.rs` checks that every example listed here exists and has its expected picture.
 
 macro_rules! registry {
     ($($name:ident => $path:literal),* $(,)?) => {
@@ -22,16 +22,16 @@ macro_rules! registry {
 }
 
 registry! {
-    bitmap_textures => "../../examples/bitmap_textures.rs",
-    model_transform => "../../examples/model_transform.rs",
-    environment => "../../examples/environment.rs",
-    reflect_v01 => "../../examples/reflect_v01.rs",
-    reflect_v02 => "../../examples/reflect_v02.rs",
-    refract => "../../examples/refract.rs",
-    layered => "../../examples/layered.rs",
-    fresnel => "../../examples/fresnel.rs",
-    glossy => "../../examples/glossy.rs",
-    dispersion => "../../examples/dispersion.rs",
-    photon_map => "../../examples/photon_map.rs",
-    scene_file => "../../examples/scene_file.rs",
+    bitmap_textures => "../../../examples/bitmap_textures.rs",
+    model_transform => "../../../examples/model_transform.rs",
+    environment => "../../../examples/environment.rs",
+    reflect_v01 => "../../../examples/reflect_v01.rs",
+    reflect_v02 => "../../../examples/reflect_v02.rs",
+    refract => "../../../examples/refract.rs",
+    layered => "../../../examples/layered.rs",
+    fresnel => "../../../examples/fresnel.rs",
+    glossy => "../../../examples/glossy.rs",
+    dispersion => "../../../examples/dispersion.rs",
+    photon_map => "../../../examples/photon_map.rs",
+    scene_file => "../../../examples/scene_file.rs",
 }

@@ -1,7 +1,7 @@
 //! The environments' conventions (which texel a direction reads), the bundled sky, `--env`, and the errors
 //! for missing or unreadable environment files.
 
-mod common;
+use crate::common;
 
 use common::examples::{bitmap_textures, environment as environment_example};
 use lecture6::app::assets::{SkyFunction, sun_direction};

@@ -19,8 +19,7 @@
 //! The photon map is built for each transformed scene, as the examples build it, and its gathering radius
 //! (a length) is scaled with the scene; without that, scale 100 changes 731 of the 19200 pixels.
 
-#[macro_use]
-mod common;
+use crate::common;
 
 use lecture6::app::cli::Example;
 use lecture6::instruments::compare::{Difference, difference, heat_map};

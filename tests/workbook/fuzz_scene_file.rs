@@ -10,7 +10,7 @@
 //! N of each (docs/tests.md gives the long run's command and result). A failure is shrunk to its smallest
 //! mutation and kept in `fuzz_scene_file.proptest-regressions`, which is replayed first on every run.
 
-mod common;
+use crate::common;
 
 use common::hostile::{black_png, fifo, run_bounded, scratch};
 use proptest::prelude::*;

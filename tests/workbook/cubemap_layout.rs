@@ -1,7 +1,7 @@
 //! Cube maps in the OpenGL layout and in the course's (its `negz` turned by 180°): every edge between two
 //! faces is seamless when the folder is read in its own layout, and the file checks of environments.
 
-mod common;
+use crate::common;
 
 use lecture6::Vector;
 use lecture6::lesson::color::linear_to_srgb;

@@ -3,7 +3,7 @@
 //! critical angle, touching and nested dielectrics, slivers and zero-area triangles in an OBJ file, and
 //! mesh hits for directions of any length.
 
-mod common;
+use crate::common;
 
 use lecture6::Color;
 use lecture6::instruments::compare::{difference, heat_map};

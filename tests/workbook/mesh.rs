@@ -1,7 +1,7 @@
 //! Triangle meshes: the BVH finds exactly the hit brute force finds, rays through shared edges and
 //! vertices never slip through, and bad, empty or degenerate OBJ files are handled without a panic or a NaN.
 
-mod common;
+use crate::common;
 
 use lecture6::lesson::geometry::mesh::intersect_triangle;
 use lecture6::lesson::geometry::{Geometry, Mesh};

@@ -3,7 +3,7 @@
 //! the irradiance of a mirror's virtual light, the glass sphere's caustic outshines the lit floor, and a scene
 //! without casters or `--photons 0` renders exactly as without a photon map.
 
-mod common;
+use crate::common;
 
 use common::examples::{bitmap_textures, photon_map};
 use lecture6::app::cli::Example;

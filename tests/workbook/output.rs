@@ -1,7 +1,7 @@
 //! What the examples write: PNG (8-bit sRGB), EXR and HDR (linear float), and the `--compare` report with its
 //! heat map.
 
-mod common;
+use crate::common;
 
 use common::{root, run_example};
 

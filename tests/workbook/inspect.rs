@@ -1,7 +1,7 @@
 //! The teaching instruments: the ray tree of a pixel (`--trace-pixel`), the debug views (`--view`) and the
 //! side-by-side picture (`--side-by-side`), on the workbook's own examples.
 
-mod common;
+use crate::common;
 
 use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract, scene_file};
 use lecture6::app::cli::Example;

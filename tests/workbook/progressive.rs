@@ -1,7 +1,7 @@
 //! The progressive renderer the live viewer draws with: its tiles add up to the plain render byte for byte,
 //! and a cancelled render stops within one tile per worker.
 
-mod common;
+use crate::common;
 
 use common::examples::{dispersion, fresnel, glossy};
 use lecture6::app::cli::{Cli, Example};

@@ -1,7 +1,7 @@
 //! Glossy reflections: glossiness 1 is the mirror, no reflected ray goes under the surface, and the cone of
 //! reflections is centred on the mirror direction.
 
-mod common;
+use crate::common;
 
 use common::examples::glossy;
 use lecture6::Color;

@@ -2,8 +2,7 @@
 //! small size with 1, 2 and 8 threads (more threads than the test machine has cores, so rows are stolen
 //! between workers in an order that changes from run to run).
 
-#[macro_use]
-mod common;
+use crate::common;
 
 use common::examples::bitmap_textures;
 

@@ -1,10 +1,10 @@
-//! The live viewer's parts that need no window (`cargo test --release --features viewer --test viewer`):
+//! The live viewer's parts that need no window (`cargo test --release --features viewer --test workbook viewer::`):
 //! the controls generated from an example's command line, the moving camera, and the render thread, which
 //! rebuilds the scene when an option changes and finishes on the picture the command line gives.
 
 #![cfg(feature = "viewer")]
 
-mod common;
+use crate::common;
 
 use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;

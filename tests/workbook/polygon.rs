@@ -1,7 +1,7 @@
 //! Triangulation of OBJ polygons (non-convex faces cut in their plane), the faceted default for meshes
 //! without normals, and the OBJ file errors.
 
-mod common;
+use crate::common;
 
 use lecture6::Vector;
 use lecture6::lesson::geometry::polygon::{newell_normal, triangulate};

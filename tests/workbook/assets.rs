@@ -1,6 +1,6 @@
 //! The textures and meshes under `textures/` are exactly what the asset generator makes.
 
-mod common;
+use crate::common;
 
 use lecture6::app::assets::{ASSETS, HDR_ASSETS};
 

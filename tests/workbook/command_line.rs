@@ -3,7 +3,7 @@
 //! reach the check which explains them, options that say when they change nothing, `--help` that shows each
 //! example's real defaults, and doc comments that say what the pictures really show.
 
-mod common;
+use crate::common;
 
 use common::examples::{fresnel, photon_map, reflect_v02};
 use common::{root, run_example};

@@ -1,7 +1,7 @@
 //! The Layered shader, the Fresnel equations and the adaptive ray-tree depth control (issue: layered shader,
 //! Fresnel and texture-driven properties).
 
-mod common;
+use crate::common;
 
 use common::examples::{fresnel as fresnel_example, layered};
 use lecture6::Color;

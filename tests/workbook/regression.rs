@@ -1,8 +1,7 @@
 //! Every example's default picture against `expected/<example>.png` (see `common::check_expected` for the
 //! rule and for `UPDATE_EXPECTED=1`).
 
-#[macro_use]
-mod common;
+use crate::common;
 
 macro_rules! regression {
     ($($name:ident),* $(,)?) => {$(
@@ -40,7 +39,7 @@ const WORKBOOK: [&str; 12] = [
 
 #[test]
 fn the_registry_holds_the_workbooks_examples() {
-    assert_eq!(every_example!(example_names), WORKBOOK, "tests/common/examples.rs is out of date");
+    assert_eq!(every_example!(example_names), WORKBOOK, "tests/workbook/common/examples.rs is out of date");
 }
 
 #[test]

@@ -1,7 +1,7 @@
 //! The course's adaptive anti-aliasing (format spec, appendix A.2) as an option of the renderer: more
 //! samples exactly where neighbours differ, the same picture whatever the thread count.
 
-mod common;
+use crate::common;
 
 use lecture6::app::scene_file::{LoadOptions, load};
 use lecture6::lesson::adaptive_aa::marked;

@@ -2,7 +2,7 @@
 //! back the direction it was given, a perfect mirror that shows exactly its environment, and the depth
 //! limit of v0.2 and the safety cap of v0.1.
 
-mod common;
+use crate::common;
 
 use common::examples::{reflect_v01, reflect_v02, refract as refract_scene};
 use lecture6::lesson::camera::Camera;

@@ -1,0 +1,38 @@
+//! The workbook's integration tests, one module per subject (one test binary, so that a first
+//! `cargo test` links the library into one program instead of one per file; docs/building.md has the
+//! figures). The list of what each module checks is docs/tests.md. Run one subject with a filter, e.g.
+//! `cargo test --release --test workbook dispersion::`.
+
+#[macro_use]
+mod common;
+
+mod adaptive_aa;
+mod assets;
+mod bad_input;
+mod command_line;
+mod cubemap_layout;
+mod determinism;
+mod dispersion;
+mod edge_cases;
+mod environment;
+mod fuzz_scene_file;
+mod glossy;
+mod homework;
+mod hostile_input;
+mod inspect;
+mod layered_fresnel;
+mod math;
+mod mesh;
+mod output;
+mod photon_map;
+mod polygon;
+mod progressive;
+mod properties;
+mod reflection_refraction;
+mod regression;
+mod scene_file;
+mod stress;
+mod study;
+mod transform;
+mod viewer;
+mod window;
