@@ -15,7 +15,7 @@ use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::lesson::rng::Rng;
 use lecture6::lesson::sampling::{DiscSampler, DiscSamples};
 use lecture6::lesson::scene::Scene;
-use lecture6::lesson::shader::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
+use lecture6::lesson::shader::{GLOSSY_SPLIT_DEPTH, GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 use std::sync::{Arc, Mutex};
 
 fn small(spp: u32) -> RenderSettings {
@@ -146,6 +146,30 @@ fn secondary_glossy_bounces_trace_two_rays() {
     let [camera_rays, depth1, depth2, ..] = stats.counters.rays_by_depth;
     assert_eq!(depth1, 16 * camera_rays, "the first bounce traces num_samples rays");
     assert_eq!(depth2, SECONDARY_GLOSSY_SAMPLES as u64 * depth1, "a secondary bounce traces 2 rays");
+}
+
+#[test]
+fn facing_white_glossy_mirrors_trace_rays_in_proportion_to_the_depth() {
+    // Two white glossy mirrors facing each other: their rays keep the full weight, so adaptive depth control
+    // never prunes them. Splitting every bounce in two would trace 2^depth rays per camera ray (a hang for a
+    // scene file's `maxTraceDepth 60`); below GLOSSY_SPLIT_DEPTH each bounce traces one ray.
+    let mut scene =
+        Scene::new(Camera { position: Vector::new(0.0, 5.0, 0.0), pitch: -50.0, fov: 40.0, ..Camera::default() });
+    for y in [0.0, 10.0] {
+        let mirror = Reflection::glossy(Color::WHITE, 0.98, 4).unwrap();
+        scene.add(Node::new(Arc::new(Plane::new(y, f32::INFINITY)), Arc::new(mirror)));
+    }
+    scene.max_depth = 14;
+    let settings = RenderSettings { width: 8, height: 6, spp: 1, threads: Some(2), ..RenderSettings::default() };
+    let (_, stats) = render(&scene, &settings).unwrap();
+    let rays = stats.counters.rays_by_depth;
+    let split = GLOSSY_SPLIT_DEPTH as usize;
+    assert_eq!(rays[1], 4 * rays[0], "every camera ray hits the floor and traces num_samples rays");
+    assert_eq!(rays[split + 1], SECONDARY_GLOSSY_SAMPLES as u64 * rays[split], "the last split doubles the rays");
+    for depth in split + 2..=14 {
+        assert!(rays[depth] > 0, "depth {depth} is never reached: {rays:?}");
+        assert_eq!(rays[depth], rays[depth - 1], "depth {depth} still splits: {rays:?}");
+    }
 }
 
 #[test]

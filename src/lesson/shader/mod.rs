@@ -14,7 +14,7 @@ pub use glass::fresnel_glass;
 pub use lambert::Lambert;
 pub use layered::{Layer, Layered, MAX_LAYERS};
 pub use phong::Phong;
-pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
+pub use reflection::{GLOSSY_SPLIT_DEPTH, GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
 
 use crate::lesson::color::Color;

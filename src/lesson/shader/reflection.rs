@@ -23,6 +23,10 @@
 //!   `num_samples` points of each camera ray are one block of a set shared by all the pixel's camera rays)
 //!   or per shading point ([`DiscSampler::Stratified`]) rather than independent, which gives the same
 //!   picture with markedly less noise (see `benches/error_vs_time.rs` and docs/measurements.md);
+//! - below [`GLOSSY_SPLIT_DEPTH`] a glossy mirror traces one ray, not two: two white glossy mirrors facing
+//!   each other would otherwise trace 2^depth rays for each camera ray (2^60 for `maxTraceDepth 60`, a
+//!   render that never ends), since a white mirror's rays keep their full weight and are never pruned. The
+//!   split depth is the course's default `maxTraceDepth`, so its scenes trace exactly the course's rays;
 //! - each spawned ray's `weight` is scaled by the full multiplier, not by its 1/N share of the average, as
 //!   every averaging shader does for adaptive depth control (`Scene::min_ray_weight`): pruning the samples
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
@@ -42,6 +46,11 @@ use std::f32::consts::FRAC_PI_2;
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
 /// uses 2.
 pub const SECONDARY_GLOSSY_SAMPLES: u32 = 2;
+
+/// The deepest ray a glossy mirror still splits into [`SECONDARY_GLOSSY_SAMPLES`] rays; for a deeper ray it
+/// traces one, so that the number of rays grows with the depth limit, not exponentially. 4 is the course's
+/// default `maxTraceDepth`.
+pub const GLOSSY_SPLIT_DEPTH: u32 = 4;
 
 /// The most rays a glossy mirror averages per shading point: twenty times the slide's 200, and low enough
 /// that a mistyped count is refused at once instead of rendering for days.
@@ -114,8 +123,11 @@ impl Shader for Reflection {
         if self.glossiness >= 1.0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
-        let num_samples =
-            if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
+        let num_samples = match ray.depth {
+            0 => self.num_samples,
+            1..=GLOSSY_SPLIT_DEPTH => self.num_samples.min(SECONDARY_GLOSSY_SAMPLES),
+            _ => 1,
+        };
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
         // The first bounce of a camera ray may share its pixel's set of points (the joint sampler); deeper
         // bounces take a set of their own.
