@@ -150,7 +150,7 @@ fn heat_colour(t: f32) -> image::Rgb<u8> {
 }
 
 /// Height of the colour bar under a heat map, in pixels.
-const COLOUR_BAR_HEIGHT: u32 = 12;
+pub const COLOUR_BAR_HEIGHT: u32 = 12;
 
 /// The heat map with its colour bar below it: the ramp from 0 to `full_scale` levels, captioned with its
 /// scale ([`heat_map_scale`]), so that the picture says what its colours mean.
@@ -161,12 +161,20 @@ pub fn with_colour_bar(heat: &image::RgbImage, full_scale: u8) -> Result<image::
 
 /// The heat map with the ramp of its colours, from black on the left to white on the right, in a bar below.
 pub fn colour_bar_under(heat: &image::RgbImage) -> image::RgbImage {
-    let width = heat.width();
-    let bar =
-        image::RgbImage::from_fn(width, COLOUR_BAR_HEIGHT, |x, _| heat_colour((x as f32 + 0.5) / width.max(1) as f32));
-    let mut out = image::RgbImage::new(width, heat.height() + COLOUR_BAR_HEIGHT);
-    image::imageops::replace(&mut out, heat, 0, 0);
-    image::imageops::replace(&mut out, &bar, 0, heat.height() as i64);
+    ramp_bar_under(heat, |t| heat_colour(t).0)
+}
+
+/// `picture` with a colour bar [`COLOUR_BAR_HEIGHT`] pixels high below it, as wide as it: column `x` of the
+/// bar shows `ramp((x + 0.5) / width)`, the ramp from 0 on the left to 1 on the right. Every heat map's bar
+/// (the differences', the debug views') is drawn here.
+pub fn ramp_bar_under(picture: &image::RgbImage, ramp: impl Fn(f32) -> [u8; 3]) -> image::RgbImage {
+    let width = picture.width();
+    let bar = image::RgbImage::from_fn(width, COLOUR_BAR_HEIGHT, |x, _| {
+        image::Rgb(ramp((x as f32 + 0.5) / width.max(1) as f32))
+    });
+    let mut out = image::RgbImage::new(width, picture.height() + COLOUR_BAR_HEIGHT);
+    image::imageops::replace(&mut out, picture, 0, 0);
+    image::imageops::replace(&mut out, &bar, 0, picture.height() as i64);
     out
 }
 

@@ -6,16 +6,12 @@
 //! The captions are drawn with the DejaVu Sans Mono font the workbook bundles ([`crate::instruments::font`]), through `ab_glyph`, so nothing depends on the fonts of the machine.
 
 use crate::instruments::compare;
-use crate::instruments::font::DEJAVU_SANS_MONO;
-use crate::lesson::error::{Error, Result};
-use ab_glyph::{Font, FontRef, PxScale, PxScaleFont, ScaleFont, point};
+use crate::instruments::font::{CAPTION_BACKGROUND, caption_font, draw_text};
+use crate::lesson::error::Result;
+use ab_glyph::{Font, PxScaleFont, ScaleFont};
 
-/// The captions' font size in pixels.
-const CAPTION_SIZE: f32 = 14.0;
 /// Space around a caption's text, in pixels.
 const CAPTION_PADDING: u32 = 6;
-const CAPTION_BACKGROUND: [u8; 3] = [32, 32, 32];
-const CAPTION_INK: [u8; 3] = [235, 235, 235];
 
 /// One part of a side-by-side picture.
 pub struct Panel {
@@ -28,9 +24,7 @@ pub struct Panel {
 /// The panels left to right, top-aligned, each with its caption (wrapped to its width) under the tallest
 /// (the difference panel is taller by its colour bar).
 pub fn compose(panels: &[Panel]) -> Result<image::RgbImage> {
-    let font = FontRef::try_from_slice(DEJAVU_SANS_MONO)
-        .map_err(|e| Error::parameter("bundled caption font", "DejaVuSansMono", e))?;
-    let font = font.as_scaled(PxScale::from(CAPTION_SIZE));
+    let font = caption_font()?;
     let height = panels.iter().map(|p| p.image.height()).max().unwrap_or(0);
     let lines: Vec<Vec<String>> = panels.iter().map(|p| wrap(&p.caption, columns(&font, p.image.width()))).collect();
     let line_height = (font.height() + font.line_gap()).ceil() as u32;
@@ -80,30 +74,6 @@ fn wrap(text: &str, columns: usize) -> Vec<String> {
         lines.push(line);
     }
     lines
-}
-
-/// Draws one line of text with its baseline at `y`, starting at `x`, anti-aliased over the background.
-fn draw_text<F: Font>(out: &mut image::RgbImage, font: &PxScaleFont<F>, text: &str, mut x: f32, y: f32) {
-    for c in text.chars() {
-        let glyph = font.scaled_glyph(c);
-        let advance = font.h_advance(glyph.id);
-        let glyph = ab_glyph::Glyph { position: point(x, y), ..glyph };
-        if let Some(outline) = font.outline_glyph(glyph) {
-            let bounds = outline.px_bounds();
-            outline.draw(|gx, gy, coverage| {
-                let (px, py) = (bounds.min.x as i64 + gx as i64, bounds.min.y as i64 + gy as i64);
-                if px < 0 || py < 0 || px >= out.width() as i64 || py >= out.height() as i64 {
-                    return;
-                }
-                let pixel = out.get_pixel_mut(px as u32, py as u32);
-                for ch in 0..3 {
-                    let (bg, ink) = (pixel[ch] as f32, CAPTION_INK[ch] as f32);
-                    pixel[ch] = (bg + (ink - bg) * coverage.clamp(0.0, 1.0)).round() as u8;
-                }
-            });
-        }
-        x += advance;
-    }
 }
 
 /// A | B | difference: the two renders `a` and `b`, each with its caption, and the heat map of their

@@ -5,11 +5,12 @@ use crate::common;
 
 use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract, scene_file};
 use lecture6::app::cli::Example;
-use lecture6::instruments::debug_view::{DebugView, render_view};
+use lecture6::instruments::debug_view::{DebugImage, DebugView, heat, render_view};
 use lecture6::instruments::ray_tree::{self, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
 use lecture6::instruments::side_by_side::{Panel, compose};
 use lecture6::lesson::observer::{Light, Stop};
 use lecture6::lesson::render::{RenderSettings, render};
+use lecture6::lesson::shader::IntoShader;
 use lecture6::prelude::*;
 
 /// Whether two colours agree to float rounding of sums of a few hundred terms.
@@ -212,7 +213,7 @@ fn a_students_own_shaders_get_ray_trees_that_add_up_to_their_pixels() {
 }
 
 /// Draws a view of the glossy scene at 64 x 48 and returns it, after checking its size.
-fn view(v: DebugView, extra: &[&str]) -> lecture6::instruments::debug_view::DebugImage {
+fn view(v: DebugView, extra: &[&str]) -> DebugImage {
     let mut args = vec!["--width", "64", "--height", "48"];
     args.extend(extra);
     let (scene, settings) = common::parse::<glossy::Options>(&args).prepare().unwrap();
@@ -250,6 +251,189 @@ fn the_rays_view_shows_what_adaptive_depth_control_saves() {
     let (scene, settings) = cli.prepare().unwrap();
     let exhaustive = render_view(&scene, &settings, DebugView::Rays).unwrap();
     assert!(exhaustive.range.1 > adaptive.range.1, "{:?} vs {:?}", exhaustive.range, adaptive.range);
+}
+
+/// A floor seen from above at an angle, with `shader`, in a frame of `width` x `height` rendered on one thread.
+fn floor_scene(shader: impl IntoShader, width: u32, height: u32) -> (Scene, RenderSettings) {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 40.0, -60.0), Vector::new(0.0, 0.0, 20.0), 70.0));
+    scene.add(Node::new(Plane::new(0.0, f32::INFINITY), shader));
+    (scene, RenderSettings { width, height, threads: Some(1), ..Default::default() })
+}
+
+/// A pixel of the `uv` view that sees a surface: the surface's own u/v there, and the view's colour.
+type SeenUv = ((f32, f32), [u8; 3]);
+
+/// The `uv` view of the floor with `shader`, and for each pixel whose centre sees the floor, the floor's own
+/// u/v there and the view's colour, after checking that the pixels that see nothing are dark blue.
+fn floor_uv_view(shader: impl IntoShader) -> (DebugImage, Vec<SeenUv>) {
+    let (scene, settings) = floor_scene(shader, 64, 48);
+    let view = render_view(&scene, &settings, DebugView::Uv).unwrap();
+    let camera = scene.camera.frame(64, 48);
+    let mut seen = Vec::new();
+    for (x, y, colour) in view.image.enumerate_pixels() {
+        match scene.closest_hit(&camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5)) {
+            Some((info, _)) => seen.push((info.uv(), colour.0)),
+            None => assert_eq!(colour.0, [0, 0, 96], "pixel {x},{y} sees nothing"),
+        }
+    }
+    assert!(seen.len() > 64 * 48 / 3, "the floor fills the lower part of the picture");
+    (view, seen)
+}
+
+/// The colour the `uv` view gives texture coordinates (u, v): their fractions, as red and green.
+fn uv_colour((u, v): (f32, f32)) -> [u8; 3] {
+    let code = |t: f32| ((t - t.floor()) * 255.0).round() as u8;
+    [code(u), code(v), 0]
+}
+
+/// Whether two colours differ by at most `levels` in every channel.
+fn within(a: [u8; 3], b: [u8; 3], levels: u8) -> bool {
+    (0..3).all(|c| a[c].abs_diff(b[c]) <= levels)
+}
+
+/// A texture of a student's own that says nothing of how it maps u/v (`get_tex_color` alone).
+struct Stripes;
+
+impl Texture for Stripes {
+    fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
+        Color::gray(if info.uv().0.rem_euclid(2.0) < 1.0 { 0.2 } else { 0.8 })
+    }
+}
+
+/// A shader of a student's own that reads no texture it names (`shade` alone).
+struct Flat;
+
+impl Shader for Flat {
+    fn shade(&self, _ray: &Ray, info: &IntersectionInfo, _ctx: &mut TraceContext) -> Color {
+        Color::gray(info.uv().0.fract().abs())
+    }
+}
+
+/// The scaling of the bitmap on the floor in [`the_uv_view_shows_the_coordinates_the_texture_looks_up`].
+const TILE: f32 = 7.0;
+/// The checker's squares per unit there.
+const SQUARES: f32 = 0.25;
+
+/// `--view uv` shows the coordinates the floor's texture looks up, after its scaling: a bitmap's u/v divided
+/// by its scaling (also under a layer, the slides' floor), a checker's times its scaling; a texture or a
+/// shader of a student's own that says nothing gets the surface's own u/v. The scale text names which.
+#[test]
+fn the_uv_view_shows_the_coordinates_the_texture_looks_up() {
+    let bitmap = Arc::new(Bitmap::from_pixels(2, 2, vec![Color::BLACK, Color::WHITE, Color::WHITE, Color::BLACK]));
+    let tiles = || BitmapTexture::new(bitmap.clone()).with_scaling(TILE);
+    let mut layered = Layered::new();
+    layered.add_layer(Lambert::new(tiles()), Color::WHITE, None);
+    layered.add_layer(Reflection::new(0.9), Color::gray(0.02), None);
+    let checker = CheckerTexture { color1: Color::BLACK, color2: Color::WHITE, scaling: SQUARES };
+    type Mapping = fn((f32, f32)) -> (f32, f32);
+    let cases: [(&str, Arc<dyn Shader>, Mapping, &str); 5] = [
+        ("bitmap", Arc::new(Lambert::new(tiles())), |(u, v)| (u / TILE, v / TILE), "(BitmapTexture)"),
+        ("layered", Arc::new(layered), |(u, v)| (u / TILE, v / TILE), "(BitmapTexture)"),
+        ("checker", Arc::new(Phong::new(checker, 0.2, 20.0)), |(u, v)| (u * SQUARES, v * SQUARES), "(CheckerTexture)"),
+        ("own texture", Arc::new(Lambert::new(Stripes)), |uv| uv, "(Stripes)"),
+        ("own shader", Arc::new(Flat), |uv| uv, "elsewhere (Flat)"),
+    ];
+    for (case, shader, mapping, named) in cases {
+        let (view, seen) = floor_uv_view(shader);
+        for &(uv, colour) in &seen {
+            assert!(within(colour, uv_colour(mapping(uv)), 1), "{case}: {colour:?} at u/v {uv:?}");
+        }
+        if !case.starts_with("own") {
+            let unscaled = seen.iter().filter(|&&(uv, colour)| !within(colour, uv_colour(uv), 8)).count();
+            assert!(unscaled > seen.len() / 2, "{case}: the view shows the unscaled u/v ({unscaled} pixels differ)");
+        }
+        assert!(view.scale.contains(named), "{case}: {}", view.scale);
+    }
+}
+
+/// A shader that traces `extra` more rays (straight up, into nothing) where it is hit: on the floor's left
+/// third none, in the middle 9, on the right 99, so that a pixel's camera ray and its extra rays are 1, 10 or
+/// 100 rays.
+struct Fan;
+
+impl Shader for Fan {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let (x, _) = info.uv();
+        let extra = if x < -8.0 {
+            0
+        } else if x < 8.0 {
+            9
+        } else {
+            99
+        };
+        for _ in 0..extra {
+            ctx.raytrace(&ray.spawn(info, Vector::Y, 1.0));
+        }
+        Color::gray(0.5)
+    }
+}
+
+/// `--view rays` maps the logarithm of the count to the ramp: over counts from 1 to 100, a pixel of 10 rays
+/// (their geometric mean) is mid-ramp, not a tenth of the way. The legend below the view is the ramp's bar
+/// with ticks labelled with the counts whose colours the bar shows there, and the view's pixels are the
+/// render's pixels. 0 shadow rays are dark blue; the depth reached stays linear.
+#[test]
+fn the_rays_view_is_on_a_log_scale_with_its_legend() {
+    let (w, h) = (320, 120);
+    let (scene, settings) = floor_scene(Fan, w, h);
+    let rays = render_view(&scene, &settings, DebugView::Rays).unwrap();
+    assert_eq!(rays.range, (1.0, 100.0));
+    assert!(rays.scale.contains("log scale"), "{}", rays.scale);
+    let counts: Vec<u64> = (0..h)
+        .flat_map(|y| lecture6::lesson::render::render_row(&scene, &settings, y, 0..w).unwrap())
+        .map(|pixel| pixel.counters.total())
+        .collect();
+    for count in [1, 10, 100] {
+        assert!(counts.contains(&count), "no pixel has {count} rays");
+    }
+    let log_position = |count: f32| count.ln() / 100f32.ln();
+    for (i, &count) in counts.iter().enumerate() {
+        let colour = rays.image.get_pixel(i as u32 % w, i as u32 / w).0;
+        assert!(within(colour, heat(log_position(count as f32)), 1), "{count} rays: {colour:?}");
+    }
+    assert!(within(heat(log_position(10.0)), heat(0.5), 1), "10 rays are mid-ramp");
+    assert!(!within(heat(0.5), heat(9.0 / 99.0), 8), "a linear scale would put them a tenth of the way");
+    // The picture is the view with its legend in a strip below: the render's pixels keep their coordinates.
+    let picture = &rays.picture;
+    assert_eq!(picture.width(), w);
+    assert!(picture.height() > h + 12 + 14, "room for the bar, the tick labels and the caption");
+    assert!((0..w).all(|x| (0..h).all(|y| picture.get_pixel(x, y) == rays.image.get_pixel(x, y))));
+    // The ticks: the ends and the 1-2-5 counts between, labelled with their counts, each where the bar shows
+    // its count's colour, with its label drawn under it.
+    let values: Vec<f32> = rays.ticks.iter().map(|t| t.value).collect();
+    assert_eq!(values, [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0]);
+    for tick in &rays.ticks {
+        assert_eq!(tick.label, format!("{}", tick.value));
+        let bar = picture.get_pixel(tick.x, h + 6).0;
+        assert!(within(bar, heat(log_position(tick.value)), 4), "tick {}: bar {bar:?}", tick.label);
+        let ink = (tick.x.saturating_sub(8)..(tick.x + 8).min(w))
+            .flat_map(|x| (h + 12 + 4..h + 12 + 4 + 16).map(move |y| (x, y)))
+            .filter(|&(x, y)| picture.get_pixel(x, y)[0] > 128)
+            .count();
+        assert!(ink > 5, "tick {} has no label under it", tick.label);
+    }
+    // No lamp: no shadow rays, shown dark blue (0 has no logarithm).
+    let shadow = render_view(&scene, &settings, DebugView::ShadowRays).unwrap();
+    assert!(shadow.image.pixels().all(|p| p.0 == [0, 0, 96]), "0 shadow rays are dark blue");
+    assert!(shadow.scale.contains("log scale") && shadow.scale.contains("dark blue: none"), "{}", shadow.scale);
+    // The depth reached (0 or 1 here) is linear: depth 1 is white.
+    let depth = render_view(&scene, &settings, DebugView::DepthReached).unwrap();
+    assert!(depth.scale.contains("linear scale"), "{}", depth.scale);
+    assert!(depth.image.pixels().any(|p| p.0 == [255, 255, 255]) && depth.ticks.len() == 2, "{:?}", depth.ticks);
+}
+
+/// `--view rays` writes the render's picture with the legend strip below it, and says so with the sizes.
+#[test]
+fn a_heat_view_file_is_the_render_with_its_legend_below() {
+    let path = common::root().join("target/inspect/fresnel-rays.png");
+    let _ = std::fs::remove_file(&path);
+    let cli = common::parse::<fresnel::Options>(&["--width", "96", "--height", "72", "-o", path.to_str().unwrap()]);
+    let line = lecture6::app::cli::commands::write_view("fresnel", &cli, DebugView::Rays).unwrap();
+    let (width, height) = image::image_dimensions(&path).unwrap();
+    assert_eq!(width, 96);
+    assert!(height > 72, "no legend strip");
+    assert!(line.contains(&format!("96x72 and its legend below, 96x{height} in all")), "{line}");
+    assert!(line.contains("log scale"), "{line}");
 }
 
 #[test]

@@ -22,8 +22,8 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
     ray_tree::describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)
 }
 
-/// `--view`: draws the example's debug view and writes it to `--output`, or `out/NAME-VIEW.png`; returns
-/// the line to print (where it went, and its scale).
+/// `--view`: draws the example's debug view and writes it to `--output`, or `out/NAME-VIEW.png` (a heat view
+/// with its legend in a strip below it); returns the lines to print (its size, where it went, and its scale).
 pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
     let (scene, settings) = args.prepare()?;
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
@@ -32,11 +32,15 @@ pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Res
     input::check_not_an_input(&path, "the debug view")?;
     let start = Instant::now();
     let picture = render_view(&scene, &settings, view)?;
-    save_atomically(&path, |file| picture.image.write_to(file, image::ImageFormat::Png))?;
+    save_atomically(&path, |file| picture.picture.write_to(file, image::ImageFormat::Png))?;
+    let (width, height) = picture.picture.dimensions();
+    let size = if height > settings.height {
+        format!("{width}x{} and its legend below, {width}x{height} in all", settings.height)
+    } else {
+        format!("{width}x{height}")
+    };
     Ok(format!(
-        "{name}: view {label}, {}x{}, {:.3} s -> {}\n{name}: scale: {}\n",
-        settings.width,
-        settings.height,
+        "{name}: view {label}, {size}, {:.3} s -> {}\n{name}: scale: {}\n",
         start.elapsed().as_secs_f64(),
         path.display(),
         picture.scale

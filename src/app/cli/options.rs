@@ -129,8 +129,9 @@ pub struct CommonArgs {
     #[arg(long, value_enum, default_value_t = TraceFormat::Text, help_heading = COMMON)]
     pub trace_format: TraceFormat,
     /// Write a false-colour debug view instead of the shaded picture (to --output, or out/EXAMPLE-VIEW.png)
-    /// and print its scale: the normals, u/v or distance of what each pixel sees, or a heat map of the rays,
-    /// the shadow rays or the deepest ray traced per pixel.
+    /// and print its scale: the normals, texture coordinates (after the texture's scaling) or distance of
+    /// what each pixel sees, or a heat map of the rays or shadow rays (log scale) or the deepest ray (linear)
+    /// traced per pixel, with its legend in a strip below the picture.
     #[arg(long, value_enum, help_heading = COMMON)]
     pub view: Option<DebugView>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write

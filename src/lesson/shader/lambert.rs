@@ -9,6 +9,7 @@ use crate::lesson::light::diffuse_light;
 use crate::lesson::math::faceforward;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
+use crate::lesson::texture::Texture;
 
 /// A perfectly diffuse (matte) surface, lit by the light loop (lectures 2-3).
 #[derive(Clone)]
@@ -29,5 +30,9 @@ impl Shader for Lambert {
         let diffuse = self.color.get(ray, info);
         let n = faceforward(info.normal, ray.dir);
         diffuse * diffuse_light(ctx, info, n)
+    }
+
+    fn texture(&self) -> Option<&dyn Texture> {
+        self.color.texture()
     }
 }

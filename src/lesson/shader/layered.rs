@@ -154,6 +154,14 @@ impl Shader for Layered {
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
         self.layers.iter().any(|layer| casts_caustics(&*layer.shader)).then_some(self as &dyn CausticCaster)
     }
+
+    /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a
+    /// textured Lambert under a faint reflection, the floor's texture. A layer's blend texture is not
+    /// considered: it says how much of the layer shows (a Fresnel blend reads no u/v at all), not what
+    /// colour the surface has.
+    fn texture(&self) -> Option<&dyn Texture> {
+        self.layers.iter().find_map(|layer| layer.shader.texture())
+    }
 }
 
 impl CausticCaster for Layered {

@@ -61,6 +61,8 @@ pub enum PhotonScatter {
 ///   default, `None`: photons land on it, and a diffuse shader finds them in its light loop;
 /// - a shader whose colour depends on the ray's wavelength (a dispersive refraction, or a layer holding one)
 ///   returns `true` from [`Shader::is_dispersive`], so that the renderer traces wavelengths for its scene;
+/// - a shader whose colour comes from a texture returns it from [`Shader::texture`], so that `--view uv`
+///   shows the coordinates that texture looks up; the default, `None`, shows the surface's own u/v;
 /// - [`Shader::name`] names it in the ray tree, its type's name by default.
 pub trait Shader: Send + Sync {
     /// The colour seen along `ray`, which hit a surface as described by `info`.
@@ -77,6 +79,13 @@ pub trait Shader: Send + Sync {
     /// The renderer traces wavelengths separately only for scenes where some shader says so.
     fn is_dispersive(&self) -> bool {
         false
+    }
+
+    /// The texture this shader reads its colour from at the hit's u/v, if any. `--view uv` shows the
+    /// coordinates that texture looks up ([`Texture::lookup_uv`]); for `None`, the default (a shader that
+    /// reads no texture), it shows the surface's own u/v and says so.
+    fn texture(&self) -> Option<&dyn Texture> {
+        None
     }
 
     /// What the ray tree (`--trace-pixel`) calls this shader: its type's name.
@@ -148,6 +157,15 @@ impl ColorSource {
         match self {
             ColorSource::Color(c) => *c,
             ColorSource::Texture(t) => t.get_tex_color(ray, info),
+        }
+    }
+
+    /// The texture, if the colour comes from one (what a shader of this colour returns from
+    /// [`Shader::texture`]).
+    pub fn texture(&self) -> Option<&dyn Texture> {
+        match self {
+            ColorSource::Color(_) => None,
+            ColorSource::Texture(t) => Some(&**t),
         }
     }
 }

@@ -9,6 +9,7 @@ use crate::lesson::light::light_loop;
 use crate::lesson::math::{faceforward, reflect};
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
+use crate::lesson::texture::Texture;
 
 /// A diffuse surface with the lamps' highlights on it (the course's Phong shader).
 #[derive(Clone)]
@@ -37,5 +38,9 @@ impl Shader for Phong {
             if cos_gamma > 0.0 { irradiance * (self.specular * cos_gamma.powf(self.exponent)) } else { Color::BLACK }
         });
         diffuse_color * light.irradiance + light.highlights
+    }
+
+    fn texture(&self) -> Option<&dyn Texture> {
+        self.color.texture()
     }
 }

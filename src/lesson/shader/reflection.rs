@@ -41,6 +41,7 @@ use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use crate::lesson::scene::TraceContext;
+use crate::lesson::texture::Texture;
 use std::f32::consts::FRAC_PI_2;
 
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
@@ -154,6 +155,11 @@ impl Shader for Reflection {
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
         Some(self)
+    }
+
+    /// The texture of a textured mirror's colour.
+    fn texture(&self) -> Option<&dyn Texture> {
+        self.multiplier.texture()
     }
 }
 

@@ -20,9 +20,13 @@ pub struct CheckerTexture {
 
 impl Texture for CheckerTexture {
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
-        let (u, v) = info.uv();
-        let x = floor(u * self.scaling) as i64;
-        let y = floor(v * self.scaling) as i64;
+        let (u, v) = self.lookup_uv(info.uv());
+        let (x, y) = (floor(u) as i64, floor(v) as i64);
         if (x + y).rem_euclid(2) == 0 { self.color1 } else { self.color2 }
+    }
+
+    /// The surface's u/v times `scaling`: one square per unit.
+    fn lookup_uv(&self, (u, v): (f32, f32)) -> (f32, f32) {
+        (u * self.scaling, v * self.scaling)
     }
 }

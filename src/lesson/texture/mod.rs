@@ -19,6 +19,14 @@ pub trait Texture: Send + Sync {
     /// The texture's colour where `ray` hit the surface described by `info`.
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
 
+    /// The coordinates this texture looks its colour up at, for a point of a surface whose texture
+    /// coordinates are `uv` (the hit's `info.uv()`): after the texture's own scaling, before any wrapping.
+    /// `--view uv` shows them, wrapped to [0, 1), one ramp per tile of the texture. The default, for a
+    /// texture that reads the surface's u/v as they are (or does not read them at all): `uv` unchanged.
+    fn lookup_uv(&self, uv: (f32, f32)) -> (f32, f32) {
+        uv
+    }
+
     /// Whether the colour depends on the ray's wavelength (a dispersive Fresnel texture), so that the
     /// renderer must trace wavelengths separately.
     fn is_dispersive(&self) -> bool {
