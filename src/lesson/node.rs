@@ -105,6 +105,7 @@ impl Node {
     }
 
     /// The second phase: the surface at a hit that [`Node::hit`] found for the same ray, in world space.
+    #[inline]
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
         match &self.transform {
             None => self.geometry.surface(ray, hit),

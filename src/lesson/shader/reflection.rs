@@ -114,6 +114,27 @@ impl Shader for Reflection {
         if self.glossiness >= 1.0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
+        self.shade_glossy(ray, info, n, ctx, multiplier)
+    }
+
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        Some(self)
+    }
+}
+
+impl Reflection {
+    /// A glossy mirror's colour: the average of `num_samples` rays in its cone (the slide's steps 1-7), times
+    /// the mirror's colour `multiplier`. A function of its own, kept out of `shade`, so that a perfect
+    /// mirror's ray does not pay for setting up the cone's loop it never runs.
+    #[inline(never)]
+    fn shade_glossy(
+        &self,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        n: Vector,
+        ctx: &mut TraceContext,
+        multiplier: Color,
+    ) -> Color {
         let num_samples =
             if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
@@ -138,10 +159,6 @@ impl Shader for Reflection {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
         sum * multiplier / kept as f32
-    }
-
-    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        Some(self)
     }
 }
 
