@@ -105,19 +105,15 @@ impl Reflection {
         let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
         ctx.raytrace(&new_ray) * m
     }
+}
 
-    /// A glossy mirror's colour: the average of `num_samples` rays in its cone (the slide's steps 1-7), times
-    /// the mirror's colour `multiplier`. A function of its own, kept out of `shade`, so that a perfect
-    /// mirror's ray does not pay for setting up the cone's loop it never runs.
-    #[inline(never)]
-    fn shade_glossy(
-        &self,
-        ray: &Ray,
-        info: &IntersectionInfo,
-        n: Vector,
-        ctx: &mut TraceContext,
-        multiplier: Color,
-    ) -> Color {
+impl Shader for Reflection {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let multiplier = self.multiplier.get(ray, info);
+        let n = faceforward(info.normal, ray.dir);
+        if self.glossiness >= 1.0 {
+            return self.trace_mirror(ray, info, n, ctx, multiplier);
+        }
         let num_samples =
             if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
@@ -142,17 +138,6 @@ impl Reflection {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
         sum * multiplier / kept as f32
-    }
-}
-
-impl Shader for Reflection {
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let multiplier = self.multiplier.get(ray, info);
-        let n = faceforward(info.normal, ray.dir);
-        if self.glossiness >= 1.0 {
-            return self.trace_mirror(ray, info, n, ctx, multiplier);
-        }
-        self.shade_glossy(ray, info, n, ctx, multiplier)
     }
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
