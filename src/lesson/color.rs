@@ -132,7 +132,36 @@ pub fn srgb8_to_linear_table() -> &'static [f32; 256] {
     TABLE.get_or_init(|| std::array::from_fn(|i| srgb_to_linear(i as f32 / 255.0)))
 }
 
-/// Encodes a linear colour as three 8-bit sRGB codes (round to nearest).
+/// Encodes a linear colour as three 8-bit sRGB codes (round to nearest): a channel's code is the number of
+/// codes whose lower edge ([`srgb8_edges`]) it reaches, the same code as [`srgb8_code`] gives, found by a
+/// binary search instead of a `powf` per channel.
 pub fn to_srgb8(c: Color) -> [u8; 3] {
-    c.to_array().map(|v| (linear_to_srgb(v) * 255.0 + 0.5) as u8)
+    let edges = srgb8_edges();
+    // NaN reaches no edge (code 0), as `linear_to_srgb` maps it to 0.
+    c.to_array().map(|v| edges.partition_point(|&edge| edge <= v) as u8)
+}
+
+/// The 8-bit sRGB code of the linear value `v`, rounded to nearest, by the formula: what [`to_srgb8`] gives.
+pub fn srgb8_code(v: f32) -> u8 {
+    (linear_to_srgb(v) * 255.0 + 0.5) as u8
+}
+
+/// For each code from 1 to 255, the smallest linear value that [`srgb8_code`] encodes to it or above: where
+/// the codes step up. Found once by bisection over the floats from 0 to 1 (positive floats are ordered as
+/// their bit patterns are), from the formula itself, so that the codes are the formula's.
+pub fn srgb8_edges() -> &'static [f32; 255] {
+    use std::sync::OnceLock;
+    static EDGES: OnceLock<[f32; 255]> = OnceLock::new();
+    EDGES.get_or_init(|| {
+        std::array::from_fn(|i| {
+            let code = i as u8 + 1;
+            // Code 0 at 0, 255 at 1: the edge lies above `below` and at or below `at`.
+            let (mut below, mut at) = (0f32.to_bits(), 1f32.to_bits());
+            while at - below > 1 {
+                let mid = below + (at - below) / 2;
+                if srgb8_code(f32::from_bits(mid)) >= code { at = mid } else { below = mid }
+            }
+            f32::from_bits(at)
+        })
+    })
 }

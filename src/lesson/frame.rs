@@ -31,8 +31,8 @@ impl Frame {
     pub fn get(&self, x: u32, y: u32) -> Color {
         self.pixels[(y * self.width + x) as usize]
     }
-    /// The frame encoded as 8-bit sRGB, row by row in parallel (on the current rayon pool): the encoding's
-    /// `powf` per channel would otherwise be a serial step after the parallel render.
+    /// The frame encoded as 8-bit sRGB, row by row in parallel (on the current rayon pool): the encoding would
+    /// otherwise be a serial step after the parallel render.
     pub fn to_rgb8(&self) -> image::RgbImage {
         let w = self.width as usize;
         let mut bytes = vec![0u8; self.pixels.len() * 3];

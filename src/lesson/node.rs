@@ -105,6 +105,7 @@ impl Node {
     }
 
     /// The second phase: the surface at a hit that [`Node::hit`] found for the same ray, in world space.
+    #[inline]
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
         match &self.transform {
             None => self.geometry.surface(ray, hit),
@@ -170,15 +171,24 @@ pub const LINEAR_NODES: usize = 8;
 /// graze the faces, whose distances differ much more); nodes meant to be apart are far farther apart.
 pub const TIE: f32 = gamma(64);
 
-/// The nearest hit found so far over a list of nodes.
+/// How far apart two hits near `distance` may be and still be a tie ([`TIE`]), for a ray whose start's
+/// largest coordinate is `start_scale`.
+#[inline]
+fn tie(start_scale: f32, distance: f32) -> f32 {
+    TIE * (start_scale + distance)
+}
+
+/// The nearest hit found so far over the nodes a tree leads the ray to, which come in no particular order.
 struct Closest {
+    /// `max_abs(ray.start)`, the ray's part of the tie's scale: the same for every node, found once.
+    start_scale: f32,
     t_max: f32,
     best: Option<(Hit, usize)>,
 }
 
 impl Closest {
-    fn new() -> Closest {
-        Closest { t_max: f32::INFINITY, best: None }
+    fn new(ray: &Ray) -> Closest {
+        Closest { start_scale: max_abs(ray.start), t_max: f32::INFINITY, best: None }
     }
 
     /// Tests node `i`: a hit before the best so far wins, unless it is a tie ([`TIE`]); a tie goes to the
@@ -187,8 +197,8 @@ impl Closest {
     fn consider(&mut self, nodes: &[Node], i: usize, ray: &Ray) {
         let limit = match self.best {
             None => f32::INFINITY,
-            Some((_, b)) if i < b => self.t_max + self.tie(ray),
-            Some(_) => self.t_max - self.tie(ray),
+            Some((_, b)) if i < b => self.t_max + tie(self.start_scale, self.t_max),
+            Some(_) => self.t_max - tie(self.start_scale, self.t_max),
         };
         if let Some(hit) = nodes[i].hit(ray, limit) {
             self.t_max = hit.distance;
@@ -196,16 +206,10 @@ impl Closest {
         }
     }
 
-    /// How far apart two hits near the best one may be and still be a tie.
-    #[inline]
-    fn tie(&self, ray: &Ray) -> f32 {
-        TIE * (max_abs(ray.start) + self.t_max)
-    }
-
     /// The farthest a node's box may start and still hold a hit that wins: the best distance, or a tie.
     #[inline]
-    fn reach(&self, ray: &Ray) -> f32 {
-        if self.best.is_some() { self.t_max + self.tie(ray) } else { self.t_max }
+    fn reach(&self) -> f32 {
+        if self.best.is_some() { self.t_max + tie(self.start_scale, self.t_max) } else { self.t_max }
     }
 
     /// The winner and where it was hit.
@@ -215,13 +219,20 @@ impl Closest {
 }
 
 /// The nearest node hit by the ray, testing every node in turn (the slides' loop). In the scene's order a
-/// later node wins only when it is closer by more than a tie ([`TIE`]), so ties go to the earlier node.
+/// later node wins only when it is closer by more than a tie ([`TIE`]), so ties go to the earlier node: after
+/// each hit, the next nodes are searched up to that hit's distance less a tie.
+#[inline]
 pub fn nearest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
-    let mut closest = Closest::new();
-    for i in 0..nodes.len() {
-        closest.consider(nodes, i, ray);
+    let start_scale = max_abs(ray.start);
+    let mut nearest = None;
+    let mut limit = f32::INFINITY;
+    for node in nodes {
+        if let Some(hit) = node.hit(ray, limit) {
+            limit = hit.distance - tie(start_scale, hit.distance);
+            nearest = Some((hit, node));
+        }
     }
-    closest.finish(nodes)
+    nearest
 }
 
 impl NodeTree {
@@ -249,15 +260,15 @@ impl NodeTree {
 
     /// The nearest of `nodes` (the ones the tree was built over) hit by the ray, and where.
     pub fn nearest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
-        let mut closest = Closest::new();
+        let mut closest = Closest::new(ray);
         for &i in &self.unbounded {
             closest.consider(nodes, i as usize, ray);
         }
-        self.bvh.traverse(ray.start, ray.dir, closest.reach(ray), |range, t_max| {
+        self.bvh.traverse(ray.start, ray.dir, closest.reach(), |range, t_max| {
             for &i in &self.bounded[range] {
                 closest.consider(nodes, i as usize, ray);
             }
-            *t_max = closest.reach(ray);
+            *t_max = closest.reach();
             false
         });
         closest.finish(nodes)

@@ -173,6 +173,7 @@ impl Scene {
 
     /// The nearest node hit by the ray, and where (the first phase of [`Scene::closest_hit`]: [`Node::hit`]
     /// on every node, or on the nodes the node tree leads the ray to).
+    #[inline(always)]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, &Node)> {
         match &self.node_tree {
             Some(tree) => tree.nearest_hit(&self.nodes, ray),
@@ -181,7 +182,9 @@ impl Scene {
     }
 
     /// The closest node hit by the ray, and its surface there: the nearest hit is found first
-    /// ([`Scene::nearest_hit`]), and only the winner's surface is described ([`Node::surface`]).
+    /// ([`Scene::nearest_hit`]), and only the winner's surface is described ([`Node::surface`]). Inlined
+    /// into `raytrace`, so that the surface description is written once, where the shader reads it.
+    #[inline(always)]
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
         let (hit, node) = self.nearest_hit(ray)?;
         Some((node.surface(ray, &hit)?, node))

@@ -4,7 +4,7 @@
 use lecture6::Color;
 use lecture6::lesson::bitmap::{Bitmap, Filter, Wrap};
 use lecture6::lesson::camera::Camera;
-use lecture6::lesson::color::{linear_to_srgb, srgb_to_linear, to_srgb8};
+use lecture6::lesson::color::{linear_to_srgb, srgb_to_linear, srgb8_code, srgb8_edges, to_srgb8};
 use lecture6::lesson::geometry::{Cube, Geometry, Plane, Sphere};
 use lecture6::lesson::math::{OrthonormalBasis, Vector, faceforward, reflect};
 use lecture6::lesson::ray::Ray;
@@ -52,6 +52,19 @@ fn srgb_round_trips_every_8_bit_code() {
     }
     assert!((linear_to_srgb(2.0) - 1.0).abs() < 1e-6);
     assert_eq!(linear_to_srgb(f32::NAN), 0.0);
+}
+
+#[test]
+fn srgb8_codes_from_the_edges_are_the_formulas() {
+    // Every 97th float from 0 to 1 (about 11 million, some in every code), each edge and the float below it,
+    // and values outside [0, 1].
+    let below_one = 1f32.to_bits();
+    let samples = (0..=below_one).step_by(97).map(f32::from_bits);
+    let edges = srgb8_edges().iter().flat_map(|&e| [e, f32::from_bits(e.to_bits() - 1)]);
+    let outside = [-1.0, -0.0, 1.5, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
+    for v in samples.chain(edges).chain(outside) {
+        assert_eq!(to_srgb8(Color::gray(v))[0], srgb8_code(v), "linear {v}");
+    }
 }
 
 #[test]

@@ -23,15 +23,24 @@ impl Sphere {
         Sphere { center, radius }
     }
 
-    /// The two ray parameters where the ray meets the sphere, smaller first.
+    /// The two ray parameters where the ray meets the sphere, smaller first; `None` when the ray's line
+    /// misses the sphere, or when the ray starts outside it and points away from its centre (both
+    /// parameters would be negative: the sphere is behind the ray).
     ///
     /// The discriminant is computed as r^2 - |f|^2 with f the offset from the centre to the ray's closest
     /// point (pbrt-v4, section 6.8.4), and the roots by the cancellation-free form, so that rays starting
     /// far away or right on the surface still get accurate parameters.
     fn roots(&self, ray: &Ray) -> Option<(f32, f32)> {
         let oc = ray.start - self.center;
-        let a = ray.dir.length_squared();
         let b = oc.dot(ray.dir);
+        let c = oc.length_squared() - self.radius * self.radius;
+        // Outside (c > 0) and going away (b > 0): no square root or division needed to know that the sphere
+        // is behind the ray (Ericson, "Real-Time Collision Detection", 5.3.2). Rays that leave the sphere's
+        // surface outwards, a reflection off it or a refraction out of it, stop here.
+        if c > 0.0 && b > 0.0 {
+            return None;
+        }
+        let a = ray.dir.length_squared();
         let f = oc - (b / a) * ray.dir;
         // Most rays miss: decide that from squared lengths, before any square root or division.
         if f.length_squared() > self.radius * self.radius {
@@ -42,7 +51,6 @@ impl Sphere {
         if disc.is_nan() || disc < 0.0 {
             return None;
         }
-        let c = oc.length_squared() - self.radius * self.radius;
         let q = -(b + disc.sqrt().copysign(b));
         let (t0, t1) = (q / a, c / q);
         Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
