@@ -64,7 +64,7 @@ impl Wrap {
 
     /// Maps an integer texel index into [0, n).
     #[inline(always)]
-    fn texel(self, i: i64, n: usize) -> usize {
+    pub fn texel(self, i: i64, n: usize) -> usize {
         // Inside the image every mode leaves the index as it is: no division.
         if (0..n as i64).contains(&i) {
             return i as usize;

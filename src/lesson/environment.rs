@@ -51,12 +51,13 @@ use crate::lesson::error::{Error, Result};
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::math::Vector;
 use rayon::prelude::*;
+use std::any::Any;
 use std::f32::consts::{FRAC_1_PI, PI};
 use std::path::Path;
 use std::sync::Arc;
 
 /// The course's `Environment` interface (`getEnvironment(dir)`).
-pub trait Environment: Send + Sync {
+pub trait Environment: Any + Send + Sync {
     /// The colour seen in the unit direction `dir`.
     fn get(&self, dir: Vector) -> Color;
 }

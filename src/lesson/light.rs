@@ -57,6 +57,9 @@ pub fn light_loop(
     n: Vector,
     mut each_lamp: impl FnMut(Vector, Color) -> Color,
 ) -> Lighting {
+    if ctx.slides.is_some() {
+        return crate::lesson::slide::light_loop(ctx, info, n, each_lamp);
+    }
     let scene = ctx.scene;
     let mut irradiance = scene.ambient;
     let mut highlights = Color::BLACK;

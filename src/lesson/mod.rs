@@ -35,6 +35,7 @@ pub mod rng;
 pub mod sampling;
 pub mod scene;
 pub mod shader;
+pub mod slide;
 pub mod spectral;
 pub mod texture;
 pub mod tone_mapping;

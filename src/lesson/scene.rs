@@ -25,6 +25,7 @@ use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
 use crate::lesson::shader::Layer;
+use crate::lesson::slide::{self, Slides};
 use crate::lesson::spectral::Illuminant;
 use std::sync::Arc;
 
@@ -267,6 +268,9 @@ pub struct TraceContext<'a> {
     /// Set when a ray that carries a wavelength hits a node whose shader depends on it: from there on the
     /// path is its wavelength's own (hero-wavelength sampling splits there; see [`crate::lesson::render`]).
     pub met_dispersion: bool,
+    /// Set when the slides' reading renders (`--slide`, [`crate::lesson::slide`]): `raytrace`, `visible` and
+    /// the light loop then run the slides' own versions, for the workbook's shaders and a student's alike.
+    pub(crate) slides: Option<&'a Slides>,
 }
 
 impl<'a> TraceContext<'a> {
@@ -279,6 +283,7 @@ impl<'a> TraceContext<'a> {
             counters: Counters::default(),
             observer: None,
             met_dispersion: false,
+            slides: None,
         }
     }
 
@@ -286,6 +291,9 @@ impl<'a> TraceContext<'a> {
     /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
     /// environment when nothing is hit; otherwise whatever the hit node's shader says.
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
+        if self.slides.is_some() {
+            return slide::raytrace(self, ray);
+        }
         self.observe(|o| o.ray_begins(ray));
         if ray.depth > self.scene.max_depth {
             return self.stop(Stop::DepthLimit);
@@ -332,6 +340,9 @@ impl<'a> TraceContext<'a> {
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
     #[inline]
     pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
+        if self.slides.is_some() {
+            return slide::visible(self, from, to);
+        }
         self.counters.shadow_rays += 1;
         let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
         let to_light = to - start;

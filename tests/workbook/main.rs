@@ -31,6 +31,7 @@ mod properties;
 mod reflection_refraction;
 mod regression;
 mod scene_file;
+mod slide;
 mod stress;
 mod study;
 mod transform;

@@ -3,11 +3,12 @@
 
 use super::options::CommonArgs;
 use crate::lesson::environment;
-use crate::lesson::error::Result;
+use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::photon_map::PhotonMap;
 use crate::lesson::render::{RenderSettings, RenderStats, render, thread_pool};
 use crate::lesson::scene::Scene;
+use crate::lesson::slide;
 use crate::lesson::spectral::SpectralMode;
 use crate::lesson::tone_mapping::Film;
 use std::path::{Path, PathBuf};
@@ -112,7 +113,8 @@ impl<E: Example> Cli<E> {
     /// file's frame size and anti-aliasing): [`Cli::prepare`] gives the ones the render uses.
     pub(crate) fn settings(&self) -> RenderSettings {
         let c = &self.common;
-        let spectral = c.spectral.unwrap_or_default();
+        // The slides' reading traces the slide's K passes.
+        let spectral = if c.slide { SpectralMode::Passes } else { c.spectral.unwrap_or_default() };
         RenderSettings {
             width: c.width.unwrap_or(640),
             height: c.height.unwrap_or(480),
@@ -146,10 +148,13 @@ impl<E: Example> Cli<E> {
         let mut settings = self.settings();
         settings.check()?;
         self.film().check()?;
+        self.check_slide()?;
         let mut scene = self.scene_and_settings(&mut settings)?;
         settings.check()?;
         check(&scene, &settings)?;
-        self.build_photon_map(&mut scene)?;
+        if !self.common.slide {
+            self.build_photon_map(&mut scene)?;
+        }
         Ok((scene, settings))
     }
 
@@ -175,7 +180,9 @@ impl<E: Example> Cli<E> {
             scene.camera = scene.camera.with_fov_axis(axis, default.width as f32 / default.height as f32);
         }
         scene.check()?;
-        scene.relative_to_camera();
+        if !common.slide {
+            scene.relative_to_camera();
+        }
         common.photons.apply(&mut scene.photons);
         scene.photons.check()?;
         Ok(scene)
@@ -202,8 +209,34 @@ impl<E: Example> Cli<E> {
         check: impl FnOnce(&Scene, &RenderSettings) -> Result<()>,
     ) -> Result<(Frame, RenderStats, RenderSettings)> {
         let (scene, settings) = self.prepare_checked(check)?;
-        let (frame, stats) = render(&scene, &settings)?;
+        let (frame, stats) =
+            if self.common.slide { slide::render(&scene, &settings)? } else { render(&scene, &settings)? };
         Ok((frame, stats, settings))
+    }
+
+    /// Refuses, with `--slide`, the options that the slides' reading cannot honour: the instruments that
+    /// watch the default reading, the course's adaptive anti-aliasing and `--show-photons`.
+    fn check_slide(&self) -> Result<()> {
+        let c = &self.common;
+        if !c.slide {
+            return Ok(());
+        }
+        let refused = given(&[
+            ("--trace-pixel", c.trace_pixel.is_some()),
+            ("--view", c.view.is_some()),
+            ("--window", c.window),
+            ("--adaptive-aa", c.adaptive_aa),
+            ("--show-photons", c.photons.show_photons),
+            ("--spectral", c.spectral.is_some_and(|mode| mode != SpectralMode::Passes)),
+        ]);
+        match refused.first() {
+            Some(option) => Err(Error::parameter(
+                "option",
+                *option,
+                "is not part of --slide, which renders only as the slides write it (docs/beyond-the-slides.md)",
+            )),
+            None => Ok(()),
+        }
     }
 
     /// The options given on the command line that change nothing in `scene`: caustic options in a scene

@@ -65,6 +65,12 @@ pub struct CommonArgs {
     /// below the finest sRGB step) is not traced: adaptive ray-tree depth control.
     #[arg(long, help_heading = COMMON)]
     pub exhaustive: bool,
+    /// Render as the slides write it: the slides' own render loop, raytrace, loop over the nodes, one texel
+    /// per look-up, random points of the unit disc, K wavelength passes and the k nearest photons, and none
+    /// of the steps beyond the slides (docs/beyond-the-slides.md). Compare the two with
+    /// `--side-by-side "--slide"`.
+    #[arg(long, help_heading = COMMON)]
+    pub slide: bool,
     /// Seed of every random choice; the same seed gives the same picture, byte for byte.
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,

@@ -262,7 +262,7 @@ impl Mesh {
     }
 
     /// Whether the triangle in slot `i` is ignored by a ray along `dir` (back-face culling).
-    fn culled(&self, i: usize, dir: Vector) -> bool {
+    pub fn culled(&self, i: usize, dir: Vector) -> bool {
         self.backface_culling && face_normal(&self.triangle(i)).dot(dir) > 0.0
     }
 
@@ -274,6 +274,18 @@ impl Mesh {
     /// The triangles' vertices, in the order the BVH stores them.
     pub fn triangles(&self) -> Vec<[Vector; 3]> {
         self.triangles.iter().flat_map(|four| (0..LANES).filter_map(|lane| four.get(lane))).collect()
+    }
+
+    /// Every triangle with its slot, one by one, for a search that tests them all (the slides' reading,
+    /// [`crate::lesson::slide::model_transform`]).
+    pub fn slots(&self) -> impl Iterator<Item = (usize, [Vector; 3])> + '_ {
+        (0..self.triangles.len() * LANES).filter_map(|i| self.triangles[i / LANES].get(i % LANES).map(|t| (i, t)))
+    }
+
+    /// The surface of a hit at ray parameter `t` on the triangle in slot `i`, at the barycentric coordinates
+    /// `b` (the weights of its corners): its hit point, normals, u/v and error bound.
+    pub fn surface_at(&self, i: usize, t: f32, b: [f32; 3]) -> IntersectionInfo {
+        self.info(i, t, b)
     }
 
     /// The acceleration structure (for the benchmark's report).

@@ -24,6 +24,7 @@ pub use sphere::Sphere;
 
 use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
+use std::any::Any;
 
 /// What a ray hit (the course's `IntersectionInfo`).
 ///
@@ -159,7 +160,7 @@ impl Hit {
 /// the surface of the winner. A shape whose surface description is expensive (or that wants to avoid the
 /// second intersection) overrides [`hit`](Geometry::hit), to return just the ray parameter and what it needs
 /// later, together with [`surface`](Geometry::surface), which finishes it.
-pub trait Geometry: Send + Sync {
+pub trait Geometry: Any + Send + Sync {
     /// The closest hit with ray parameter in (0, `t_max`), if any. The ray direction need not be unit
     /// (rays reach here through a node's inverse transform); `distance` is the ray parameter either way.
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo>;

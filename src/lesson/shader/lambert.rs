@@ -23,13 +23,18 @@ impl Lambert {
     pub fn new(color: impl Into<ColorSource>) -> Lambert {
         Lambert { color: color.into() }
     }
+
+    /// The surface's colour at the hit when its diffuse colour there is `diffuse`: `diffuse` times the light
+    /// the point receives.
+    pub fn shade_with(&self, diffuse: Color, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let n = faceforward(info.normal, ray.dir);
+        diffuse * diffuse_light(ctx, info, n)
+    }
 }
 
 impl Shader for Lambert {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let diffuse = self.color.get(ray, info);
-        let n = faceforward(info.normal, ray.dir);
-        diffuse * diffuse_light(ctx, info, n)
+        self.shade_with(self.color.get(ray, info), ray, info, ctx)
     }
 
     fn texture(&self) -> Option<&dyn Texture> {

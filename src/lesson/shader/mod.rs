@@ -24,6 +24,7 @@ use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::texture::Texture;
+use std::any::Any;
 use std::sync::Arc;
 
 /// What a photon does where it hits a surface (see [`CausticCaster::scatter_photon`] and [`crate::lesson::photon_map`]).
@@ -64,7 +65,7 @@ pub enum PhotonScatter {
 /// - a shader whose colour comes from a texture returns it from [`Shader::texture`], so that `--view uv`
 ///   shows the coordinates that texture looks up; the default, `None`, shows the surface's own u/v;
 /// - [`Shader::name`] names it in the ray tree, its type's name by default.
-pub trait Shader: Send + Sync {
+pub trait Shader: Any + Send + Sync {
     /// The colour seen along `ray`, which hit a surface as described by `info`.
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
 

@@ -27,17 +27,28 @@ impl Phong {
     pub fn new(color: impl Into<ColorSource>, specular: f32, exponent: f32) -> Phong {
         Phong { color: color.into(), specular, exponent }
     }
-}
 
-impl Shader for Phong {
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let diffuse_color = self.color.get(ray, info);
+    /// The surface's colour at the hit when its diffuse colour there is `diffuse_color`: the diffuse colour
+    /// times the light the point receives, plus the lamps' highlights.
+    pub fn shade_with(
+        &self,
+        diffuse_color: Color,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        ctx: &mut TraceContext,
+    ) -> Color {
         let n = faceforward(info.normal, ray.dir);
         let light = light_loop(ctx, info, n, |l, irradiance| {
             let cos_gamma = (-ray.dir).dot(reflect(-l, n));
             if cos_gamma > 0.0 { irradiance * (self.specular * cos_gamma.powf(self.exponent)) } else { Color::BLACK }
         });
         diffuse_color * light.irradiance + light.highlights
+    }
+}
+
+impl Shader for Phong {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.shade_with(self.color.get(ray, info), ray, info, ctx)
     }
 
     fn texture(&self) -> Option<&dyn Texture> {

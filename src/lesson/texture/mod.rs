@@ -13,9 +13,10 @@ pub use fresnel::{Fresnel, FresnelMode};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::ray::Ray;
+use std::any::Any;
 
 /// The course's `Texture` interface.
-pub trait Texture: Send + Sync {
+pub trait Texture: Any + Send + Sync {
     /// The texture's colour where `ray` hit the surface described by `info`.
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
 
