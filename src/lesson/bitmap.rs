@@ -159,6 +159,7 @@ impl Bitmap {
     /// The colour at texture coordinates (u, v): u runs left to right and v top to bottom across the image,
     /// one image per unit; outside [0, 1) the `wrap` mode decides.
     pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
+        beyond!(TexelFilter);
         // The storage is chosen once per look-up, not once per texel.
         match &self.texels {
             Texels::Linear(pixels) => self.filtered(u, v, filter, wrap, pixels, |c| c),

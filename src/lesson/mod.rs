@@ -12,6 +12,8 @@ macro_rules! exercise {
     };
 }
 
+#[macro_use]
+pub mod beyond;
 pub mod adaptive_aa;
 pub mod bitmap;
 pub mod camera;

@@ -260,6 +260,7 @@ impl NodeTree {
 
     /// The nearest of `nodes` (the ones the tree was built over) hit by the ray, and where.
     pub fn nearest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
+        beyond!(NodeTree);
         let mut closest = Closest::new(ray);
         for &i in &self.unbounded {
             closest.consider(nodes, i as usize, ray);
@@ -276,6 +277,7 @@ impl NodeTree {
 
     /// Whether any of `nodes` is hit before `t_max` (shadow rays).
     pub fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
+        beyond!(NodeTree);
         if self.unbounded.iter().any(|&i| nodes[i as usize].intersects(ray, t_max)) {
             return true;
         }

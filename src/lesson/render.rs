@@ -199,6 +199,7 @@ impl Stratifier {
 
     /// Prepares the samples of a new pixel: N-rooks draws the pixel's permutation of the rows.
     pub fn start_pixel(&mut self, rng: &mut Rng) {
+        beyond!(StratifiedAa);
         if self.grid == 0 && self.spp > 1 {
             self.rows_key = rng.next_u32();
         }
@@ -497,6 +498,7 @@ impl<'a> PixelTracer<'a> {
     /// dispersive glass is traced again for the others (from the camera: the part before the glass is the
     /// same for every wavelength).
     fn wavelength_samples(&mut self, x: u32, y: u32, per_path: u32, split: bool) -> Color {
+        beyond!(HeroWavelengths);
         let (seed, spp, illuminant) = (self.settings.seed, self.settings.spp, self.scene.illuminant);
         let stream_keys = [seed, x as u64, y as u64];
         let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));

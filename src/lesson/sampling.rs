@@ -66,6 +66,7 @@ impl DiscSamples {
     /// Starts a new set of points for one shading point, drawing whatever randomisation the sampler needs
     /// from `rng`; the joint sampler, given no pixel, draws a set of its own as the stratified one does.
     pub fn new(sampler: DiscSampler, rng: &mut Rng) -> DiscSamples {
+        beyond!(DiscSamples);
         let shift = match sampler {
             DiscSampler::Random => [0, 0],
             DiscSampler::Stratified | DiscSampler::Joint => [rng.next_u32(), rng.next_u32()],
@@ -77,6 +78,7 @@ impl DiscSamples {
     /// sampler, the sample's block of its pixel's set (see the module documentation); with the others, a
     /// new set as [`DiscSamples::new`] makes.
     pub fn for_pixel_sample(sampler: DiscSampler, sample: &PixelSample, count: u32, rng: &mut Rng) -> DiscSamples {
+        beyond!(DiscSamples);
         if sampler != DiscSampler::Joint {
             return DiscSamples::new(sampler, rng);
         }

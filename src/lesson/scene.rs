@@ -130,6 +130,7 @@ impl Scene {
         if max_abs(camera) <= farthest {
             return;
         }
+        beyond!(CameraRelative);
         for node in &mut self.nodes {
             node.transform = Some(node.transform.unwrap_or_default().translate(-camera));
         }
@@ -176,6 +177,7 @@ impl Scene {
     /// on every node, or on the nodes the node tree leads the ray to).
     #[inline(always)]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, &Node)> {
+        beyond!(TwoPhaseHit);
         match &self.node_tree {
             Some(tree) => tree.nearest_hit(&self.nodes, ray),
             None => nearest_hit_linear(&self.nodes, ray),
@@ -302,6 +304,7 @@ impl<'a> TraceContext<'a> {
             self.counters.capped_rays += 1;
             return self.stop(Stop::SafetyCap);
         }
+        beyond!(AdaptiveDepth);
         if ray.weight < self.scene.min_ray_weight {
             self.counters.pruned_rays += 1;
             return self.stop(Stop::WeightCutoff);

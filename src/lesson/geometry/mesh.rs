@@ -322,6 +322,7 @@ impl Geometry for Mesh {
 
     /// The triangle and the barycentric coordinates of the hit; normals and u/v wait for the winner.
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        beyond!(MeshBvh);
         let sheared = ShearedRay::new(ray);
         let mut best = None;
         self.bvh.traverse(ray.start, ray.dir, t_max, |slots, t_max| {
@@ -347,6 +348,7 @@ impl Geometry for Mesh {
     }
 
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        beyond!(MeshBvh);
         let sheared = ShearedRay::new(ray);
         let mut hit = false;
         self.bvh.traverse(ray.start, ray.dir, t_max, |slots, t_max| {

@@ -237,6 +237,7 @@ impl PhotonMap {
     /// that arrived on this side of the surface, weighted by the cone filter, over the disc's area. With
     /// `--show-photons`, a bright dot where a photon lies instead.
     pub fn irradiance(&self, p: Vector, n: Vector) -> Color {
+        beyond!(PhotonGrid);
         if self.show {
             return self.dot(p);
         }

@@ -125,6 +125,7 @@ impl Layered {
 
 impl Shader for Layered {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        beyond!(LayerPruning);
         // From the top down: `uncovered` is how much of the layers seen so far lets through, so a layer's
         // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
         let mut res = Color::BLACK;

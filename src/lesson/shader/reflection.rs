@@ -124,6 +124,7 @@ impl Shader for Reflection {
         if self.glossiness >= 1.0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
+        beyond!(GlossySplit);
         let num_samples = match ray.depth {
             0 => self.num_samples,
             1..=GLOSSY_SPLIT_DEPTH => self.num_samples.min(SECONDARY_GLOSSY_SAMPLES),
