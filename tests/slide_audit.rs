@@ -3,7 +3,6 @@
 //! `cargo test --release --features audit-steps --test slide_audit` (one test, so that no other render runs
 //! in this process while the records are read).
 
-#[allow(dead_code)]
 #[macro_use]
 #[path = "workbook/common/mod.rs"]
 mod common;
