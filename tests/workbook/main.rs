@@ -25,6 +25,7 @@ mod math;
 mod mesh;
 mod output;
 mod photon_map;
+mod plain_path;
 mod polygon;
 mod progressive;
 mod properties;

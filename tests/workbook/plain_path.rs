@@ -1,0 +1,300 @@
+//! The size of the slides' reading (`--slide`): the lines of code of the lesson layer that it executes,
+//! topic by topic, at most 3,000 in all, about the size of the course's own lecture-6 program. Comments,
+//! blank lines, file loading and input checks are not counted; nor is the code of the steps beyond the
+//! slides, which `--slide` never reaches (tests/slide_audit.rs).
+//!
+//! Print the table: `cargo test --release --test workbook plain_path -- --nocapture`.
+
+use crate::common::root;
+
+/// Where the code of a topic is: a file of src/lesson, and the items of it that `--slide` executes (the
+/// whole file when none are named). An item is named by the start of its first line.
+type Part = (&'static str, &'static [&'static str]);
+
+/// The topics of the slides' reading and their code. The first part of a topic is its core: its file in
+/// src/lesson/slide/, or the workbook's own file where that is written as the slide writes it.
+const PLAIN_PATH: &[(&str, &[Part])] = &[
+    (
+        "render loop, camera, raytrace",
+        &[
+            ("slide/render.rs", &[]),
+            ("slide/raytrace.rs", &[]),
+            ("slide/mod.rs", &[]),
+            (
+                "camera.rs",
+                &[
+                    "pub struct Camera ",
+                    "impl Default for Camera",
+                    "pub fn rotation",
+                    "pub struct CameraFrame",
+                    "    pub fn frame(",
+                    "impl CameraFrame",
+                ],
+            ),
+            ("frame.rs", &["pub struct Frame ", "    pub fn new("]),
+            (
+                "scene.rs",
+                &[
+                    "pub struct Scene ",
+                    "    pub fn new(camera",
+                    "    pub fn add(",
+                    "    pub fn check(",
+                    "    pub fn is_dispersive(",
+                    "pub struct TraceContext",
+                    "    pub fn new(scene",
+                ],
+            ),
+            ("ray.rs", &[]),
+            ("rng.rs", &[]),
+            ("math.rs", &[]),
+            ("color.rs", &[]),
+        ],
+    ),
+    (
+        "shading (lectures 2-3): Lambert, Phong, lights",
+        &[("shader/lambert.rs", &[]), ("shader/phong.rs", &[]), ("light.rs", &[]), ("shader/mod.rs", &[])],
+    ),
+    (
+        "bitmap textures",
+        &[
+            ("slide/bitmap_textures.rs", &[]),
+            (
+                "bitmap.rs",
+                &[
+                    "pub enum Wrap",
+                    "    pub fn texel(",
+                    "pub struct Bitmap ",
+                    "    pub fn width(",
+                    "    pub fn height(",
+                    "    pub fn get_pixel(",
+                    "fn decode(",
+                ],
+            ),
+            ("texture/mod.rs", &[]),
+            ("texture/bitmap.rs", &["pub struct BitmapTexture", "    pub fn new("]),
+            ("texture/checker.rs", &[]),
+        ],
+    ),
+    (
+        "model transform",
+        &[
+            ("slide/model_transform.rs", &[]),
+            ("transform.rs", &[]),
+            (
+                "node.rs",
+                &[
+                    "pub trait IntoGeometry",
+                    "impl<G: Geometry + 'static> IntoGeometry for G",
+                    "pub struct Node ",
+                    "    pub fn new(",
+                    "    fn with_transform",
+                    "    pub fn scale(",
+                    "    pub fn rotate(",
+                    "    pub fn translate(",
+                    "    pub fn bounds(",
+                ],
+            ),
+            (
+                "geometry/mod.rs",
+                &[
+                    "pub struct IntersectionInfo",
+                    "pub struct TexCoords",
+                    "impl TexCoords",
+                    "impl IntersectionInfo",
+                    "pub trait Geometry",
+                    "pub struct Aabb",
+                    "impl Aabb",
+                ],
+            ),
+            ("geometry/sphere.rs", &[]),
+            ("geometry/plane.rs", &[]),
+            ("geometry/cube.rs", &[]),
+            ("geometry/prism.rs", &[]),
+            (
+                "geometry/mesh.rs",
+                &[
+                    "pub struct Mesh ",
+                    "fn face_normal(",
+                    "    pub fn culled(",
+                    "    pub fn slots(",
+                    "    pub fn surface_at(",
+                    "    fn triangle(",
+                    "    fn info(",
+                ],
+            ),
+        ],
+    ),
+    (
+        "environment",
+        &[
+            ("slide/environment.rs", &[]),
+            (
+                "environment.rs",
+                &[
+                    "pub trait Environment",
+                    "pub struct ConstantEnvironment",
+                    "impl Environment for ConstantEnvironment",
+                    "pub fn equirect_uv",
+                    "pub struct SphericalEnvironment",
+                    "pub enum CubeFace",
+                    "pub fn cube_face_uv",
+                    "pub struct CubemapEnvironment",
+                ],
+            ),
+        ],
+    ),
+    (
+        "reflection",
+        &[
+            ("slide/reflection.rs", &[]),
+            ("shader/reflection.rs", &["pub struct Reflection ", "impl CausticCaster for Reflection"]),
+        ],
+    ),
+    ("refraction", &[("shader/refraction.rs", &[])]),
+    (
+        "layered shader",
+        &[
+            ("slide/layered.rs", &[]),
+            (
+                "shader/layered.rs",
+                &[
+                    "pub struct Layer ",
+                    "pub struct Layered ",
+                    "    pub fn add_layer(",
+                    "    pub fn layers(",
+                    "    fn weights(",
+                    "impl CausticCaster for Layered",
+                ],
+            ),
+        ],
+    ),
+    ("Fresnel", &[("texture/fresnel.rs", &[]), ("shader/glass.rs", &[])]),
+    (
+        "glossy reflections",
+        &[
+            ("slide/glossy.rs", &[]),
+            (
+                "shader/reflection.rs",
+                &[
+                    "pub struct GlossyCone",
+                    "impl GlossyCone",
+                    "pub fn glossy_scaling",
+                    "pub const SECONDARY_GLOSSY_SAMPLES",
+                ],
+            ),
+            ("sampling.rs", &["pub fn random_unit_disc_point"]),
+        ],
+    ),
+    (
+        "chromatic dispersion",
+        &[
+            ("slide/dispersion.rs", &[]),
+            ("spectral/mod.rs", &["pub enum Ior", "impl Ior", "impl From<f32> for Ior"]),
+            (
+                "spectral/colour.rs",
+                &[
+                    "pub const LAMBDA_MIN",
+                    "pub const LAMBDA_MAX",
+                    "pub enum Illuminant",
+                    "impl Illuminant",
+                    "fn segment(",
+                    "pub fn cie_xyz(",
+                    "const SRGB_PRIMARIES",
+                    "fn xyz_to_srgb_matrix(",
+                    "pub fn xyz_to_linear_srgb(",
+                    "const STEPS_PER_NM",
+                    "fn cumulative_xyz(",
+                    "fn cumulative_rgb(",
+                    "fn cumulative_at(",
+                    "pub struct Band ",
+                    "impl Band ",
+                    "pub fn bands(",
+                    "pub fn clip_to_gamut(",
+                ],
+            ),
+            ("spectral/cie.rs", &[]),
+        ],
+    ),
+    (
+        "photon mapping",
+        &[
+            ("slide/photon_mapping.rs", &[]),
+            ("slide/kd_tree.rs", &[]),
+            (
+                "photon_map/mod.rs",
+                &[
+                    "pub struct PhotonSettings",
+                    "impl Default for PhotonSettings",
+                    "pub struct StoredPhoton",
+                    "pub struct PhotonStats",
+                    "fn scene_box(",
+                    "pub fn default_radius(",
+                ],
+            ),
+        ],
+    ),
+];
+
+/// Whether a line is code: not blank, not a comment.
+fn is_code(line: &str) -> bool {
+    let line = line.trim();
+    !(line.is_empty() || line.starts_with("//"))
+}
+
+/// The lines of the item whose first line starts with `start` (up to the brace that closes it, or its `;`).
+fn item<'a>(lines: &[&'a str], start: &str, file: &str) -> Vec<&'a str> {
+    let first = lines
+        .iter()
+        .position(|l| l.starts_with(start))
+        .unwrap_or_else(|| panic!("src/lesson/{file} has no item starting with {start:?}: update PLAIN_PATH"));
+    let mut depth = 0i32;
+    let mut opened = false;
+    for (i, line) in lines[first..].iter().enumerate() {
+        let code = line.split("//").next().unwrap_or("");
+        depth += code.matches('{').count() as i32 - code.matches('}').count() as i32;
+        opened |= code.contains('{');
+        if (opened && depth <= 0) || (!opened && code.trim_end().ends_with(';')) {
+            return lines[first..=first + i].to_vec();
+        }
+    }
+    lines[first..].to_vec()
+}
+
+/// The code lines of a part: the named items, or the whole file less its unit tests.
+fn count((file, items): &Part) -> usize {
+    let text = std::fs::read_to_string(root().join("src/lesson").join(file)).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let lines = match items {
+        [] => {
+            let end = lines.iter().position(|l| l.trim() == "#[cfg(test)]").unwrap_or(lines.len());
+            lines[..end].to_vec()
+        }
+        items => items.iter().flat_map(|start| item(&lines, start, file)).collect(),
+    };
+    lines.into_iter().filter(|l| is_code(l)).count()
+}
+
+#[test]
+fn the_plain_path_is_at_most_3000_lines_and_each_topics_core_about_150() {
+    let mut total = 0;
+    println!("{:<48} {:>6} {:>6}", "topic", "core", "lines");
+    for (topic, parts) in PLAIN_PATH {
+        let lines: usize = parts.iter().map(count).sum();
+        let core = count(&parts[0]);
+        println!("{topic:<48} {core:>6} {lines:>6}");
+        total += lines;
+        assert!(core <= 160, "{topic}: its slide file has {core} lines of code, more than about 150");
+    }
+    println!("{:<48} {:>6} {total:>6}", "all", "");
+    assert!(total <= 3000, "the slides' reading is {total} lines of code, more than 3,000");
+}
+
+/// Every file of src/lesson/slide/ is counted in [`PLAIN_PATH`].
+#[test]
+fn every_file_of_the_slides_reading_is_counted() {
+    let counted: Vec<&str> = PLAIN_PATH.iter().flat_map(|(_, parts)| parts.iter().map(|(file, _)| *file)).collect();
+    for entry in std::fs::read_dir(root().join("src/lesson/slide")).unwrap() {
+        let name = format!("slide/{}", entry.unwrap().file_name().to_string_lossy());
+        assert!(counted.contains(&name.as_str()), "{name} is not in PLAIN_PATH");
+    }
+}
