@@ -157,7 +157,7 @@ pub struct NodeTree {
 }
 
 /// Scenes with this many nodes or fewer are traced by the loop over the nodes, which tests them all faster
-/// than a tree is walked (measured on the examples: `fresnel`'s two nodes took 20% longer with the tree).
+/// than a tree is walked (docs/beyond-the-slides.md has the measurement).
 pub const LINEAR_NODES: usize = 8;
 
 /// Two hits on different nodes whose distances differ by less than `TIE * (max_abs(ray start) + distance)`

@@ -29,10 +29,8 @@ const BINS: usize = 16;
 /// The deepest a tree may grow; the traversal stack holds three children for each level.
 const MAX_DEPTH: usize = 64;
 /// Cost of visiting a binary node, relative to one test of a group of primitives (one ray-triangle test,
-/// or four at once for a mesh). 3 gives a 4-wide tree under half the size that 1 gives, which on a
-/// 100,000-triangle mesh still fits the cache: measured as fast on the 9,120-triangle teapot and faster
-/// for incoherent rays on the 102,080-triangle one (with one triangle per test; with four, 1, 1.5 and 3
-/// measured the same within the noise of a loaded machine).
+/// or four at once for a mesh). 3 gives a 4-wide tree under half the size that 1 gives, so that the tree of
+/// a 100,000-triangle mesh still fits the cache (docs/measurements.md, mesh benchmark).
 const TRAVERSAL_COST: f32 = 3.0;
 /// Leaves larger than this are split even when the heuristic would keep them.
 const MAX_LEAF: usize = 8;
@@ -357,8 +355,8 @@ struct Stack {
 }
 
 impl Stack {
-    /// An empty stack. Its entries are left uninitialised: zeroing its 2.3 KB for every ray took 9% of the
-    /// mesh benchmark's time.
+    /// An empty stack. Its entries are left uninitialised: zeroing its 2.3 KB for every ray would cost more
+    /// than most of the rays' traversals (docs/measurements.md, mesh benchmark).
     #[inline(always)]
     fn new() -> Stack {
         Stack { entries: [const { MaybeUninit::uninit() }; 3 * MAX_DEPTH], len: 0 }

@@ -35,8 +35,8 @@
 //!   first that holds k photons, which then are the k nearest: in a dense caustic the nearest are close, and
 //!   most of the photons of the largest ball are never read. The photons found are gathered into a
 //!   per-thread buffer and the k nearest selected in place, by one integer key per photon (distance, then
-//!   index): no allocation per estimate, and measured faster than a k-d tree on the workbook's
-//!   scenes, whose estimates all use the same radius.
+//!   index): no allocation per estimate. The slides' reading keeps the k-d tree
+//!   ([`crate::lesson::slide::kd_tree`]); docs/beyond-the-slides.md compares the two.
 //! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
 //!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k
 //!   photons lie within the maximum radius, every photon in that disc was found, so the disc is the one
