@@ -159,7 +159,7 @@ impl Scene {
     /// A copy of the scene with a [`NodeTree`] over its nodes (if it has enough of them), which the renderer and the photon tracer
     /// trace instead of the scene itself: the tree is built once the scene is complete, and nothing changes
     /// the copy's nodes after that, so the tree always describes them.
-    pub(crate) fn with_node_tree(&self) -> Scene {
+    pub fn with_node_tree(&self) -> Scene {
         Scene { node_tree: NodeTree::build(&self.nodes).map(Arc::new), ..self.clone() }
     }
 

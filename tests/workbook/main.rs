@@ -9,6 +9,7 @@ mod common;
 mod adaptive_aa;
 mod assets;
 mod bad_input;
+mod beyond;
 mod command_line;
 mod cubemap_layout;
 mod determinism;

@@ -91,6 +91,11 @@ impl PhotonMap {
         Ok(Some(PhotonMap { photons, tree, k: settings.k as usize, max_radius, stats }))
     }
 
+    /// The stored photons.
+    pub fn photons(&self) -> &[StoredPhoton] {
+        &self.photons
+    }
+
     /// The caustic irradiance at the point `p` of a diffuse surface whose normal `n` faces the viewer: the
     /// power of the k nearest photons within the maximum radius that arrived on this side of the surface,
     /// over the area of the disc through the farthest of them (the disc of the maximum radius when fewer
