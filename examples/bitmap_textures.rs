@@ -1,5 +1,9 @@
 //! # Bitmap textures (lecture 6, slide "Bitmap текстури")
 //!
+//! The slide's code: `src/lesson/slide/bitmap_textures.rs` (one texel per look-up). `--slide` renders this example
+//! with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
+//! (docs/beyond-the-slides.md).
+//!
 //! Diffuse textures read from image files colour a floor, two spheres and a cube. Look at:
 //! - the floor: one image, repeated every 40 units (`scaling`), fading with distance;
 //! - the planet: a 2:1 map wrapped once around a sphere (u = longitude, v = latitude);

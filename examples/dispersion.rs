@@ -1,5 +1,9 @@
 //! # Chromatic dispersion (lecture 6, slides "Хроматично пречупване (дисперсия)", "Симулиране на хроматично пречупване")
 //!
+//! The slide's code: `src/lesson/slide/dispersion.rs` (K passes, each frame times its band's colour). `--slide`
+//! renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
+//! (docs/beyond-the-slides.md).
+//!
 //! Glass bends short wavelengths more than long ones: its index of refraction falls with the wavelength
 //! (the Abbe number V_d says how fast; small is strong). A ray of white light is really many rays, one per
 //! wavelength, and each takes its own path. The slide's method traces the frame once per wavelength (K

@@ -1,5 +1,9 @@
 //! # Environment maps (lecture 6, slides "Заден фон", "Интерфейс за заден фон")
 //!
+//! The slide's code: `src/lesson/slide/environment.rs` (the spherical and cube-map look-ups). `--slide` renders
+//! this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
+//! (docs/beyond-the-slides.md).
+//!
 //! A ray that hits nothing sees the environment, which depends on the ray's direction only. Here a mirror
 //! sphere, a red and a blue object stand on a small tiled stage under an HDR sky. Look at:
 //! - the sky and the fields behind the stage: the environment seen directly;

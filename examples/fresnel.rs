@@ -1,9 +1,13 @@
 //! # Fresnel (lecture 6, slides "Fresnel", "Fresnel Texture", "Let's build a Fresnel Shader (with layers!)")
 //!
+//! The slide's code: `src/lesson/texture/fresnel.rs` and `src/lesson/shader/glass.rs` (Schlick's Fresnel texture
+//! and the glass in layers). `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what
+//! the steps beyond the slides change (docs/beyond-the-slides.md).
+//!
 //! The course's own lecture-6 scene: a glass sphere (IOR 1.6) over a tiled floor that reflects a little,
 //! so the picture and the time can be compared with the course's C++ program. The glass is a `Layered`
 //! shader: a refraction layer under a reflection layer whose blend is the `Fresnel` texture
-//! ([`fresnel_glass`] builds it; read `src/shader/glass.rs`). Look at:
+//! ([`fresnel_glass`] builds it; read `src/lesson/shader/glass.rs`). Look at:
 //! - the sphere's middle, which faces the camera: mostly refraction (the floor, upside down), reflecting
 //!   only a few percent;
 //! - its rim, where the ray meets the surface at a grazing angle: mostly reflection of the sky;

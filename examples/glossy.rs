@@ -1,5 +1,9 @@
 //! # Glossy reflections (lecture 6, slides "Грапави (glossy) отражения" to "Резултати (2)")
 //!
+//! The slide's code: `src/lesson/slide/glossy.rs` (random points of the unit disc). `--slide` renders this example
+//! with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
+//! (docs/beyond-the-slides.md).
+//!
 //! A rough mirror reflects a cone of rays instead of one. The renderer tilts the face-forwarded normal by a
 //! point of the unit disc scaled by `tan((1 - glossiness) * pi/2)`, reflects about the tilted normal, drops
 //! rays that go under the surface and averages the rest. Look at:

@@ -1,6 +1,9 @@
 //! # Layered shaders (lecture 6, slides "Комбиниране на шейдъри", "Layered Shader", "Текстури", "Пример за
 //! текстура")
 //!
+//! The slide's code: `src/lesson/slide/layered.rs` (the bottom-up loop). `--slide` renders this example with it
+//! alone; `--side-by-side "--slide"` shows what the steps beyond the slides change (docs/beyond-the-slides.md).
+//!
 //! Materials made of layers, bottom to top, each with a blend (its opacity), and textures that drive more
 //! than the colour. Look at:
 //! - the floor, lacquered wood: diffuse wood under a clear layer blended by a Fresnel texture, so the lacquer

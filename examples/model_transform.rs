@@ -1,5 +1,9 @@
 //! # Model transforms (lecture 6, slide "Model трансформация")
 //!
+//! The slide's code: `src/lesson/slide/model_transform.rs` (`Node::intersect` and the loop over the nodes).
+//! `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides
+//! change (docs/beyond-the-slides.md).
+//!
 //! Every shape is intersected in its canonical form; a node's transform T (scale, then rotate, then
 //! translate) places it in the world, and the ray goes the other way: intersect(o * T, r) =
 //! intersect(o, r * T^-1). Look at:

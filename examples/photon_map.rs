@@ -1,5 +1,9 @@
 //! # Caustics by photon mapping (lecture 6, slides "Caustics", "Photon Mapping", "Пример за photon map")
 //!
+//! The slide's code: `src/lesson/slide/photon_mapping.rs` (photons in all directions, the k nearest). `--slide`
+//! renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
+//! (docs/beyond-the-slides.md).
+//!
 //! Light concentrated by refraction and reflection: a glass sphere focuses a point light into a bright spot
 //! inside its own shadow, and a small mirror throws a bright patch onto the wall at the back ("слънчево
 //! зайче"). Shadow rays cannot find this light (they would have to know which way to go through the glass), so

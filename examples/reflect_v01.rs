@@ -1,5 +1,9 @@
 //! # Reflection v0.1 (lecture 6, slide "Reflection v0.1")
 //!
+//! The slide's code: `src/lesson/slide/reflection.rs` and `src/lesson/slide/raytrace.rs` (the mirror ray and
+//! `raytrace`). `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps
+//! beyond the slides change (docs/beyond-the-slides.md).
+//!
 //! A mirror sends the ray on in the direction `reflect(i, n) = i + 2 * dot(-i, n) * n` and multiplies what
 //! it sees by 0.8 ("20% loss of energy"). There is no depth limit. Look at:
 //! - the two mirror spheres: each shows the other, and in it itself again, each image 20% darker;
@@ -28,7 +32,7 @@ impl Example for Options {
     const DEFAULT_SPP: u32 = 4;
 
     fn scene(&self) -> Result<Scene> {
-        // Two mirror spheres (`Reflection`, src/shader/reflection.rs) and a red ball on a checker floor.
+        // Two mirror spheres (`Reflection`, src/lesson/shader/reflection.rs) and a red ball on a checker floor.
         let mut scene = scenes::mirror_room(self.multiplier, self.mirrors)?;
         // The slide's v0.1 has no depth limit (only the renderer's safety cap remains), and no adaptive depth
         // control either: a ray keeps bouncing however faint it has become, which is the danger it shows.

@@ -1,5 +1,9 @@
 //! # Reflection v0.2 (lecture 6, slide "Reflection v0.2")
 //!
+//! The slide's code: `src/lesson/slide/raytrace.rs` and `src/lesson/slide/reflection.rs` (`raytrace` with
+//! `MAX_RAY_DEPTH`). `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps
+//! beyond the slides change (docs/beyond-the-slides.md).
+//!
 //! Every ray carries its `depth`: camera rays 0, each reflection one more; a ray deeper than
 //! `MAX_RAY_DEPTH` (2, as on the slide) returns black. Two mirrors face each other, one in front of the
 //! camera and one behind it. Look at:

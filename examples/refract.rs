@@ -1,5 +1,9 @@
 //! # Refraction (lecture 6, slides "Refract", "Refraction 0.2")
 //!
+//! The slide's code: `src/lesson/shader/refraction.rs` (`Refraction`, which the workbook renders as the slide
+//! writes it). `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond
+//! the slides change (docs/beyond-the-slides.md).
+//!
 //! A glass surface bends the ray by Snell's law, `refract(i, n, ior)`. Whether the ray enters or leaves is
 //! read from the normal before it is face-forwarded; leaving, the ratio of the indices is flipped. Look at:
 //! - the glass sphere: the wall behind it upside down and magnified, like through a lens;
