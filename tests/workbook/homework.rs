@@ -140,7 +140,7 @@ fn look_at_points_the_centre_of_the_picture_at_the_target() {
 /// copies it to examples/hw1.rs.
 #[path = "../../docs/homework_scene.rs"]
 #[allow(dead_code)] // its `main`, which `cargo run --example` calls
-mod homework_scene;
+pub(crate) mod homework_scene;
 
 /// The API page's homework is the file as it is, it renders without NaN, and its own shader shows exactly
 /// its two band colours, lit (each pixel of the ball is one of them times the light, a grey).

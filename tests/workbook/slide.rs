@@ -49,6 +49,14 @@ macro_rules! slide_tests {
 
 every_example!(slide_tests);
 
+/// A student's homework, the API page's (docs/homework_scene.rs, with a shader of the student's own, which
+/// the slides' reading shades through its `shade` and whose rays go through the slides' `raytrace`), renders
+/// with `--slide` as close to its default picture as the examples do.
+#[test]
+fn a_students_homework_renders_with_slide() {
+    check::<crate::homework::homework_scene::Options>("homework");
+}
+
 /// A student's copy of an example takes `--slide` too, and `--side-by-side "--slide"` puts the two readings
 /// side by side.
 #[test]
