@@ -3,8 +3,8 @@
 //!
 //! All shading happens in *linear* light: adding two colours or scaling one by a light's intensity is
 //! physically meaningful only there. 8-bit images (textures, the PNG output) store sRGB-encoded values,
-//! so bitmap textures are decoded with [`srgb_to_linear`] when loaded and the frame is encoded with
-//! [`linear_to_srgb`] when written. The course's C++ code applies a 2.2 gamma; the exact sRGB curve is used
+//! so bitmap texels are decoded with [`srgb_to_linear`] (through a table of the 256 codes, when each texel is
+//! read: see [`crate::lesson::bitmap`]) and the frame is encoded with [`linear_to_srgb`] when written. The course's C++ code applies a 2.2 gamma; the exact sRGB curve is used
 //! here instead, so that PNGs round-trip.
 
 use glam::Vec3A;

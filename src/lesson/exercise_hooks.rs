@@ -14,8 +14,8 @@ use crate::lesson::color::Color;
 use crate::lesson::environment::CubeFace;
 use crate::lesson::math::{OrthonormalBasis, Vector};
 use crate::lesson::photon_map::StoredPhoton;
+use crate::lesson::photon_map::arriving_light;
 use crate::lesson::rng::Rng;
-use crate::lesson::spectral::fit_to_gamut;
 use exercises::handed_out;
 use glam::Affine3A;
 
@@ -98,9 +98,9 @@ pub fn glossy_direction(
     })
 }
 
-/// The photon map's estimate from the photons found, each with its squared distance; the sum is brought
-/// back into the sRGB gamut as [`PhotonMap::irradiance`](crate::lesson::photon_map::PhotonMap::irradiance)
-/// does with its own.
+/// The photon map's estimate from the photons found, each with its squared distance, finished by
+/// [`arriving_light`] as [`PhotonMap::irradiance`](crate::lesson::photon_map::PhotonMap::irradiance)
+/// finishes its own.
 pub fn irradiance_estimate<'a>(
     found: impl Iterator<Item = (f32, &'a StoredPhoton)>,
     radius_squared: f32,
@@ -110,6 +110,6 @@ pub fn irradiance_estimate<'a>(
         let photons: Vec<exercises::Photon> = found
             .map(|(distance_squared, p)| exercises::Photon { distance_squared, dir: p.dir, power: p.power.0 })
             .collect();
-        fit_to_gamut(Color(exercises::photon_estimate::irradiance_estimate(&photons, radius_squared, normal)))
+        arriving_light(Color(exercises::photon_estimate::irradiance_estimate(&photons, radius_squared, normal)))
     })
 }

@@ -21,12 +21,12 @@ use super::model_transform::closest_hit;
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::math::Vector;
-use crate::lesson::photon_map::{PHOTON_BANDS, PhotonStats, StoredPhoton, default_radius};
+use crate::lesson::photon_map::{PHOTON_BANDS, PhotonStats, StoredPhoton, arriving_light, default_radius};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{RECURSION_SAFETY_CAP, Scene};
 use crate::lesson::shader::{PhotonScatter, scatter_photon};
-use crate::lesson::spectral::{Band, clip_to_gamut};
+use crate::lesson::spectral::Band;
 use rayon::prelude::*;
 use std::f32::consts::PI;
 use std::time::Instant;
@@ -114,8 +114,7 @@ impl PhotonMap {
                 sum += photon.power;
             }
         }
-        // A sum of single-wavelength colours may lie outside the sRGB gamut; light cannot be negative.
-        clip_to_gamut(sum / (PI * r2))
+        arriving_light(sum / (PI * r2))
     }
 }
 
