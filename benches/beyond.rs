@@ -294,7 +294,28 @@ struct Versus {
     step_seconds: Option<f64>,
 }
 
+/// The curve with each point's time replaced by its rays times the curve's median CPU time per ray: on a
+/// loaded machine one point's median of a few renders can be off by tens of percent, which moves an
+/// equal-time comparison of two close curves more than the curves differ; the cost of a ray of one curve
+/// (its sampler, its filter) is measured over all its points.
+fn modeled(curve: &[Measurement]) -> Vec<Measurement> {
+    let per_ray = per_ray_cost(curve);
+    curve.iter().map(|m| Measurement { seconds: m.rays as f64 * per_ray, ..m.clone() }).collect()
+}
+
+/// The median over a curve's points of the CPU seconds per ray.
+fn per_ray_cost(curve: &[Measurement]) -> f64 {
+    median(curve.iter().map(|m| m.seconds / m.rays as f64).collect())
+}
+
+/// The step's curve against the slide's at the slide's point `at`, both [`modeled`].
 fn versus(slide: &[Measurement], step: &[Measurement], at: u32) -> Versus {
+    let (slide, step) = (modeled(slide), modeled(step));
+    versus_measured(&slide, &step, at)
+}
+
+/// The step's curve against the slide's at the slide's point `at`, with the times as measured.
+fn versus_measured(slide: &[Measurement], step: &[Measurement], at: u32) -> Versus {
     let point = slide.iter().find(|m| m.value == at).expect("the anchor is on the slide's curve");
     let mut by_time = step.to_vec();
     by_time.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
@@ -381,8 +402,8 @@ fn camera_rays(scene: &Scene, w: u32, h: u32) -> Vec<Ray> {
         .collect()
 }
 
-/// Median CPU nanoseconds per ray of `f` over the rays, each variant in turn over the rounds, repeated
-/// `repeat` times within a round so that a round lasts long enough to time.
+/// Median CPU nanoseconds per ray of each of `fs` over the rays, the variants in turn over the rounds (3 at
+/// least: a round is short), each repeated `repeat` times within a round so that it lasts long enough to time.
 fn per_ray(plan: &Plan, rays: &[Ray], repeat: usize, fs: &[&dyn Fn(&Ray) -> u64]) -> Vec<f64> {
     let mut times = vec![Vec::new(); fs.len()];
     for round in 0..plan.rounds.max(3) {
@@ -849,22 +870,18 @@ fn bitmap_filtering(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
     let bilinear = sweep(plan, bt, "--spp", &[curves("bilinear", "bilinear")], &ref_bilinear).remove(0);
     let nearest = sweep(plan, bt, "--spp", &[curves("nearest", "nearest")], &ref_nearest).remove(0);
     let v = versus(&nearest, &bilinear, 4);
+    let per_ray = per_ray_cost(&bilinear) / per_ray_cost(&nearest);
     let bias = rmse_linear(&ref_bilinear, &ref_nearest).expect("same size");
     let (bias_psnr, _) = psnr(&ref_bilinear, &ref_nearest);
-    let cost: Vec<String> = bilinear
-        .iter()
-        .zip(&nearest)
-        .map(|(b, n)| format!("{:.2}x at {} spp", b.seconds / n.seconds, b.value))
-        .collect();
     rows.push(Row {
         step: "5. Bilinear texel filtering and the sRGB byte table",
         slide: "one texel per look-up",
         measured: "bitmap_textures, `--filter bilinear|nearest`, 320x240, each against its own converged picture".into(),
         buys: format!(
-            "a different picture (the two converged pictures differ by RMSE {bias:.4}, {}): the texture blended between texels instead of stepping from one to the next. Noise: {}. CPU time of bilinear over nearest: {}",
+            "a different picture (the two converged pictures differ by RMSE {bias:.4}, {}): the texture blended between texels instead of stepping from one to the next. Noise: {}. CPU time per ray of bilinear over nearest: {:.2}x",
             db(bias_psnr),
-            v.describe("bilinear", "nearest", &bilinear),
-            cost.join(", ")
+            v.describe("bilinear", "nearest", &modeled(&bilinear)),
+            per_ray
         ),
         code: vec![
             Code::Items("src/lesson/bitmap.rs", &["fn pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "fn decode", "enum Filter"]),
@@ -954,8 +971,8 @@ fn disc_samples(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Stri
         measured: "glossy, `--sampler random|stratified|joint`, 16 spp, 160x120, `--glossy-samples` swept".into(),
         buys: format!(
             "joint (the default): {}. stratified: {}",
-            versus(random, joint, 4).describe("joint", "random", joint),
-            versus(random, stratified, 4).describe("stratified", "random", stratified)
+            versus(random, joint, 4).describe("joint", "random", &modeled(joint)),
+            versus(random, stratified, 4).describe("stratified", "random", &modeled(stratified))
         ),
         code: vec![Code::Items(
             "src/lesson/sampling.rs",
@@ -990,7 +1007,7 @@ fn disc_samples(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Stri
     };
     let centre_curves = sweep(plan, gl, "--glossy-samples", &[centre("random"), centre("stratified")], &centre_ref);
     let centre_versus =
-        versus(&centre_curves[0], &centre_curves[1], 16).describe("stratified", "random", &centre_curves[1]);
+        versus(&centre_curves[0], &centre_curves[1], 16).describe("stratified", "random", &modeled(&centre_curves[1]));
     if let Some(row) = rows.last_mut() {
         row.buys.push_str(&format!(
             ". Through the pixel centres (1 spp, not the example's default), stratified: {centre_versus}"
@@ -1049,7 +1066,7 @@ fn hero_wavelengths(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
         slide: "K = 8 wavelength passes",
         measured: "dispersion, `--spectral hero|passes`, 160x120, `--spp` swept, against a converged hero render"
             .into(),
-        buys: versus(&curves[0], &curves[1], 4).describe("hero", "8 passes", &curves[1]),
+        buys: versus(&curves[0], &curves[1], 4).describe("hero", "8 passes", &modeled(&curves[1])),
         code: vec![
             Code::Items(
                 "src/lesson/render.rs",
@@ -1133,7 +1150,7 @@ fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String
             s_stats.stored as f64 / s_stats.emitted as f64,
             d_stats.emitted,
             s_stats.emitted,
-            versus(&pm_curves[1], &pm_curves[0], photons[1]).describe("the grid", "the slide", &pm_curves[0])
+            versus_measured(&pm_curves[1], &pm_curves[0], photons[1]).describe("the grid", "the slide", &pm_curves[0])
         ) + &format!(
             " (without photons the two readings' pictures differ by RMSE {rest:.5}: the rest of the difference is the caustic's)"
         ),
@@ -1214,7 +1231,7 @@ fn layer_pruning(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Str
             Code::Lines("src/lesson/shader/layered.rs", "every_layer"),
         ],
     });
-    writeln!(details, "## 11. Layer pruning\n\nThe scene of each example with a `Layered` shader, rendered as it is and with every layered shader shading every layer (`Layered::shade_every_layer`, what the layered example's `--shade-every-layer` sets).\n\n{layer_table}").unwrap();
+    writeln!(details, "## 11. Layer pruning\n\nThe scene of each example with a `Layered` shader, rendered as it is and with every layered shader shading every layer (`Layered::shade_every_layer`, what the layered example's `--shade-every-layer` sets), and both again with `--exhaustive`; medians of three times the rounds, since the two differ less than the load of a shared machine moves them.\n\n{layer_table}").unwrap();
 }
 
 /// Step 12: camera-relative coordinates against world coordinates, on every example moved far away.
@@ -1321,7 +1338,7 @@ fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, 
     writeln!(doc).unwrap();
     writeln!(doc, "## `--slide` against the default, every example\n\nAt 320x240, the examples' default samples, one thread. The two readings differ where the default's steps change the picture: other random numbers (stratified pixel and disc samples, hero wavelengths against 8 passes), bilinear against nearest texels, the photon grid's estimate against the k nearest, and adaptive depth control (within a few levels, see step 1).\n\n{examples_table}").unwrap();
     doc.push_str(details);
-    writeln!(doc, "## What the lines count\n\nNon-blank lines that are not comments, of:\n").unwrap();
+    writeln!(doc, "## What the lines count\n\nNon-blank lines that are not comments, of the step's own items (code the step shares with the slide's version, such as the layered shader's loop that pruning works in, or the render loop that calls a sampler, is not counted):\n").unwrap();
     for row in rows {
         let parts: Vec<String> = row.code.iter().map(|c| format!("{} ({})", describe_code(c), lines_of(c))).collect();
         writeln!(doc, "- {}: {}", row.step, parts.join("; ")).unwrap();
