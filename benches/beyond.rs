@@ -10,12 +10,14 @@
 //! variant runs once, the order alternating from round to round, so that a machine shared with other work
 //! slows both alike; each figure is the median over the rounds. Renders run on one thread; CPU time
 //! (`getrusage`, user plus system, the whole process) stands beside the wall time, and the comparisons use
-//! the CPU time. Where a step changes the picture only within one 8-bit level (an exact step) the ledger
-//! gives the time at equal error; where a step changes the noise it gives the error (RMSE of the linear
+//! the CPU time. Where a step leaves the picture as it is, within a few 8-bit levels (an exact step), the
+//! ledger gives the time at equal error; where a step changes the noise it gives the error (RMSE of the linear
 //! values against a converged reference of another seed) at equal time, and the time at equal error, both
-//! interpolated on the log-log curve of the sweep. Steps that no example reaches, or that have no switch,
-//! are timed at unit level (the same rays through the library's two functions). Lines of code are the
-//! non-blank, non-comment lines of the items that implement each step, listed at the end of the ledger.
+//! interpolated on the log-log curve of the sweep; there a point's time is its rays times its curve's median
+//! CPU time per ray, which is steadier on a loaded machine than one point's median (the tables give each
+//! point's own). Steps that no example reaches, or that have no switch, are timed at unit level (the same
+//! rays through the library's two functions). Lines of code are the non-blank, non-comment lines of the
+//! items that implement each step, listed at the end of the ledger.
 
 #[macro_use]
 #[path = "../tests/workbook/common/examples.rs"]
@@ -1326,7 +1328,7 @@ fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, 
     writeln!(doc).unwrap();
     writeln!(doc, "The workbook renders every example in two readings. `--slide` runs the code as the slides write it (`src/lesson/slide/`); the default reading adds, beside each slide, the steps below. Each row measures one step against the slide's version of it, side by side in one run: the time at equal error for the steps that leave the picture as it is, the error at equal time (and the time at equal error) for the steps that change the noise; and the lines of code the step costs. A step that buys nothing measurable on any example says so.").unwrap();
     writeln!(doc).unwrap();
-    writeln!(doc, "Written by `cargo bench --bench beyond` ({}), in {:.0} s on {date}: {machine}, {cores} cores shared with other work (load average {load} at the end). Every render runs on one thread; each figure is the median of {} interleaved round(s); \"CPU s\" is user plus system time of the whole process. The bench is `benches/beyond.rs`; its doc comment says how each figure is made.", if plan.quick { "`--quick`" } else { "full" }, seconds, plan.rounds).unwrap();
+    writeln!(doc, "Written by `cargo bench --bench beyond` ({}), in {:.0} s on {date}: {machine}, {cores} cores shared with other work (load average {load} at the end). Every render runs on one thread; each figure is the median of {} interleaved round(s); \"CPU s\" is user plus system time of the whole process. In the equal-time and equal-error comparisons of a sweep, a point's time is its rays times its curve's median CPU time per ray (steadier on a loaded machine than one point's own median, which the tables give). The bench is `benches/beyond.rs`; its doc comment says how each figure is made.", if plan.quick { "`--quick`" } else { "full" }, seconds, plan.rounds).unwrap();
     writeln!(doc).unwrap();
     writeln!(doc, "## The ledger\n").unwrap();
     writeln!(doc, "| step | the slide's version | measured on | what it buys | lines |").unwrap();
