@@ -29,22 +29,19 @@
 //!   Tracing in One Weekend" has about 500) on one thread, with the scene's BVH over its nodes (`render`) and
 //!   with the slides' loop over every node, and reports the CPU time per ray.
 
+#[path = "common/shared.rs"]
+mod shared;
+
 use clap::Parser;
-use lecture6::lesson::camera::Camera;
 use lecture6::lesson::color::Color;
-use lecture6::lesson::geometry::{Plane, Sphere};
-use lecture6::lesson::light::PointLight;
-use lecture6::lesson::math::Vector;
-use lecture6::lesson::node::Node;
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::lesson::rng::Rng;
 use lecture6::lesson::scene::{Scene, TraceContext};
-use lecture6::lesson::shader::Lambert;
+use shared::{cpu_time, median, spheres_scene};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 #[derive(Parser)]
 struct Args {
@@ -81,24 +78,6 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once('x').ok_or_else(|| format!("{s:?} is not WIDTHxHEIGHT"))?;
     let number = |v: &str| v.parse::<u32>().map_err(|e| format!("{v:?} in {s:?}: {e}"));
     Ok((number(w)?, number(h)?))
-}
-
-/// The CPU time (user + system) of this process's waited-for children, or of the process itself.
-#[allow(unsafe_code)] // Sound: see the SAFETY comment.
-fn cpu_time(who: libc::c_int) -> Duration {
-    let mut usage = std::mem::MaybeUninit::<libc::rusage>::uninit();
-    // SAFETY: getrusage writes the whole struct when it returns 0.
-    let usage = unsafe {
-        assert_eq!(libc::getrusage(who, usage.as_mut_ptr()), 0, "getrusage failed");
-        usage.assume_init()
-    };
-    let tv = |t: libc::timeval| Duration::new(t.tv_sec as u64, t.tv_usec as u32 * 1000);
-    tv(usage.ru_utime) + tv(usage.ru_stime)
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
 }
 
 fn run(what: &str, cmd: &mut Command) -> std::process::Output {
@@ -328,28 +307,6 @@ fn instruction_table(
             cpu(1)
         );
     }
-}
-
-/// N small spheres on a plane, as in the final scene of "Ray Tracing in One Weekend": on a jittered grid
-/// over the same 22 x 22 square whatever N, so that the picture stays alike and only the count changes.
-fn spheres_scene(n: usize) -> Scene {
-    let mut scene =
-        Scene::new(Camera { position: Vector::new(0.0, 3.0, -16.0), pitch: -12.0, fov: 70.0, ..Camera::default() });
-    scene.lights.push(PointLight::new(Vector::new(5.0, 20.0, -10.0), Color::WHITE, 600.0));
-    scene.ambient = Color::gray(0.1);
-    scene.add(Node::new(Arc::new(Plane::new(0.0, f32::INFINITY)), Arc::new(Lambert::new(Color::gray(0.5)))));
-    let side = (n as f64).sqrt().ceil() as usize;
-    let spacing = 22.0 / side as f32;
-    let radius = 0.3 * spacing;
-    let mut rng = Rng::for_keys(&[n as u64]);
-    for i in 0..n {
-        let (a, b) = ((i % side) as f32, (i / side) as f32);
-        let x = -11.0 + spacing * (a + 0.2 + 0.6 * rng.next_f32());
-        let z = -11.0 + spacing * (b + 0.2 + 0.6 * rng.next_f32());
-        let color = Color::new(rng.next_f32(), rng.next_f32(), rng.next_f32());
-        scene.add(Node::new(Arc::new(Sphere::new(Vector::new(x, radius, z), radius)), Arc::new(Lambert::new(color))));
-    }
-    scene
 }
 
 const CURVE_WIDTH: u32 = 320;
