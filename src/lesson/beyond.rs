@@ -3,7 +3,7 @@
 //! doc comment what it changes, is tested against the slide's version and measured in
 //! docs/beyond-the-slides.md.
 //!
-//! Built with the feature `audit-steps`, every step records that it ran ([`take_reached`]); the test
+//! Built with the feature `audit-steps`, every step records that it ran (`take_reached`); the test
 //! `tests/slide_audit.rs` renders every example with `--slide` and checks that no step was reached. The
 //! plain build compiles the records to nothing.
 

@@ -1,7 +1,7 @@
 //! The render loop of the slides' reading: for every pixel, `spp` camera rays (through its centre for one,
-//! at random points of the pixel otherwise), each traced with the slides' [`raytrace`], averaged; a
-//! dispersive scene is rendered once per wavelength pass ([`dispersion`]); a scene that asks for caustics
-//! gets the slides' photon map first ([`photon_mapping`]).
+//! at random points of the pixel otherwise), each traced with the slides' [`raytrace()`](super::raytrace()), averaged; a
+//! dispersive scene is rendered once per wavelength pass ([`super::dispersion`]); a scene that asks for caustics
+//! gets the slides' photon map first ([`super::photon_mapping`]).
 //!
 //! The rows are rendered in parallel, and every pixel draws its random numbers from a stream of its own
 //! (seeded by the seed, the pixel and the pass), so the picture is the same for any number of threads.
