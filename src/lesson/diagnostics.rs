@@ -6,7 +6,8 @@
 //! - a colour that came back NaN or infinite, at the deepest shading point that made it (the first one
 //!   whose rays all came back finite), or from the environment;
 //! - a ray that found the surface it left again, right where it left it (a hit point off its surface by
-//!   more than its error bound: see [`ShadingPoint::finds_its_own_surface`]);
+//!   more than its error bound: the same node, closer than `sqrt(EPSILON)` times the point's coordinates,
+//!   and crossed from the side the ray left, see [`crate::lesson::branching`]);
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`]);
 //!
 //! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
@@ -16,7 +17,7 @@ use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene};
 use std::collections::BTreeMap;
 
 #[cfg(doc)]
-use crate::lesson::{branching::ShadingPoint, scene::TraceContext};
+use crate::lesson::scene::TraceContext;
 
 /// Where a NaN or infinite colour came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
