@@ -47,23 +47,71 @@ pub fn reflect(i: Vector, n: Vector) -> Vector {
     i + 2.0 * (-i).dot(n) * n
 }
 
-/// Which exercises are handed out. For an exercise set to `true`, the renderer built for the exercises uses
-/// the function in this crate and the grader grades it; for one set to `false`, the renderer uses the
-/// workbook's own function and the grader skips it. A teacher sets the list for a hand-out. A student may
-/// set an exercise that is not written yet to `false` to see the pictures of the others: almost every
-/// picture uses `faceforward`, the bilinear filter and the model transform.
+/// The exercises handed out, by name: **the one switch of a hand-out**. For an exercise listed, the renderer
+/// built for the exercises uses the function in this crate and the grader grades it; for one left out, the
+/// renderer uses the workbook's own function and the grader skips it. A teacher handing out two exercises
+/// lists those two (`&["refract", "fresnel_schlick"]`); a student may leave out an exercise not written yet
+/// to see the pictures of the others (almost every picture uses `faceforward`, the bilinear filter and the
+/// model transform). A name that is not one of [`EXERCISES`] stops the build.
+pub const HANDED_OUT: &[&str] = EXERCISES;
+
+/// Every exercise, in the order of the slides.
+pub const EXERCISES: &[&str] = &[
+    "bilinear",
+    "transform_inverse",
+    "cube_map",
+    "faceforward",
+    "refract",
+    "layered_blend",
+    "fresnel_schlick",
+    "fresnel_exact",
+    "glossy_disc",
+    "glossy_cone",
+    "photon_estimate",
+];
+
+/// Whether `name` is in `list` (usable in constants).
+pub const fn listed(list: &[&str], name: &str) -> bool {
+    let mut i = 0;
+    while i < list.len() {
+        if list[i].len() == name.len() {
+            let (a, b) = (list[i].as_bytes(), name.as_bytes());
+            let mut j = 0;
+            while j < a.len() && a[j] == b[j] {
+                j += 1;
+            }
+            if j == a.len() {
+                return true;
+            }
+        }
+        i += 1;
+    }
+    false
+}
+
+// A misspelt name in HANDED_OUT would hand out nothing without a word: it stops the build instead.
+const _: () = {
+    let mut i = 0;
+    while i < HANDED_OUT.len() {
+        assert!(listed(EXERCISES, HANDED_OUT[i]), "HANDED_OUT names an exercise that does not exist");
+        i += 1;
+    }
+};
+
+/// Each exercise's switch, as the renderer and the grader read it: whether it is in [`HANDED_OUT`].
 pub mod handed_out {
-    pub const BILINEAR: bool = true;
-    pub const TRANSFORM_INVERSE: bool = true;
-    pub const CUBE_MAP: bool = true;
-    pub const FACEFORWARD: bool = true;
-    pub const REFRACT: bool = true;
-    pub const LAYERED_BLEND: bool = true;
-    pub const FRESNEL_SCHLICK: bool = true;
-    pub const FRESNEL_EXACT: bool = true;
-    pub const GLOSSY_DISC: bool = true;
-    pub const GLOSSY_CONE: bool = true;
-    pub const PHOTON_ESTIMATE: bool = true;
+    use super::{HANDED_OUT, listed};
+    pub const BILINEAR: bool = listed(HANDED_OUT, "bilinear");
+    pub const TRANSFORM_INVERSE: bool = listed(HANDED_OUT, "transform_inverse");
+    pub const CUBE_MAP: bool = listed(HANDED_OUT, "cube_map");
+    pub const FACEFORWARD: bool = listed(HANDED_OUT, "faceforward");
+    pub const REFRACT: bool = listed(HANDED_OUT, "refract");
+    pub const LAYERED_BLEND: bool = listed(HANDED_OUT, "layered_blend");
+    pub const FRESNEL_SCHLICK: bool = listed(HANDED_OUT, "fresnel_schlick");
+    pub const FRESNEL_EXACT: bool = listed(HANDED_OUT, "fresnel_exact");
+    pub const GLOSSY_DISC: bool = listed(HANDED_OUT, "glossy_disc");
+    pub const GLOSSY_CONE: bool = listed(HANDED_OUT, "glossy_cone");
+    pub const PHOTON_ESTIMATE: bool = listed(HANDED_OUT, "photon_estimate");
 }
 
 // Each exercise is a file of its own; with the feature `solutions` its solution in src/solutions/ is

@@ -7,6 +7,7 @@ mod grading;
 use exercises::{Face, Vector};
 use glam::Affine3A;
 use grading::{Exercise, Verdict, facts, grade, workbook};
+use lecture6::lesson::exercise_hooks::{Hook, answer};
 
 /// A picture check that finds every picture as expected, so that only the facts decide.
 fn pictures_as_expected(_example: &str) -> Result<(), String> {
@@ -89,13 +90,56 @@ fn a_picture_that_needs_a_blank_exercise_waits_for_it_and_one_that_differs_fails
     let verdicts = grade(&exercises, &pictures);
     for (exercise, verdict) in exercises.iter().zip(&verdicts) {
         let expected = match exercise.example {
-            "fresnel" => Verdict::PictureWaits { example: "fresnel".into(), on: "faceforward".into() },
+            "fresnel" => Verdict::PictureWaits { example: "fresnel".into(), on: vec!["faceforward".into()] },
             "glossy" => Verdict::Failed("every fact holds, but the picture of `glossy` is not the expected one".into()),
             example => Verdict::Passed { example: example.into() },
         };
         assert_eq!(*verdict, expected, "{}", exercise.name);
     }
-    assert!(verdicts[2].to_string().contains("set FACEFORWARD to false"), "{}", verdicts[2]);
+    assert!(verdicts[2].to_string().contains("leave it out of HANDED_OUT"), "{}", verdicts[2]);
+}
+
+/// Two of the renderer's hooks, as the workbook's slide functions call them.
+static CUBE_MAP: Hook = Hook::new();
+static FACEFORWARD: Hook = Hook::new();
+
+#[test]
+fn a_picture_names_every_blank_it_needs_in_one_run() {
+    // `fresnel` meets two blanks, `cube_map` (its sky) and `faceforward`, each many times, as a render does:
+    // drawn around them, the picture names both (before, only the first it met, one run at a time).
+    let draws = std::sync::atomic::AtomicUsize::new(0);
+    let pictures = |example: &str| {
+        if example == "fresnel" {
+            draws.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            for _ in 0..3 {
+                let sky: Option<u32> = answer(&CUBE_MAP, true, || todo!("cube_map"));
+                let normal: Option<u32> = answer(&FACEFORWARD, true, || todo!("faceforward"));
+                assert_eq!((sky, normal), (None, None), "a blank is answered by the workbook's own function");
+            }
+        }
+        Ok(())
+    };
+    let exercises = workbook();
+    let verdicts = grade(&exercises, &pictures);
+    assert_eq!(draws.into_inner(), 1, "each picture is drawn once");
+    let fresnel = exercises.iter().position(|e| e.name == "fresnel_schlick").unwrap();
+    let on = vec!["cube_map".to_string(), "faceforward".to_string()];
+    assert_eq!(verdicts[fresnel], Verdict::PictureWaits { example: "fresnel".into(), on }, "{:?}", verdicts);
+    assert!(
+        verdicts[fresnel].to_string().contains("needs `cube_map`, `faceforward`, which are"),
+        "{}",
+        verdicts[fresnel]
+    );
+    // Outside the grader's drawing, a blank panics as it always did.
+    let outside = std::panic::catch_unwind(|| answer(&FACEFORWARD, true, || -> u32 { todo!("faceforward") }));
+    assert!(outside.is_err());
+}
+
+#[test]
+fn the_hand_out_is_one_list() {
+    assert!(exercises::listed(exercises::EXERCISES, "refract") && !exercises::listed(exercises::EXERCISES, "refrac"));
+    assert_eq!(exercises::HANDED_OUT.len(), 11, "the workbook hands out every exercise");
+    assert!(workbook().iter().all(|e| e.handed_out == exercises::listed(exercises::HANDED_OUT, e.name)));
 }
 
 #[test]

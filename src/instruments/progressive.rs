@@ -208,6 +208,7 @@ pub fn render_progressive(
     let stats = RenderStats {
         elapsed: start.elapsed(),
         threads: rayon::current_num_threads(),
+        warnings: crate::lesson::diagnostics::Problems::report(&counters, scene),
         counters,
         spectral: plan,
         photons: scene.photon_map.as_ref().map(|map| map.stats),

@@ -16,8 +16,10 @@ macro_rules! exercise {
 pub mod beyond;
 pub mod adaptive_aa;
 pub mod bitmap;
+pub mod branching;
 pub mod camera;
 pub mod color;
+pub mod diagnostics;
 pub mod environment;
 pub mod error;
 #[cfg(feature = "exercises")]

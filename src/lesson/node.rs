@@ -51,6 +51,12 @@ pub struct Node {
     pub name: Option<String>,
 }
 
+/// How far from 1 the squared length of a normal may be for it to count as a unit normal: 2^-9, a length
+/// within 0.1% of 1. A normal normalised in f32 is within a few 1e-7 of it, and one computed from a hit point
+/// that a quadratic found with the textbook formula (which loses half the digits, `sqrt(EPSILON)`) within a
+/// few 1e-4; a normal not normalised at all is off by its length.
+const UNIT_NORMAL_TOLERANCE: f32 = 1.0 / 512.0;
+
 impl Node {
     /// A node showing `geometry` with `shader`, not yet transformed. Either may be shared with other nodes
     /// by passing an `Arc` of it (`Arc::new(mesh)`, then `mesh.clone()` for each node).
@@ -107,9 +113,20 @@ impl Node {
     /// The second phase: the surface at a hit that [`Node::hit`] found for the same ray, in world space.
     #[inline]
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        self.checked_surface(ray, hit).map(|(info, _)| info)
+    }
+
+    /// [`Node::surface`], and whether the geometry described it with a unit normal: checked as the geometry
+    /// returns it, before a transform normalises it (a NaN or unnormalised normal shades wrong, often
+    /// without a NaN in the picture; `raytrace` counts it for the end-of-run report).
+    #[inline]
+    pub(crate) fn checked_surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
+        let unit = |info: &IntersectionInfo| (info.normal.length_squared() - 1.0).abs() <= UNIT_NORMAL_TOLERANCE;
         match &self.transform {
-            None => self.geometry.surface(ray, hit),
-            Some(t) => self.geometry.surface(&t.ray_to_canonical(ray), hit).map(|info| t.info_to_world(&info)),
+            None => self.geometry.surface(ray, hit).map(|info| (info, unit(&info))),
+            Some(t) => {
+                self.geometry.surface(&t.ray_to_canonical(ray), hit).map(|info| (t.info_to_world(&info), unit(&info)))
+            }
         }
     }
 

@@ -34,6 +34,9 @@ pub enum Stop {
     WeightCutoff,
     /// It was deeper than the recursion safety cap: black.
     SafetyCap,
+    /// Its shading point had used its budget of rays: its traced siblings' mean colour (see
+    /// [`crate::lesson::branching`]).
+    Shared,
 }
 
 impl std::fmt::Display for Stop {
@@ -43,6 +46,7 @@ impl std::fmt::Display for Stop {
             Stop::DepthLimit => "depth limit: black",
             Stop::WeightCutoff => "weight below the adaptive cut-off: black",
             Stop::SafetyCap => "recursion safety cap: black",
+            Stop::Shared => "over its shading point's budget of rays: the mean of its traced siblings",
         })
     }
 }

@@ -17,7 +17,8 @@ pub struct Ray {
     /// 0 for camera rays; each reflection or refraction adds 1.
     pub depth: u32,
     /// How much this ray contributes to its pixel: 1 for camera rays. A shader that averages N random
-    /// samples gives each sample its full attenuation, not 1/N of it: each sample estimates the whole.
+    /// samples gives each sample its full attenuation, not 1/N of it: each sample estimates the whole (the
+    /// core bounds the branching of such an average: [`crate::lesson::branching`]).
     pub weight: f32,
     /// Wavelength in nanometres when the ray carries a single wavelength (dispersion), else `None`.
     pub wavelength: Option<f32>,
@@ -36,7 +37,11 @@ impl Ray {
 
     /// A secondary ray spawned by a shader at the hit `info` (a reflection, a refraction, a glossy sample):
     /// going in the unit direction `dir`, one level deeper, carrying this ray's wavelength, its weight scaled
-    /// by `attenuation` (how much of what it brings back the shader passes on). It starts at the hit point
+    /// by `attenuation`. **`attenuation` is the factor the shader multiplies this ray's colour by (a mirror's
+    /// colour, its brightest channel; a glass's Fresnel factor), in full for each ray of an average of N,
+    /// not 1/N of it**: rays too faint to change the picture are then not traced, and the core keeps an
+    /// average's rays from multiplying ([`crate::lesson::branching`]; a 1/N share would prune the deep
+    /// rays and darken the picture the more rays are averaged). It starts at the hit point
     /// moved off the surface, to the side `dir` goes to, by the hit's error bound. This replaces the slides'
     /// `info.ip + 1e-6 * n`, which fails for scenes much larger or smaller than the course's.
     pub fn spawn(&self, info: &IntersectionInfo, dir: Vector, attenuation: f32) -> Ray {

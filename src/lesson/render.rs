@@ -21,6 +21,7 @@
 use crate::lesson::adaptive_aa;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
+use crate::lesson::diagnostics::Problems;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::observer::Observer;
@@ -169,6 +170,8 @@ pub struct RenderStats {
     pub spectral: SpectralPlan,
     /// How the scene's photon map was built (before the render, not counted in `elapsed`), if it has one.
     pub photons: Option<PhotonStats>,
+    /// What went wrong, one line each, naming the nodes ([`Problems::report`]): empty for a sound render.
+    pub warnings: Vec<String>,
 }
 
 /// The worker threads the renderer uses: `threads` of them, or one per core, each with a stack of
@@ -241,9 +244,11 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     let (w, h) = (settings.width, settings.height);
     let camera = scene.camera.frame(w, h);
     let bar = if settings.progress && std::io::stderr().is_terminal() {
-        let bar = ProgressBar::new(h as u64);
+        // Counted in camera samples, pixel by pixel: a row that runs away still moves the bar, and its
+        // estimate of the time left, instead of leaving it at the last row.
+        let bar = ProgressBar::new(w as u64 * h as u64 * settings.spp as u64);
         bar.set_style(
-            ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} rows, {eta} left")
+            ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {human_pos}/{human_len} samples, {eta} left")
                 .expect("valid template")
                 .progress_chars("=> "),
         );
@@ -251,6 +256,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     } else {
         ProgressBar::hidden()
     };
+    let bar_shown = !bar.is_hidden();
     let mut frame = pool.install(|| Frame::new(w, h));
     check_adaptive_aa(settings, &plan)?;
     let mut counters = pool.install(|| {
@@ -265,8 +271,10 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
                 let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
                 for (x, pixel) in row.iter_mut().enumerate() {
                     *pixel = tracer.pixel(x as u32, y as u32);
+                    if bar_shown {
+                        bar.inc(settings.spp as u64);
+                    }
                 }
-                bar.inc(1);
                 tracer.counters
             })
             .reduce(Counters::default, |mut a, b| {
@@ -281,6 +289,7 @@ pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: Spectral
     let stats = RenderStats {
         elapsed: start.elapsed(),
         threads: pool.current_num_threads(),
+        warnings: Problems::report(&counters, scene),
         counters,
         spectral: plan,
         photons: scene.photon_map.as_ref().map(|map| map.stats),

@@ -12,8 +12,10 @@
 //! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
 //! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
 
+use crate::lesson::branching::ShadingPoint;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
+use crate::lesson::diagnostics::{Problems, Source};
 use crate::lesson::environment::Environment;
 use crate::lesson::error::Result;
 use crate::lesson::geometry::{Hit, IntersectionInfo};
@@ -189,8 +191,15 @@ impl Scene {
     /// into `raytrace`, so that the surface description is written once, where the shader reads it.
     #[inline(always)]
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
+        self.checked_closest_hit(ray).map(|(info, node, _)| (info, node))
+    }
+
+    /// [`Scene::closest_hit`], and whether the geometry gave a unit normal ([`Node::checked_surface`]).
+    #[inline(always)]
+    pub(crate) fn checked_closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node, bool)> {
         let (hit, node) = self.nearest_hit(ray)?;
-        Some((node.surface(ray, &hit)?, node))
+        let (info, unit_normal) = node.checked_surface(ray, &hit)?;
+        Some((info, node, unit_normal))
     }
 
     /// Whether anything is hit by the ray before `t_max`.
@@ -213,9 +222,14 @@ pub struct Counters {
     pub capped_rays: u64,
     /// Rays not traced because their weight was below `Scene::min_ray_weight` (not part of the total).
     pub pruned_rays: u64,
+    /// Rays not traced because their shading point had used its budget: they were given the mean of their
+    /// traced siblings' colours (see [`crate::lesson::branching`]; not part of the total).
+    pub shared_rays: u64,
     /// Camera samples that came back NaN or infinite, counted before the renderer cleans them (see
     /// [`crate::lesson::render::RenderSettings::sample`]): 0 in a sound render, which the tests check.
     pub non_finite_samples: u64,
+    /// What went wrong, by node, for the end-of-run report ([`Problems::report`]).
+    pub problems: Problems,
 }
 
 impl Counters {
@@ -231,7 +245,9 @@ impl Counters {
         self.shadow_rays += other.shadow_rays;
         self.capped_rays += other.capped_rays;
         self.pruned_rays += other.pruned_rays;
+        self.shared_rays += other.shared_rays;
         self.non_finite_samples += other.non_finite_samples;
+        self.problems.add(&other.problems);
     }
 }
 
@@ -273,6 +289,8 @@ pub struct TraceContext<'a> {
     /// Set when the slides' reading renders (`--slide`, [`crate::lesson::slide`]): `raytrace`, `visible` and
     /// the light loop then run the slides' own versions, for the workbook's shaders and a student's alike.
     pub(crate) slides: Option<&'a Slides>,
+    /// The shading point whose shader is running, which bounds its rays ([`crate::lesson::branching`]).
+    pub(crate) shading: ShadingPoint<'a>,
 }
 
 impl<'a> TraceContext<'a> {
@@ -286,12 +304,14 @@ impl<'a> TraceContext<'a> {
             observer: None,
             met_dispersion: false,
             slides: None,
+            shading: ShadingPoint::camera(),
         }
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
     /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
-    /// environment when nothing is hit; otherwise whatever the hit node's shader says.
+    /// environment when nothing is hit; otherwise whatever the hit node's shader says. A ray over its shading
+    /// point's budget is not traced and brings back its siblings' mean colour ([`crate::lesson::branching`]).
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
         if self.slides.is_some() {
             return slide::raytrace(self, ray);
@@ -309,17 +329,32 @@ impl<'a> TraceContext<'a> {
             self.counters.pruned_rays += 1;
             return self.stop(Stop::WeightCutoff);
         }
+        if let Some(shared) = self.shading.share(ray.weight) {
+            self.counters.shared_rays += 1;
+            self.observe(|o| o.ray_ends(shared, Some(Stop::Shared)));
+            return shared;
+        }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
         let scene = self.scene;
-        let (color, stop) = match scene.closest_hit(ray) {
-            Some((info, node)) => {
+        let (color, stop) = match scene.checked_closest_hit(ray) {
+            Some((info, node, unit_normal)) => {
                 self.observe(|o| o.ray_hits(scene, node, &info));
                 self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
-                (node.shader.shade(ray, &info, self), None)
+                (self.shade_hit(node, ray, &info, unit_normal), None)
             }
-            None => (scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)), Some(Stop::Missed)),
+            None => (self.environment(ray), Some(Stop::Missed)),
         };
+        self.shading.traced(color);
         self.observe(|o| o.ray_ends(color, stop));
+        color
+    }
+
+    /// What a ray that hit nothing sees: the environment, or black.
+    fn environment(&mut self, ray: &Ray) -> Color {
+        let color = self.scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir));
+        if !color.is_finite() {
+            Problems::count(&mut self.counters.problems.non_finite, Source::Environment);
+        }
         color
     }
 
@@ -335,6 +370,7 @@ impl<'a> TraceContext<'a> {
     /// layer's share of the colour.
     pub fn shade_layer(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
         self.observe(|o| o.layer_begins(layer));
+        self.shading.begin_layer(ray);
         let color = layer.shader.shade(ray, info, self);
         self.observe(|o| o.layer_ends(color, weight));
         color * weight

@@ -184,3 +184,16 @@ fn the_api_pages_homework_renders_and_its_own_shader_shows_its_bands() {
     }
     assert!(seen_a > 20 && seen_b > 20, "the ball shows {seen_a} pixels of one band and {seen_b} of the other");
 }
+
+/// The API page shows its geometry and its glossy shader as the files the tests compile and render
+/// (`diagnostics.rs` renders the cylinder, `branching.rs` the glossy mirror).
+#[test]
+fn the_api_pages_geometry_and_shader_are_the_files_the_tests_render() {
+    let page = std::fs::read_to_string(root().join("docs/homework-api.md")).unwrap();
+    for (file, text) in [
+        ("docs/homework_geometry.rs", include_str!("../../docs/homework_geometry.rs")),
+        ("docs/homework_glossy.rs", include_str!("../../docs/homework_glossy.rs")),
+    ] {
+        assert!(page.contains(&format!("```rust\n{text}```")), "the page shows {file} as it is");
+    }
+}

@@ -7,6 +7,7 @@
 pub mod facts;
 
 use facts::Facts;
+use lecture6::lesson::exercise_hooks::drawing_around_blanks;
 use std::any::Any;
 use std::collections::HashMap;
 use std::fmt;
@@ -105,8 +106,9 @@ pub enum Verdict {
     /// A `todo!()` is left in it: the text it carries (the exercises' blanks name their exercise and
     /// function: `todo!("glossy_disc: concentric_disc")`), empty for a bare `todo!()`.
     NotWritten(String),
-    /// Every fact holds, but the picture also needs another exercise that is not written yet.
-    PictureWaits { example: String, on: String },
+    /// Every fact holds, but the picture also needs other exercises that are not written yet: their names,
+    /// every one the picture met (empty when a blank's `todo!()` did not name its exercise).
+    PictureWaits { example: String, on: Vec<String> },
     /// Set to `false` in `exercises::handed_out`: the workbook's own function is used.
     NotHandedOut,
 }
@@ -125,12 +127,16 @@ impl fmt::Display for Verdict {
                 "every fact holds; the picture of `{example}` is not checked yet: it also needs a function with a \
                  todo!() in it"
             ),
-            Verdict::PictureWaits { example, on } => write!(
-                f,
-                "every fact holds; the picture of `{example}` is not checked yet: it also needs `{on}`, which is \
-                 not written yet (or set {} to false in exercises/src/lib.rs to draw it with the workbook's own)",
-                on.to_uppercase()
-            ),
+            Verdict::PictureWaits { example, on } => {
+                let names = on.iter().map(|name| format!("`{name}`")).collect::<Vec<_>>().join(", ");
+                let (which, them) = if on.len() == 1 { ("which is", "it") } else { ("which are", "them") };
+                write!(
+                    f,
+                    "every fact holds; the picture of `{example}` is not checked yet: it also needs {names}, {which} \
+                     not written yet (or leave {them} out of HANDED_OUT in exercises/src/lib.rs to draw the picture \
+                     with the workbook's own)"
+                )
+            }
             Verdict::NotHandedOut => write!(f, "not handed out (the workbook's own function is used)"),
         }
     }
@@ -165,26 +171,34 @@ fn exercise_of(what: &str) -> &str {
 enum Picture {
     Expected,
     Differs(String),
-    Needs(String),
+    /// The texts of the `todo!()`s of the blanks it met.
+    Needs(Vec<String>),
 }
 
 /// Grades every exercise: its facts first (a `todo!()` or a panic in one exercise does not stop the others),
 /// then, if they hold, the picture `check_picture(example)` renders and compares (`Err` says how it differs;
-/// a panic with a `todo!()` of another exercise means the picture waits for it). Each example is rendered
-/// once however many exercises it checks.
+/// a blank met while drawing it means the picture waits for it). The picture is drawn around the blanks
+/// (`drawing_around_blanks`: each blank met is named and the workbook's own function drawn instead), so that
+/// every exercise a picture needs is named in one run. Each example is rendered once however many exercises
+/// it checks.
 pub fn grade(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), String>) -> Vec<Verdict> {
     let mut pictures: HashMap<&str, Picture> = HashMap::new();
     let mut picture = |example: &'static str| {
         pictures
             .entry(example)
-            .or_insert_with(|| match catch_unwind(AssertUnwindSafe(|| check_picture(example))) {
-                Ok(Ok(())) => Picture::Expected,
-                Ok(Err(why)) => Picture::Differs(why),
-                Err(payload) => {
-                    let message = panic_message(payload.as_ref());
-                    match not_written(&message) {
-                        Some(what) => Picture::Needs(what),
-                        None => Picture::Differs(format!("rendering `{example}` panicked: {message}")),
+            .or_insert_with(|| {
+                let (outcome, blanks) =
+                    drawing_around_blanks(|| catch_unwind(AssertUnwindSafe(|| check_picture(example))));
+                match outcome {
+                    _ if !blanks.is_empty() => Picture::Needs(blanks),
+                    Ok(Ok(())) => Picture::Expected,
+                    Ok(Err(why)) => Picture::Differs(why),
+                    Err(payload) => {
+                        let message = panic_message(payload.as_ref());
+                        match not_written(&message) {
+                            Some(what) => Picture::Needs(vec![what]),
+                            None => Picture::Differs(format!("rendering `{example}` panicked: {message}")),
+                        }
                     }
                 }
             })
@@ -211,8 +225,15 @@ pub fn grade(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), 
             match picture(exercise.example) {
                 Picture::Expected => Verdict::Passed { example },
                 Picture::Differs(why) => Verdict::Failed(format!("every fact holds, but {why}")),
-                Picture::Needs(what) if exercise_of(&what) == exercise.name => Verdict::NotWritten(what),
-                Picture::Needs(what) => Verdict::PictureWaits { example, on: exercise_of(&what).to_string() },
+                Picture::Needs(blanks) => match blanks.iter().find(|what| exercise_of(what) == exercise.name) {
+                    Some(what) => Verdict::NotWritten(what.clone()),
+                    None => {
+                        let mut on: Vec<String> = blanks.iter().map(|what| exercise_of(what).to_string()).collect();
+                        on.dedup();
+                        on.retain(|name| !name.is_empty());
+                        Verdict::PictureWaits { example, on }
+                    }
+                },
             }
         })
         .collect()

@@ -10,7 +10,6 @@ use crate::lesson::frame::{keeps_linear_light, save_atomically};
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
 use crate::lesson::render::thread_pool;
-use crate::lesson::scene::RECURSION_SAFETY_CAP;
 use crate::lesson::spectral::SpectralPlan;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -184,12 +183,8 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             rays as f64 * 1e-6 / secs.max(1e-9),
             output.display()
         );
-        if stats.counters.capped_rays > 0 {
-            println!(
-                "{}: {} ray(s) bounced past the safety cap of {} and returned black: without a depth limit, facing \
-                 mirrors recurse until the stack overflows; that is why Reflection v0.2 adds MAX_RAY_DEPTH",
-                name, stats.counters.capped_rays, RECURSION_SAFETY_CAP
-            );
+        for warning in &stats.warnings {
+            println!("{name}: warning: {warning}");
         }
         if let Some(p) = &stats.photons {
             let trace = p.trace_time.as_secs_f64();

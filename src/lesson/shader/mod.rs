@@ -54,7 +54,10 @@ pub enum PhotonScatter {
 /// A new shader implements `shade` alone, and works: with its own rays traced through `ctx.raytrace` and
 /// its light taken from [`light_loop`](crate::lesson::light::light_loop) (or
 /// [`diffuse_light`](crate::lesson::light::diffuse_light)), it gets the lamps, shadows, the photon map's
-/// caustics and the ray tree of `--trace-pixel` without a further line. What else a shader may override:
+/// caustics and the ray tree of `--trace-pixel` without a further line. A ray it traces is made by
+/// [`Ray::spawn`], whose `attenuation` is the factor the shader multiplies that ray's colour by, in full for
+/// each ray of an average of N, not 1/N of it (the core bounds an average's branching:
+/// [`crate::lesson::branching`]). What else a shader may override:
 ///
 /// - a mirror or glass, whose surface photons leave (slide "Photon Mapping"), implements [`CausticCaster`]
 ///   (where a photon goes next, as `shade` sends its rays) and returns itself from

@@ -45,13 +45,15 @@ use crate::lesson::texture::Texture;
 use std::f32::consts::FRAC_PI_2;
 
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
-/// uses 2.
-pub const SECONDARY_GLOSSY_SAMPLES: u32 = 2;
+/// uses 2. The core's bound on every shader's branching ([`crate::lesson::branching`]) allows the same.
+pub const SECONDARY_GLOSSY_SAMPLES: u32 = crate::lesson::branching::SECONDARY_SPLIT;
 
 /// The deepest ray a glossy mirror still splits into [`SECONDARY_GLOSSY_SAMPLES`] rays; for a deeper ray it
 /// traces one, so that the number of rays grows with the depth limit, not exponentially. 4 is the course's
-/// default `maxTraceDepth`.
-pub const GLOSSY_SPLIT_DEPTH: u32 = 4;
+/// default `maxTraceDepth`. The mirror caps its own rays so, before the core's bound
+/// ([`crate::lesson::branching::SPLIT_DEPTH`], the same depth) would: it does not draw directions it would
+/// not trace, and its rays stay stratified.
+pub const GLOSSY_SPLIT_DEPTH: u32 = crate::lesson::branching::SPLIT_DEPTH;
 
 /// The most rays a glossy mirror averages per shading point: twenty times the slide's 200, and low enough
 /// that a mistyped count is refused at once instead of rendering for days.

@@ -12,6 +12,7 @@ use super::{Slides, raytrace};
 use crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
+use crate::lesson::diagnostics::Problems;
 use crate::lesson::error::Result;
 use crate::lesson::frame::Frame;
 use crate::lesson::ray::Ray;
@@ -52,6 +53,7 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
     let stats = RenderStats {
         elapsed: start.elapsed(),
         threads: pool.current_num_threads(),
+        warnings: Problems::report(&counters, scene),
         counters,
         spectral: bands.map_or(SpectralPlan::White, SpectralPlan::Passes),
         photons: slides.photon_map.as_ref().map(|map| map.stats),

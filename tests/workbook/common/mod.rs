@@ -30,6 +30,8 @@ pub fn parse<E: Example>(args: &[&str]) -> Cli<E> {
 pub fn render<E: Example>(args: &[&str]) -> Frame {
     let (frame, stats) = parse::<E>(args).render().unwrap_or_else(|e| panic!("{args:?}: {e}"));
     assert_eq!(stats.counters.non_finite_samples, 0, "{args:?}: samples came back NaN or infinite");
+    assert_eq!(stats.counters.problems, Default::default(), "{args:?}: {:?}", stats.warnings);
+    assert_eq!(stats.counters.shared_rays, 0, "{args:?}: the workbook's shaders stay within their budget of rays");
     frame
 }
 

@@ -1,0 +1,214 @@
+//! Bounded branching of the ray tree, for every shader alike (beyond the slides).
+//!
+//! A shader that averages N rays passes each of them its full weight ([`Ray::spawn`]'s `attenuation` is
+//! what one ray's colour is multiplied by, not its 1/N share of the average: each ray estimates the whole).
+//! Two such shaders facing each other then branch N^depth rays per camera ray: 16 rays and 10 bounces is
+//! 10^12 rays, a render that never ends. Russian roulette on the weight cannot stop it (a white mirror's
+//! rays keep a weight of 1), and a 1/N weight stops it by pruning the deep samples, which darkens the
+//! picture the more rays the shader averages. The workbook's glossy mirror caps its own rays
+//! ([`crate::lesson::shader::SECONDARY_GLOSSY_SAMPLES`] per shading point below the first bounce, one below
+//! [`SPLIT_DEPTH`]); this module puts the same cap in `raytrace`, so that it holds for a student's shader too.
+//!
+//! The rule. Each shading point (the hit of one ray, or one layer of a `Layered` shader there) may pass its
+//! rays, together, [`split_factor`] times its own ray's weight: without limit for a camera ray's hit, 2 times
+//! down to [`SPLIT_DEPTH`], once below it. The first ray is always traced. A ray that would take the rays
+//! of its shading point past that budget is not traced: `raytrace` returns the mean of the colours its
+//! siblings brought back, and counts it in [`Counters::shared_rays`](crate::lesson::scene::Counters).
+//!
+//! Why it is unbiased. A shader averaging N rays that are independent and identically distributed (the
+//! directions of a glossy cone, drawn alike) computes `(X_1 + ... + X_k + (N - k) * mean(X_1..X_k)) / N`
+//! when only k are traced, which is `mean(X_1..X_k)`: the same expectation as the average of all N, with the
+//! variance of k rays. Below the split depth that is what the workbook's own glossy mirror computes by
+//! tracing k rays, so a student's N-ray glossy converges to it (`tests/workbook/branching.rs` measures it).
+//! The rays of a shading point that are *not* alike (a glass's reflection and refraction) are told apart by
+//! their weights: they split the light, so their attenuations add up to at most one (R + T = 1) and they
+//! never exceed the budget; an average's do, N times over. `Layered` shades each layer as a shading point
+//! of its own, so a layer's rays never share another layer's colours. The limit of the rule: a shader whose
+//! rays are not alike and together pass more than the budget (two full-weight rays that are then mixed
+//! with factors of the shader's own) gets, for the later ones, the earlier ones' colours: biased. Passing
+//! each ray the factor its colour is multiplied by (the contract) avoids it.
+//!
+//! What it costs. Nothing changes for the workbook's shaders: each stays within its budget (the glossy
+//! mirror caps itself first, and does not even draw the directions it would not trace), so every default
+//! picture is the same bit for bit and `--exhaustive` still traces every one of their rays. A student's
+//! N-ray shader traces N rays at the camera ray's hit, 2 per shading point down to the split depth and 1
+//! below it: at most `N * 2^(SPLIT_DEPTH - 1)` rays per depth, a ray count linear in the depth limit.
+
+use crate::lesson::color::Color;
+use crate::lesson::diagnostics::{Problems, Source};
+use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::math::{Vector, max_abs};
+use crate::lesson::node::Node;
+use crate::lesson::ray::Ray;
+use crate::lesson::scene::TraceContext;
+use std::collections::BTreeMap;
+
+/// The deepest ray whose shading point may still pass its rays twice its own weight; a deeper one passes
+/// at most its own. 4 is the course's default `maxTraceDepth`, so its scenes trace exactly the course's
+/// rays.
+pub const SPLIT_DEPTH: u32 = 4;
+
+/// How many times its own weight a shading point of a ray at depth 1 to [`SPLIT_DEPTH`] may pass its rays
+/// together: the 2 rays the course's glossy mirror traces there.
+pub const SECONDARY_SPLIT: u32 = 2;
+
+/// How many times its own weight the shading point of a ray at `depth` may pass to its rays, together.
+#[inline(always)]
+pub fn split_factor(depth: u32) -> f32 {
+    const FACTORS: [f32; SPLIT_DEPTH as usize + 2] = {
+        let mut factors = [SECONDARY_SPLIT as f32; SPLIT_DEPTH as usize + 2];
+        factors[0] = f32::INFINITY;
+        factors[SPLIT_DEPTH as usize + 1] = 1.0;
+        factors
+    };
+    FACTORS[(depth as usize).min(SPLIT_DEPTH as usize + 1)]
+}
+
+/// `sqrt(f32::EPSILON)`, 2^-11.5: the relative error of a hit point found by the textbook quadratic at its
+/// worst, when cancellation takes half the digits.
+const SQRT_EPSILON: f32 = 3.452_669_8e-4;
+
+/// The slack of the budget for rounding: a shader that splits its ray's weight `w` into `R * w` and
+/// `(1 - R) * w` rounds `1 - R` and each product once, so their sum may exceed `w` by `2 * EPSILON * w`;
+/// twice that is allowed, so that such a split is never taken for an average.
+const ROUNDING: f32 = 1.0 + 4.0 * f32::EPSILON;
+
+/// The shading point whose shader is running: its rays ([`Siblings`]) and where it is ([`Origin`]).
+/// `raytrace` keeps the one of the ray it shades, and gives it back when the shader is done.
+#[derive(Clone, Copy)]
+pub(crate) struct ShadingPoint<'a> {
+    siblings: Siblings,
+    origin: Origin<'a>,
+}
+
+/// The rays of one shading point: what they may still weigh and what they brought back.
+#[derive(Clone, Copy)]
+pub(crate) struct Siblings {
+    /// The colours the traced ones brought back, summed.
+    sum: Color,
+    /// What their weights may still add up to: the budget less the weights of every ray so far, those not
+    /// traced included.
+    remaining: f32,
+    /// How many were traced.
+    traced: u32,
+    /// Whether one of them came back NaN or infinite (then this point did not make the first such colour).
+    non_finite: bool,
+}
+
+/// Where a shading point is, for the end-of-run check of rays that hit the surface they left.
+#[derive(Clone, Copy)]
+struct Origin<'a> {
+    /// The node hit; `None` for the camera.
+    node: Option<&'a Node>,
+    /// How close to the hit point a ray of this point must find its node again to be taken for one that
+    /// found the surface it left (see [`ShadingPoint::finds_its_own_surface`]).
+    near: f32,
+    /// The surface's own normal at the hit.
+    normal: Vector,
+}
+
+impl Siblings {
+    /// The rays of the shading point of a ray at `depth` with weight `weight`.
+    #[inline(always)]
+    fn new(depth: u32, weight: f32) -> Siblings {
+        Siblings { sum: Color::BLACK, remaining: split_factor(depth) * ROUNDING * weight, traced: 0, non_finite: false }
+    }
+}
+
+impl<'a> ShadingPoint<'a> {
+    /// The camera: its rays are never shared.
+    pub(crate) fn camera() -> ShadingPoint<'a> {
+        ShadingPoint { siblings: Siblings::new(0, 1.0), origin: Origin { node: None, near: 0.0, normal: Vector::ZERO } }
+    }
+
+    /// The hit `info` on `node` of `ray`.
+    #[inline(always)]
+    fn new(node: &'a Node, ray: &Ray, info: &IntersectionInfo) -> ShadingPoint<'a> {
+        ShadingPoint {
+            siblings: Siblings::new(ray.depth, ray.weight),
+            origin: Origin {
+                node: Some(node),
+                near: SQRT_EPSILON * max_abs(info.ip).max(info.error),
+                normal: info.geometric_normal,
+            },
+        }
+    }
+
+    /// A ray of this point with weight `weight` is about to be traced: `None` if it is to be, or the mean of
+    /// its traced siblings' colours if it is over the budget.
+    #[inline(always)]
+    pub(crate) fn share(&mut self, weight: f32) -> Option<Color> {
+        let s = &mut self.siblings;
+        s.remaining -= weight;
+        if s.traced == 0 || s.remaining >= 0.0 {
+            return None;
+        }
+        Some(s.sum / s.traced as f32)
+    }
+
+    /// A ray of this point was traced and brought back `color`.
+    #[inline(always)]
+    pub(crate) fn traced(&mut self, color: Color) {
+        let s = &mut self.siblings;
+        s.traced += 1;
+        s.sum += color;
+        s.non_finite |= !color.is_finite();
+    }
+
+    /// One layer of this point, seen by `ray`, begins: its rays get a budget of their own and share no
+    /// colour with the rays of the layers before it (a `Layered` shader traces no rays of its own, so the
+    /// point's own are not kept for after the layer).
+    #[inline(always)]
+    pub(crate) fn begin_layer(&mut self, ray: &Ray) {
+        self.siblings = Siblings { non_finite: self.siblings.non_finite, ..Siblings::new(ray.depth, ray.weight) };
+    }
+
+    /// Whether a ray of this point, `ray`, that hit `node` at `hit` found the surface it left again: the same
+    /// node, closer to the point it left than the rounding error of a hit point computed by the textbook
+    /// quadratic, which loses half the digits to cancellation (`sqrt(EPSILON)` times the point's
+    /// coordinates), and crossing it the way it left it (from the side opposite to the one it went to: it
+    /// started under the surface). A ray correctly started off the surface ([`crate::lesson::ray::Ray::spawn`])
+    /// leaves it by at least the hit's error bound, so only a hit point off the surface by more than its
+    /// error bound (a geometry returning `ray.at(t)` unrefined) lands here. A true second hit of the same
+    /// node is crossed the other way (a ray leaving a closed shape near an edge, after a short chord through
+    /// it, leaves through another face; a concave surface is met again from the side the ray went to).
+    #[inline(always)]
+    fn finds_its_own_surface(&self, node: &Node, ray: &Ray, hit: &IntersectionInfo) -> bool {
+        let origin = &self.origin;
+        origin.node.is_some_and(|n| std::ptr::eq(n, node))
+            && hit.distance <= origin.near
+            && ray.dir.dot(origin.normal) * ray.dir.dot(hit.geometric_normal) > 0.0
+    }
+}
+
+impl<'a> TraceContext<'a> {
+    /// The colour the shader of `node` gives the hit `info` of `ray`, shaded as a shading point of its own
+    /// (its rays bounded by its budget), and what went wrong there counted for the end-of-run report: a
+    /// normal that was not of unit length as the geometry returned it (`unit_normal` false), a ray that
+    /// found the surface it left, a NaN or infinite colour made here.
+    #[inline(always)]
+    pub(crate) fn shade_hit(&mut self, node: &'a Node, ray: &Ray, info: &IntersectionInfo, unit_normal: bool) -> Color {
+        if !unit_normal {
+            self.note(node, |p| &mut p.bad_normals);
+        }
+        if self.shading.finds_its_own_surface(node, ray, info) {
+            self.note(node, |p| &mut p.self_hits);
+        }
+        let outer = std::mem::replace(&mut self.shading, ShadingPoint::new(node, ray, info));
+        let color = node.shader.shade(ray, info, self);
+        let point = std::mem::replace(&mut self.shading, outer);
+        if !color.is_finite() && !point.siblings.non_finite {
+            let source = self.scene.node_index(node).map_or(Source::Environment, Source::Node);
+            Problems::count(&mut self.counters.problems.non_finite, source);
+        }
+        color
+    }
+
+    /// Counts one more problem of the kind `what` picks for `node` (kept out of `raytrace`'s code: it is
+    /// the rare path).
+    #[inline(never)]
+    fn note(&mut self, node: &Node, what: impl FnOnce(&mut Problems) -> &mut BTreeMap<usize, u64>) {
+        let index = self.scene.node_index(node).unwrap_or(usize::MAX);
+        Problems::count(what(&mut self.counters.problems), index);
+    }
+}

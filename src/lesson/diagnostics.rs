@@ -1,0 +1,123 @@
+//! What went wrong in a render, by node: the end-of-run report every render prints (beyond the slides).
+//!
+//! A mistake in a student's geometry or shader rarely stops a render; it shows as black or speckled
+//! surfaces, or as nothing at all. `raytrace` counts, per node, what it can see go wrong while it traces
+//! ([`TraceContext::raytrace`]), at the cost of a few comparisons per ray:
+//! - a colour that came back NaN or infinite, at the deepest shading point that made it (the first one
+//!   whose rays all came back finite), or from the environment;
+//! - a ray that found the surface it left again, right where it left it (a hit point off its surface by
+//!   more than its error bound: the same node, closer than `sqrt(EPSILON)` times the point's coordinates,
+//!   and crossed from the side the ray left, see [`crate::lesson::branching`]);
+//! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`]);
+//!
+//! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
+
+use crate::lesson::node::Node;
+use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene};
+use std::collections::BTreeMap;
+
+#[cfg(doc)]
+use crate::lesson::scene::TraceContext;
+
+/// Where a NaN or infinite colour came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Source {
+    /// The shader of the node with this index in `Scene::nodes`.
+    Node(usize),
+    /// The environment (or a node that is not in the scene's list).
+    Environment,
+}
+
+/// What `raytrace` saw go wrong, counted by node (indices into `Scene::nodes`). Empty in a sound render.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Problems {
+    /// Colours that came back NaN or infinite, by where they were first made.
+    pub non_finite: BTreeMap<Source, u64>,
+    /// Rays that hit the surface they left, right where they left it, by node.
+    pub self_hits: BTreeMap<usize, u64>,
+    /// Hits whose normal, as the geometry returned it, is not of unit length (or is NaN), by node.
+    pub bad_normals: BTreeMap<usize, u64>,
+}
+
+impl Problems {
+    /// Adds `other`'s counts to these.
+    pub fn add(&mut self, other: &Problems) {
+        fn merge<K: Ord + Copy>(a: &mut BTreeMap<K, u64>, b: &BTreeMap<K, u64>) {
+            if b.is_empty() {
+                return;
+            }
+            for (k, n) in b {
+                *a.entry(*k).or_default() += n;
+            }
+        }
+        merge(&mut self.non_finite, &other.non_finite);
+        merge(&mut self.self_hits, &other.self_hits);
+        merge(&mut self.bad_normals, &other.bad_normals);
+    }
+
+    /// Counts one more of `what` for `node`.
+    pub(crate) fn count<K: Ord>(what: &mut BTreeMap<K, u64>, node: K) {
+        *what.entry(node).or_default() += 1;
+    }
+
+    /// The end-of-run report of a render with these counters: one line for each kind of problem, naming
+    /// the nodes (and their shaders) it came from, most frequent first; nothing for a sound render.
+    pub fn report(counters: &Counters, scene: &Scene) -> Vec<String> {
+        let problems = &counters.problems;
+        let node = |i: usize| match scene.nodes.get(i) {
+            Some(n) => format!("{} ({})", scene.node_name(n), n.shader.name()),
+            None => format!("node #{i}"),
+        };
+        let mut lines = Vec::new();
+        if counters.non_finite_samples > 0 {
+            let sources = listed(&problems.non_finite, |s| match *s {
+                Source::Node(i) => format!("the shader of {}", node(i)),
+                Source::Environment => "the environment".to_string(),
+            });
+            lines.push(format!(
+                "{} sample(s) came back NaN or infinite and were shown as black; made by {sources}",
+                counters.non_finite_samples
+            ));
+        }
+        if !problems.self_hits.is_empty() {
+            lines.push(format!(
+                "rays hit the surface they left, right where they left it (self-intersection: the hit point is \
+                 off the surface by more than its error bound; put it back on the surface or widen the bound \
+                 with IntersectionInfo::with_error): {}",
+                listed(&problems.self_hits, |&i| node(i))
+            ));
+        }
+        if !problems.bad_normals.is_empty() {
+            lines.push(format!(
+                "a geometry returned a normal that is not of unit length, or NaN (normalise it): {}",
+                listed(&problems.bad_normals, |&i| node(i))
+            ));
+        }
+        if counters.capped_rays > 0 {
+            lines.push(format!(
+                "{} ray(s) bounced past the safety cap of {RECURSION_SAFETY_CAP} and returned black: without a depth \
+                 limit, facing mirrors recurse until the stack overflows; that is why Reflection v0.2 adds \
+                 MAX_RAY_DEPTH",
+                counters.capped_rays
+            ));
+        }
+        lines
+    }
+}
+
+/// "A (12), B (3)": the entries of `counts`, most frequent first, each named by `name`.
+fn listed<K>(counts: &BTreeMap<K, u64>, name: impl Fn(&K) -> String) -> String {
+    let mut entries: Vec<_> = counts.iter().collect();
+    entries.sort_by(|a, b| b.1.cmp(a.1));
+    entries.iter().map(|(k, n)| format!("{} ({n})", name(k))).collect::<Vec<_>>().join(", ")
+}
+
+impl Scene {
+    /// The index in `nodes` of a node of this scene (found from its address: the end-of-run report names
+    /// nodes by it, and a render of many instances must not search them all).
+    pub fn node_index(&self, node: &Node) -> Option<usize> {
+        let offset = (node as *const Node as usize).checked_sub(self.nodes.as_ptr() as usize)?;
+        let i = offset / std::mem::size_of::<Node>();
+        (i < self.nodes.len() && std::ptr::eq(&self.nodes[i], node)).then_some(i)
+    }
+}

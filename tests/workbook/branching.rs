@@ -1,0 +1,169 @@
+//! The core's bound on branching (`lecture6::lesson::branching`): a student's glossy mirror that averages
+//! N rays, each passed its full weight, traces a number of rays linear in the depth limit, and converges to
+//! the workbook's own glossy mirror; the workbook's shaders never reach the bound.
+
+use lecture6::lesson::branching::{SECONDARY_SPLIT, SPLIT_DEPTH};
+use lecture6::lesson::frame::Frame;
+use lecture6::lesson::render::{RenderSettings, RenderStats, render};
+use lecture6::lesson::sampling::DiscSampler;
+use lecture6::prelude::*;
+
+/// The API page's glossy mirror (docs/homework-api.md, "Randomness in a shader"), the file
+/// docs/homework_glossy.rs: each ray passed the tint's full factor.
+#[path = "../../docs/homework_glossy.rs"]
+mod homework_glossy;
+
+use homework_glossy::TintedGlossy;
+
+/// The same mirror passing each of its `n` rays 1/n of the factor instead (the ray it shades is given 1/n
+/// of its weight, which its rays inherit).
+struct OneNth(TintedGlossy);
+
+impl Shader for OneNth {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.0.shade(&Ray { weight: ray.weight / self.0.n as f32, ..*ray }, info, ctx)
+    }
+}
+
+/// A sky of bright and dark stripes across x, so that what the panels reflect, and how blurred, shows.
+struct Stripes;
+
+impl Environment for Stripes {
+    fn get(&self, dir: Vector) -> Color {
+        if (dir.x * 6.0).sin() > 0.0 { Color::new(1.0, 0.95, 0.8) } else { Color::new(0.05, 0.1, 0.3) }
+    }
+}
+
+const N: u32 = 16;
+const DEPTH: u32 = 10;
+const GLOSSINESS: f32 = 0.9;
+const TINT: Color = Color::new(0.95, 0.9, 0.8);
+
+/// Two panels facing each other 20 apart, each a glossy mirror made by `shader`; the camera stands
+/// between them, looking at one askew, so that most of the picture is glossy seen in glossy, `DEPTH` deep.
+pub fn facing_panels(shader: impl Fn() -> Arc<dyn Shader>) -> Scene {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 0.0, 6.0), Vector::new(3.0, 1.0, -10.0), 70.0));
+    for z in [-10.0, 10.0] {
+        let panel = Node::new(Cube::new(Vector::ZERO, 1.0), shader());
+        scene.add(panel.scale(Vector::new(12.0, 8.0, 0.05)).translate(Vector::new(0.0, 0.0, z)));
+    }
+    scene.environment = Some(Arc::new(Stripes));
+    scene.max_depth = DEPTH;
+    scene
+}
+
+fn student(one_nth: bool) -> Scene {
+    let glossy = || TintedGlossy { tint: TINT, glossiness: GLOSSINESS, n: N };
+    facing_panels(|| if one_nth { Arc::new(OneNth(glossy())) } else { Arc::new(glossy()) })
+}
+
+fn workbook() -> Scene {
+    facing_panels(|| {
+        Arc::new(Reflection::glossy(TINT, GLOSSINESS, N).unwrap().with_sampler(DiscSampler::Random)) as Arc<dyn Shader>
+    })
+}
+
+fn settings(seed: u64) -> RenderSettings {
+    RenderSettings { width: 160, height: 120, spp: 1, seed, ..RenderSettings::default() }
+}
+
+fn rendered(scene: &Scene, seed: u64) -> (Frame, RenderStats) {
+    let (frame, stats) = render(scene, &settings(seed)).unwrap();
+    assert!(stats.warnings.is_empty(), "{:?}", stats.warnings);
+    (frame, stats)
+}
+
+#[test]
+fn a_full_weight_average_traces_rays_linear_in_the_depth() {
+    let (_, stats) = rendered(&student(false), 1);
+    let c = &stats.counters;
+    let camera_rays = c.rays_by_depth[0];
+    // N rays at the camera ray's hit, SECONDARY_SPLIT per shading point down to the split depth, one below
+    // it: no depth holds more than N * SECONDARY_SPLIT^(SPLIT_DEPTH - 1) rays per camera ray, and every
+    // depth below the split depth holds no more rays than the one above it.
+    let widest = (N * SECONDARY_SPLIT.pow(SPLIT_DEPTH - 1)) as u64;
+    for depth in 1..=DEPTH as usize {
+        assert!(c.rays_by_depth[depth] <= widest * camera_rays, "depth {depth}: {:?}", c.rays_by_depth);
+    }
+    for depth in SPLIT_DEPTH as usize + 2..=DEPTH as usize {
+        assert!(c.rays_by_depth[depth] <= c.rays_by_depth[depth - 1], "depth {depth}: {:?}", c.rays_by_depth);
+    }
+    assert!(c.shared_rays > 0, "the student's shader was never bounded: {c:?}");
+    // It goes DEPTH deep where the workbook's does: nothing is pruned for its weight.
+    let (_, own) = rendered(&workbook(), 1);
+    assert!(c.rays_by_depth[DEPTH as usize] > 0 && own.counters.rays_by_depth[DEPTH as usize] > 0);
+    // The workbook's own glossy never reaches the bound: it caps its rays itself.
+    assert_eq!(own.counters.shared_rays, 0);
+}
+
+/// The mean difference of two pictures and its standard error, per channel, over the pixels `(x, y)` for
+/// which `within` holds.
+fn mean_difference(a: &Frame, b: &Frame, within: impl Fn(u32, u32) -> bool) -> [(f64, f64); 3] {
+    std::array::from_fn(|c| {
+        let d: Vec<f64> = (0..a.height)
+            .flat_map(|y| (0..a.width).map(move |x| (x, y)))
+            .filter(|&(x, y)| within(x, y))
+            .map(|(x, y)| (a.get(x, y).to_array()[c] - b.get(x, y).to_array()[c]) as f64)
+            .collect();
+        let n = d.len() as f64;
+        let mean = d.iter().sum::<f64>() / n;
+        let variance = d.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+        (mean, (variance / n).sqrt())
+    })
+}
+
+/// Whether two renders estimate the same picture: the whole picture, and each of its 4 x 3 blocks, has a
+/// mean difference within 5 standard errors, per channel (39 comparisons: were they the same picture,
+/// chance would fail one in about 50,000 seeds; the seeds here are fixed). Measured over six pairs of
+/// seeds, the student's full-weight glossy against the workbook's: the largest of the 39 was 1.8 to 3.2
+/// standard errors; the 1/N share: 74 to 80.
+fn same_picture(a: &Frame, b: &Frame) -> Result<(), String> {
+    let (bw, bh) = (a.width / 4, a.height / 3);
+    let whole = [(0..a.width, 0..a.height)];
+    let blocks = (0..3).flat_map(|j| (0..4).map(move |i| (i * bw..(i + 1) * bw, j * bh..(j + 1) * bh)));
+    for (xs, ys) in whole.into_iter().chain(blocks) {
+        for (channel, (mean, error)) in
+            mean_difference(a, b, |x, y| xs.contains(&x) && ys.contains(&y)).iter().enumerate()
+        {
+            if mean.abs() > 5.0 * error {
+                return Err(format!(
+                    "pixels {xs:?} x {ys:?}, channel {channel}: mean difference {mean:.4} +- {error:.4}"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn a_full_weight_average_converges_to_the_workbooks_glossy() {
+    let (own, _) = rendered(&workbook(), 2);
+    let (full, _) = rendered(&student(false), 1);
+    same_picture(&full, &own).unwrap();
+    // The test tells pictures apart: the 1/N share is pruned after two bounces and is darker where
+    // glossy sees glossy.
+    let (share, _) = rendered(&student(true), 1);
+    assert!(same_picture(&share, &own).is_err(), "the 1/N share cannot be told from the workbook's glossy");
+}
+
+/// A shader that splits its ray into a reflection and a refraction whose weights add up to the ray's,
+/// in one `shade`, as a student's glass would: both rays are traced at every depth.
+struct Splitter;
+
+impl Shader for Splitter {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let reflectance = 0.3 + 0.4 * ctx.rng.next_f32();
+        let straight = ctx.raytrace(&ray.spawn(info, ray.dir, 1.0 - reflectance));
+        let back = ctx.raytrace(&ray.spawn(info, reflect(ray.dir, info.normal), reflectance));
+        straight * (1.0 - reflectance) + back * reflectance
+    }
+}
+
+#[test]
+fn a_split_of_the_weight_is_traced_at_every_depth() {
+    let mut scene = facing_panels(|| Arc::new(Splitter));
+    scene.max_depth = 8;
+    let (_, stats) = rendered(&scene, 1);
+    assert_eq!(stats.counters.shared_rays, 0, "{:?}", stats.counters);
+    assert!(stats.counters.rays_by_depth[8] > 0);
+}
