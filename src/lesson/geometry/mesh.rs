@@ -80,6 +80,25 @@ fn obj_error(bytes: &[u8], consumed: usize, e: tobj::LoadError) -> String {
     }
 }
 
+/// The text of an OBJ file as tobj reads it, and whether it has polylines: without a UTF-8 byte-order mark,
+/// with any byte that is not UTF-8 (a Latin-1 letter in a comment or a group name, where the file's numbers
+/// never are) replaced by U+FFFD, so that one such byte does not make the whole file unreadable, and with
+/// its polylines (`l` lines) made comments: tobj reads them as faces, which would fill the polygon a
+/// polyline outlines. Lines keep their numbers.
+fn obj_text(bytes: &[u8]) -> (String, bool) {
+    let text = String::from_utf8_lossy(bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes));
+    let is_polyline = |line: &str| {
+        let mut words = line.split_ascii_whitespace();
+        words.next() == Some("l")
+    };
+    if !text.lines().any(is_polyline) {
+        return (text.into_owned(), false);
+    }
+    let lines: Vec<String> =
+        text.split('\n').map(|line| if is_polyline(line) { format!("#{line}") } else { line.to_string() }).collect();
+    (lines.join("\n"), true)
+}
+
 /// Index triples into a list of attributes, one per triangle.
 type Indices = [[u32; 3]];
 
@@ -194,12 +213,17 @@ impl Mesh {
             return Err(fail(format!("it is an image (.{ext}), not an OBJ file")));
         }
         let bytes = input::read_capped(path, "cannot read mesh", "an OBJ file", MAX_OBJ_BYTES)?;
+        let (text, polylines) = obj_text(&bytes);
+        let bytes = text.as_bytes();
         let options =
             tobj::LoadOptions { triangulate: false, single_index: false, ignore_points: true, ignore_lines: true };
-        let mut rest: &[u8] = &bytes;
+        let mut rest: &[u8] = bytes;
         // Materials are not needed: a missing .mtl file is not an error.
         let (models, _) = tobj::load_obj_buf(&mut rest, &options, |_| Err(tobj::LoadError::OpenFileFailed))
-            .map_err(|e| fail(obj_error(&bytes, bytes.len() - rest.len(), e)))?;
+            .map_err(|e| fail(obj_error(bytes, bytes.len() - rest.len(), e)))?;
+        if polylines && models.iter().all(|m| m.mesh.indices.is_empty()) {
+            return Err(fail("it has only polylines (`l` lines) and no faces: a line has no surface to render".into()));
+        }
         let mut positions = Vec::new();
         let mut triangles = Vec::new();
         let (mut normals, mut normal_indices) = (Vec::new(), Vec::new());
