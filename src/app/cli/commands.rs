@@ -80,10 +80,30 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
         matches.map_err(|e| Error::parameter("--side-by-side", alternative, e.to_string().lines().next().unwrap_or("")))
     };
     let (a, b) = (parse(&[])?, parse(&alt)?);
+    let path = a.output_path_for(name, "-side-by-side");
+    // B's frame size is known from its options and its scene before anything is traced: a B of another
+    // size than A is refused before either is rendered.
+    let mut b_settings = b.settings();
+    b_settings.check()?;
+    b.scene_and_settings(&mut b_settings)?;
+    let b_size = (b_settings.width, b_settings.height);
     let words = |args: &[OsString]| args.iter().map(|a| a.to_string_lossy()).collect::<Vec<_>>().join(" ");
     let base_text = if base.is_empty() { "(its defaults)".to_string() } else { words(&base) };
     let panel = |label: &str, args: &Cli<E>, options: &str| -> Result<Panel> {
-        let (frame, stats) = args.render()?;
+        let (frame, stats, _) = args.render_checked(|_, settings| {
+            if (settings.width, settings.height) != b_size {
+                return Err(Error::parameter(
+                    "--side-by-side",
+                    alternative,
+                    format!(
+                        "changes the picture's size ({}x{} to {}x{}): A and B cannot be compared",
+                        settings.width, settings.height, b_size.0, b_size.1
+                    ),
+                ));
+            }
+            // The inputs have been read: the picture may not replace one.
+            input::check_not_an_input(&path, "the side-by-side picture")
+        })?;
         let secs = stats.elapsed.as_secs_f64();
         let rays = stats.counters.total() as f64 * 1e-6;
         Ok(Panel {
@@ -93,11 +113,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     };
     let pa = panel("A", &a, &base_text)?;
     let pb = panel("B", &b, &format!("{base_text} + {alternative}"))?;
-    let (picture, diff) = a_b_difference(pa, pb).map_err(|_| {
-        Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
-    })?;
-    let path = a.output_path_for(name, "-side-by-side");
-    input::check_not_an_input(&path, "the side-by-side picture")?;
+    let (picture, diff) = a_b_difference(pa, pb)?;
     save_atomically(&path, |file| picture.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",
