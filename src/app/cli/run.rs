@@ -6,7 +6,7 @@ use super::example::{Cli, Example};
 use super::help::help_command;
 use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
-use crate::lesson::frame::{keeps_linear_light, save_atomically};
+use crate::lesson::frame::{check_output, keeps_linear_light, save_atomically};
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
 use crate::lesson::render::thread_pool;
@@ -134,6 +134,11 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     let output = args.output_path(name);
     let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
     let heat_path = output.with_file_name(format!("{stem}-diff.png"));
+    // Where the picture and the heat map go is checked before any work.
+    check_output(&output, None)?;
+    if args.common.compare.is_some() {
+        check_output(&heat_path, Some(image::ImageFormat::Png))?;
+    }
     // The reference's header is read, and its path checked against the outputs', before anything is
     // rendered; it is decoded once the render's size is known to match it, before anything is traced.
     let reference_file = match &args.common.compare {
