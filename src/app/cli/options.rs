@@ -101,7 +101,7 @@ pub struct CommonArgs {
     /// picture goes to out/EXAMPLE-compared.png: out/EXAMPLE.png, an earlier render, stays. An 8-bit reference
     /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too. Its size is checked
     /// from its header; it counts towards the images' budget of 67108864 pixels (see --env).
-    #[arg(long, value_name = "REFERENCE", help_heading = COMMON)]
+    #[arg(long, value_name = "REFERENCE", help_heading = COMMON, conflicts_with_all = ["trace_pixel", "view", "side_by_side"])]
     pub compare: Option<PathBuf>,
     /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
     /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
@@ -140,7 +140,7 @@ pub struct CommonArgs {
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
     /// start, direction, what it hits, the shader and layer that sent it, its weight, its colour and why it
     /// stopped, and how the colours add up to the pixel's.
-    #[arg(long, value_name = "X,Y", help_heading = COMMON)]
+    #[arg(long, value_name = "X,Y", help_heading = COMMON, conflicts_with = "side_by_side")]
     pub trace_pixel: Option<PixelPos>,
     /// Which camera ray of the pixel --trace-pixel shows (numbered from 0).
     #[arg(long, default_value_t = 0, value_name = "N", help_heading = COMMON)]
@@ -152,7 +152,7 @@ pub struct CommonArgs {
     /// and print its scale: the normals, texture coordinates (after the texture's scaling) or distance of
     /// what each pixel sees, or a heat map of the rays or shadow rays (log scale) or the deepest ray (linear)
     /// traced per pixel, with its legend in a strip below the picture.
-    #[arg(long, value_enum, help_heading = COMMON)]
+    #[arg(long, value_enum, help_heading = COMMON, conflicts_with_all = ["trace_pixel", "side_by_side"])]
     pub view: Option<DebugView>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
