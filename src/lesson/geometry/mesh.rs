@@ -76,8 +76,40 @@ fn obj_error(bytes: &[u8], consumed: usize, e: tobj::LoadError) -> String {
             format!("line {line}: {e}")
         }
         ReadError => format!("{e} (not a text file?)"),
+        FaceVertexOutOfBounds => out_of_bounds(bytes, 0, e),
+        FaceTexCoordOutOfBounds => out_of_bounds(bytes, 1, e),
+        FaceNormalOutOfBounds => out_of_bounds(bytes, 2, e),
         e => e.to_string(),
     }
+}
+
+/// tobj's index error `e`, with the line of the first face whose index `slot` (0: vertex, 1: texture
+/// coordinate, 2: normal) names an element the file does not have. tobj finds it only once the whole
+/// object is read, so it cannot say where; OBJ indices count from 1, and negative ones back from the last
+/// element listed so far.
+fn out_of_bounds(bytes: &[u8], slot: usize, e: tobj::LoadError) -> String {
+    let text = String::from_utf8_lossy(bytes);
+    let kinds = ["v", "vt", "vn"];
+    let total = text.lines().filter(|l| l.split_ascii_whitespace().next() == Some(kinds[slot])).count() as i64;
+    let mut so_far = 0i64;
+    for (i, line) in text.lines().enumerate() {
+        let mut words = line.split_ascii_whitespace();
+        match words.next() {
+            Some(k) if k == kinds[slot] => so_far += 1,
+            Some("f") => {
+                let bad = words.filter_map(|corner| corner.split('/').nth(slot)?.parse::<i64>().ok()).find(|&index| {
+                    let resolved = if index < 0 { so_far + 1 + index } else { index };
+                    !(1..=total).contains(&resolved)
+                });
+                if let Some(index) = bad {
+                    let what = ["vertices", "texture coordinates", "normals"][slot];
+                    return format!("line {}: {e}: index {index}, and the file has {total} {what}", i + 1);
+                }
+            }
+            _ => {}
+        }
+    }
+    e.to_string()
 }
 
 /// The text of an OBJ file as tobj reads it, and whether it has polylines: without a UTF-8 byte-order mark,
