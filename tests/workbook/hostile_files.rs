@@ -330,3 +330,30 @@ fn names_and_file_names_in_a_scene_that_is_not_utf_8_are_its_bytes() {
     named.extend(b"\xe9.png");
     assert_eq!(render("latin-1-file-name.qdmg", &replaced_bytes(&text, &[(floor.as_str(), &named)])), plain);
 }
+
+#[test]
+fn a_large_texture_counts_once_against_the_pixel_budget() {
+    // A 24-megapixel --texture was decoded for each of the three objects that show it, and counted three
+    // times against the budget of 67108864 pixels (72 M): refused, though --help promises room for it.
+    let path = dir().join("24-megapixels.png");
+    if !path.exists() {
+        std::fs::write(&path, common::hostile::black_png(6000, 4000)).unwrap();
+    }
+    run("bitmap_textures", &["--texture", s(&path)]).0.assert_rendered("a 24-megapixel texture");
+}
+
+#[test]
+fn messages_name_invisible_characters_and_the_line_of_an_obj_index_error() {
+    // A no-break space, a zero-width space or a byte-order mark inside a line was echoed invisibly.
+    for (name, invisible, named) in [
+        ("no-break-space", "\u{a0}", "<U+00A0 no-break space>"),
+        ("zero-width-space", "\u{200b}", "<U+200B zero-width space>"),
+        ("byte-order-mark", "\u{feff}", "<U+FEFF byte-order mark>"),
+    ] {
+        let scene = scene_with("R  27", &format!("R{invisible}27"));
+        scene_refused(&format!("{name}.qdmg"), &scene, &[&format!("line {}", line_of(&scene, "\tR")), named]);
+    }
+    // "face vertex index out of bounds", without a line.
+    let obj = file("index-9.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n# a comment\nf 1 2 3\nf 1 2 9\n");
+    refused("model_transform", &["--mesh", s(&obj)], &[s(&obj), "line 6", "index 9", "3 vertices"]);
+}

@@ -134,11 +134,6 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     let output = args.output_path(name);
     let stem = output.file_stem().map(|s| s.to_string_lossy()).unwrap_or_default();
     let heat_path = output.with_file_name(format!("{stem}-diff.png"));
-    // Where the picture and the heat map go is checked before any work.
-    check_output(&output, None)?;
-    if args.common.compare.is_some() {
-        check_output(&heat_path, Some(image::ImageFormat::Png))?;
-    }
     // The reference's header is read, and its path checked against the outputs', before anything is
     // rendered; it is decoded once the render's size is known to match it, before anything is traced.
     let reference_file = match &args.common.compare {
@@ -148,6 +143,12 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         }
         None => None,
     };
+    // Where the picture and the heat map go is checked before any work (after the reference's own check:
+    // this one makes the output's folder).
+    check_output(&output, None)?;
+    if reference_file.is_some() {
+        check_output(&heat_path, Some(image::ImageFormat::Png))?;
+    }
     let mut reference = None;
     let quiet = args.common.quiet;
     let (frame, stats, settings) = args.render_checked(|scene, settings| {
