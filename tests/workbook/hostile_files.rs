@@ -88,6 +88,15 @@ fn truncated_jpegs_and_pngs_are_refused_as_truncated() {
     let png = encoded(gradient(64, 64), image::ImageFormat::Png);
     let cut = file("cut.png", &png[..png.len() / 2]);
     refused("bitmap_textures", &["--texture", s(&cut)], &[s(&cut)]);
+    // A BMP or Radiance file cut short was "failed to fill whole buffer".
+    for format in [image::ImageFormat::Bmp, image::ImageFormat::Hdr] {
+        let whole = match format {
+            image::ImageFormat::Hdr => encoded(float_picture(0.5), format),
+            _ => encoded(gradient(64, 32), format),
+        };
+        let cut = file(&format!("cut.{}", format.extensions_str()[0]), &whole[..whole.len() / 2]);
+        refused("bitmap_textures", &["--env", s(&cut)], &[s(&cut), "truncated: the file ends before its picture does"]);
+    }
 }
 
 #[test]
