@@ -12,19 +12,19 @@ use std::io::Cursor;
 use std::path::Path;
 
 /// A `width` x `height` colour gradient, as 8-bit RGB.
-fn gradient(width: u32, height: u32) -> image::RgbImage {
+pub(crate) fn gradient(width: u32, height: u32) -> image::RgbImage {
     image::RgbImage::from_fn(width, height, |x, y| image::Rgb([(x * 4) as u8, (y * 4) as u8, 128]))
 }
 
 /// `image` encoded as `format`.
-fn encoded(image: impl Into<image::DynamicImage>, format: image::ImageFormat) -> Vec<u8> {
+pub(crate) fn encoded(image: impl Into<image::DynamicImage>, format: image::ImageFormat) -> Vec<u8> {
     let mut bytes = Cursor::new(Vec::new());
     image.into().write_to(&mut bytes, format).unwrap();
     bytes.into_inner()
 }
 
 /// A 64 x 32 floating-point picture (a panorama's 2:1), grey but for the pixel at (3, 2), which is `value`.
-fn float_picture(value: f32) -> image::Rgb32FImage {
+pub(crate) fn float_picture(value: f32) -> image::Rgb32FImage {
     image::Rgb32FImage::from_fn(64, 32, |x, y| image::Rgb(if (x, y) == (3, 2) { [value, 0.5, 0.5] } else { [0.5; 3] }))
 }
 
