@@ -366,3 +366,15 @@ fn messages_name_invisible_characters_and_the_line_of_an_obj_index_error() {
     let obj = file("index-9.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n# a comment\nf 1 2 3\nf 1 2 9\n");
     refused("model_transform", &["--mesh", s(&obj)], &[s(&obj), "line 6", "index 9", "3 vertices"]);
 }
+
+#[test]
+fn the_duplicate_name_warning_is_a_whole_sentence() {
+    // It stopped at "which references get" (the course's testmesh.qdmg prints it).
+    let scene = scene_with("Node floor {", "Lambert glass {\n\tcolor (1, 0, 0)\n}\n\nNode floor {");
+    let path = file("duplicate-name.qdmg", &scene);
+    let r = run("scene_file", &[s(&path)]).0;
+    r.assert_rendered("a duplicate name");
+    let line = format!("duplicate-name.qdmg:{}: warning", line_of(&scene, "Lambert glass {"));
+    assert!(r.stderr.contains(&line), "{}", r.stderr);
+    assert!(r.stderr.contains("references get that one, and this one is never used"), "{}", r.stderr);
+}

@@ -88,7 +88,7 @@ impl<'a> Loader<'a> {
                         self.warn(
                             b.line,
                             format!(
-                                "a {} called `{name}` is already defined at line {first_line}, which references get",
+                                "a {} called `{name}` is already defined at line {first_line}: references get that one, and this one is never used",
                                 ns.word()
                             ),
                         );
