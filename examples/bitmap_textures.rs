@@ -34,9 +34,14 @@ pub struct Options {
 }
 
 impl Options {
-    /// The bundled texture `name`, or the student's `--texture` in its place, filtered and wrapped as asked.
-    fn load(&self, name: &str, own: Option<&Path>) -> Result<BitmapTexture> {
-        Ok(load_texture(name, own, self.filter)?.with_wrap(self.wrap, self.wrap))
+    /// The bundled texture `name`, or the student's image `own` (read once, shared by every object that
+    /// shows it) in its place, filtered and wrapped as asked.
+    fn load(&self, name: &str, own: Option<&Arc<Bitmap>>) -> Result<BitmapTexture> {
+        let texture = match own {
+            Some(bitmap) => BitmapTexture::new(bitmap.clone()).with_filter(self.filter),
+            None => load_texture(name, None, self.filter)?,
+        };
+        Ok(texture.with_wrap(self.wrap, self.wrap))
     }
 }
 
@@ -44,7 +49,9 @@ impl Example for Options {
     const DEFAULT_SPP: u32 = 4;
 
     fn scene(&self) -> Result<Scene> {
-        let own = self.texture.as_deref();
+        // The student's image is decoded once: it counts once against the pixel budget.
+        let own = self.texture.as_deref().map(Bitmap::load).transpose()?.map(Arc::new);
+        let own = own.as_ref();
         let camera = Camera { position: Vector::new(0.0, 48.0, -95.0), pitch: -20.0, fov: 75.0, ..Camera::default() };
         let mut scene = Scene::new(camera);
         scene.ambient = Color::gray(0.12);

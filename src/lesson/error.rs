@@ -43,17 +43,35 @@ impl Error {
 
 /// `text` with its control characters (C0 and C1: `\r`, `\n`, `\v`, escape sequences, ...) and the Unicode
 /// line and paragraph separators written as escapes (`\r`, `\u{b}`, `\u{2028}`), so that it prints on the
-/// line it is given and cannot rewrite what the terminal shows.
+/// line it is given and cannot rewrite what the terminal shows. The characters that look like a space or
+/// like nothing (a no-break space, a zero-width space, a byte-order mark) are named, so that a value that
+/// looks right but is refused shows why.
 pub fn printable(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
-        if c.is_control() || matches!(c, '\u{2028}' | '\u{2029}') {
+        if let Some(name) = invisible(c) {
+            out.push_str(&format!("<U+{:04X} {name}>", c as u32));
+        } else if c.is_control() || matches!(c, '\u{2028}' | '\u{2029}') {
             out.extend(c.escape_debug());
         } else {
             out.push(c);
         }
     }
     out
+}
+
+/// The name of a character that cannot be seen, or looks like a plain space.
+fn invisible(c: char) -> Option<&'static str> {
+    Some(match c {
+        '\u{a0}' => "no-break space",
+        '\u{202f}' => "narrow no-break space",
+        '\u{200b}' => "zero-width space",
+        '\u{200c}' => "zero-width non-joiner",
+        '\u{200d}' => "zero-width joiner",
+        '\u{2060}' => "word joiner",
+        '\u{feff}' => "byte-order mark",
+        _ => return None,
+    })
 }
 
 /// The renderer's `Result`: [`Error`] unless another error type is named.

@@ -3,6 +3,7 @@
 
 use crate::lesson::color::{Color, to_srgb8};
 use crate::lesson::error::{Error, Result};
+use crate::lesson::input;
 use rayon::prelude::*;
 use std::io::BufWriter;
 use std::path::Path;
@@ -59,13 +60,7 @@ impl Frame {
     /// temporary file beside the target first and is renamed over it only when complete, so a failure never
     /// destroys an earlier picture (see [`save_atomically`]).
     pub fn save(&self, path: &Path) -> Result<()> {
-        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
-        let format = match ext.as_deref() {
-            Some("png") => image::ImageFormat::Png,
-            Some("exr") => image::ImageFormat::OpenExr,
-            Some("hdr") => image::ImageFormat::Hdr,
-            _ => return Err(Error::file("cannot write image", path, "the name must end in .png, .exr or .hdr")),
-        };
+        let format = output_format(path)?;
         save_atomically(path, |file| match format {
             image::ImageFormat::Png => self.to_rgb8().write_to(file, format),
             _ => self.to_rgb32f().write_to(file, format),
@@ -78,6 +73,53 @@ impl Frame {
 pub fn keeps_linear_light(path: &Path) -> bool {
     let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
     matches!(ext.as_deref(), Some("exr" | "hdr"))
+}
+
+/// The format a picture written to `path` has, from its extension: `.png`, `.exr` or `.hdr`.
+pub fn output_format(path: &Path) -> Result<image::ImageFormat> {
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("png") => Ok(image::ImageFormat::Png),
+        Some("exr") => Ok(image::ImageFormat::OpenExr),
+        Some("hdr") => Ok(image::ImageFormat::Hdr),
+        _ => Err(Error::file("cannot write image", path, "the name must end in .png, .exr or .hdr")),
+    }
+}
+
+/// Checks, before any work, that a picture can be written to `path` as [`save_atomically`] writes it: its
+/// name names `format` when one is given (an 8-bit picture such as a debug view is PNG only) or one of
+/// [`output_format`]'s; what is there already is a regular file that may be written (a FIFO, a device
+/// node or a read-only file is refused: the rename would replace it with a regular file, or change the
+/// mode a read-only file was given); and its folder exists or can be made, and takes a new file (probed
+/// with a temporary file, removed at once).
+pub fn check_output(path: &Path, format: Option<image::ImageFormat>) -> Result<()> {
+    let refuse = |reason: String| Error::file("cannot write image", path, reason);
+    let named = output_format(path)?;
+    if let Some(format) = format.filter(|&f| f != named) {
+        let ext = format.extensions_str()[0];
+        return Err(refuse(format!("this picture is written as {format:?} only: its name must end in .{ext}")));
+    }
+    if let Ok(metadata) = std::fs::metadata(path) {
+        if !metadata.is_file() {
+            return Err(refuse(format!(
+                "it is {}; a picture is written only as a regular file",
+                input::kind(metadata.file_type())
+            )));
+        }
+        if metadata.permissions().readonly() {
+            return Err(refuse("it is read-only; make it writable, or write elsewhere with -o".into()));
+        }
+    }
+    let dir = match path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).map_err(|e| Error::file("cannot create the folder for", path, e))?;
+            dir
+        }
+        None => Path::new("."),
+    };
+    tempfile::Builder::new().prefix(".probe.").tempfile_in(dir).map(drop).map_err(|e| {
+        Error::file("cannot write image", path, format!("its folder '{}' takes no new file: {e}", dir.display()))
+    })
 }
 
 /// Writes a file through `write`, which is given a temporary file in the folder of `path` (made if needed):

@@ -60,6 +60,72 @@ impl Drop for PixelCharge {
     }
 }
 
+/// The largest image file read: a floating-point RGBA picture of the whole budget, uncompressed. Some
+/// decoders read a file whole before they look at it, so a larger file is refused from its size before
+/// anything is read.
+pub const MAX_IMAGE_FILE_BYTES: u64 = MAX_DECODER_BYTES;
+
+/// The formats the renderer reads, each with the bytes its files begin with (Radiance files begin with
+/// `#?RADIANCE`, or `#?RGBE` as some programs write them). A file is read as the format its first bytes
+/// name, whatever its extension says; a file that begins with none of them is refused before it is decoded.
+const SIGNATURES: [(&[u8], image::ImageFormat); 6] = [
+    (b"\x89PNG\r\n\x1a\n", image::ImageFormat::Png),
+    (b"\xff\xd8\xff", image::ImageFormat::Jpeg),
+    (b"BM", image::ImageFormat::Bmp),
+    (b"#?RADIANCE", image::ImageFormat::Hdr),
+    (RGBE_SIGNATURE, image::ImageFormat::Hdr),
+    (b"v/1\x01", image::ImageFormat::OpenExr),
+];
+
+/// The other signature of Radiance files, which the decoder does not know: such a file is decoded with
+/// `#?RADIANCE` in its place.
+const RGBE_SIGNATURE: &[u8] = b"#?RGBE";
+
+/// The JPEG end-of-image marker, the last two bytes of a whole JPEG file (zeros may pad it).
+const JPEG_END: [u8; 2] = [0xff, 0xd9];
+
+/// The format named by the first bytes of `file`, or why there is none.
+fn signature(mut file: &File, size: u64) -> std::result::Result<(image::ImageFormat, &'static [u8]), String> {
+    use std::io::Read;
+    let mut head = [0u8; 16];
+    let mut read = 0;
+    while read < head.len() {
+        match file.read(&mut head[read..]) {
+            Ok(0) => break,
+            Ok(n) => read += n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e.to_string()),
+        }
+    }
+    let head = &head[..read];
+    if let Some(&(magic, format)) = SIGNATURES.iter().find(|(magic, _)| head.starts_with(magic)) {
+        return Ok((format, magic));
+    }
+    if size == 0 {
+        return Err("it is empty".to_string());
+    }
+    let bytes: Vec<String> = head.iter().take(8).map(|b| format!("{b:02x}")).collect();
+    Err(format!(
+        "not a PNG, JPEG, BMP, Radiance HDR or OpenEXR file: it begins with bytes {}, none of their signatures",
+        bytes.join(" ")
+    ))
+}
+
+/// Fails unless the JPEG file `file` of `size` bytes ends with the end-of-image marker, zeros after it
+/// aside: a JPEG cut short decodes without an error, as grey or a repeated pattern where its data ends.
+fn check_jpeg_end(mut file: &File, size: u64) -> std::result::Result<(), String> {
+    use std::io::{Read, SeekFrom};
+    const TAIL: u64 = 4096;
+    let mut tail = Vec::new();
+    file.seek(SeekFrom::Start(size.saturating_sub(TAIL))).map_err(|e| e.to_string())?;
+    file.take(TAIL).read_to_end(&mut tail).map_err(|e| e.to_string())?;
+    let end = tail.iter().rposition(|&b| b != 0).map_or(0, |i| i + 1);
+    if tail[..end].ends_with(&JPEG_END) {
+        return Ok(());
+    }
+    Err("truncated JPEG: it does not end with the end-of-image marker (ff d9), so its picture is cut short".into())
+}
+
 /// The width and height a BMP file's header states, if `format` is BMP and the header can be read.
 fn bmp_header_size(mut file: &File, format: image::ImageFormat) -> Option<(i64, i64)> {
     use std::io::Read;
@@ -82,6 +148,8 @@ fn bmp_header_size(mut file: &File, format: image::ImageFormat) -> Option<(i64, 
 pub struct ImageFile {
     path: PathBuf,
     file: File,
+    /// The file's bytes with `#?RADIANCE` in place of `#?RGBE`, for a Radiance file that begins so.
+    rewritten: Option<Vec<u8>>,
     format: image::ImageFormat,
     width: u32,
     height: u32,
@@ -93,17 +161,34 @@ impl ImageFile {
     /// header; the format is detected from its contents, or else its extension. A picture of no pixels,
     /// or one that does not fit in what is left of the budget, is refused here.
     pub fn open(path: &Path) -> Result<ImageFile> {
-        let (file, _) = input::open(path, "cannot open image")?;
-        let fail = |e: image::ImageError| Error::file("cannot read image", path, e);
-        let mut reader = image::ImageReader::new(BufReader::new(&file));
-        if let Ok(format) = image::ImageFormat::from_path(path) {
-            reader.set_format(format);
+        let (file, size) = input::open(path, "cannot open image")?;
+        let refuse = |reason: String| Error::file("cannot read image", path, reason);
+        if size > MAX_IMAGE_FILE_BYTES {
+            return Err(refuse(format!(
+                "it is {size} bytes long; an image file may be at most {MAX_IMAGE_FILE_BYTES} bytes (a \
+                 floating-point picture of the whole pixel budget)"
+            )));
         }
-        let reader = reader.with_guessed_format().map_err(|e| fail(e.into()))?;
-        let format = reader.format().ok_or_else(|| {
-            Error::file("cannot read image", path, "not an image format the renderer reads (PNG, JPEG, BMP, HDR, EXR)")
-        })?;
-        let (width, height) = reader.into_dimensions().map_err(|e| match bmp_header_size(&file, format) {
+        let (format, magic) = signature(&file, size).map_err(refuse)?;
+        if format == image::ImageFormat::Jpeg {
+            check_jpeg_end(&file, size).map_err(refuse)?;
+        }
+        let rewritten = if magic == RGBE_SIGNATURE {
+            use std::io::Read;
+            let mut bytes = b"#?RADIANCE".to_vec();
+            (&file).seek(std::io::SeekFrom::Start(magic.len() as u64)).map_err(|e| refuse(e.to_string()))?;
+            (&file).read_to_end(&mut bytes).map_err(|e| refuse(e.to_string()))?;
+            Some(bytes)
+        } else {
+            None
+        };
+        let fail = |e: image::ImageError| Error::file("cannot read image", path, e);
+        (&file).rewind().map_err(|e| fail(e.into()))?;
+        let dimensions = match &rewritten {
+            Some(bytes) => image::ImageReader::with_format(std::io::Cursor::new(bytes), format).into_dimensions(),
+            None => image::ImageReader::with_format(BufReader::new(&file), format).into_dimensions(),
+        };
+        let (width, height) = dimensions.map_err(|e| match bmp_header_size(&file, format) {
             // The BMP decoder calls a size of zero "too large".
             Some((w, h)) if w == 0 || h == 0 => {
                 Error::file("cannot use image", path, format!("it has no pixels ({w}x{h})"))
@@ -125,7 +210,7 @@ impl ImageFile {
                 ),
             )
         })?;
-        Ok(ImageFile { path: path.to_path_buf(), file, format, width, height, charge })
+        Ok(ImageFile { path: path.to_path_buf(), file, rewritten, format, width, height, charge })
     }
 
     /// Width and height in pixels, as the header says.
@@ -135,17 +220,56 @@ impl ImageFile {
 
     /// Decodes the picture; its share of the budget comes with it, to be held as long as the picture is.
     /// The decoder may not make a picture of another size than the header's.
+    /// A picture cut short is refused as truncated, and a floating-point picture must hold finite light: a
+    /// NaN or infinite pixel is refused, naming it.
     pub fn decode(mut self) -> Result<(image::DynamicImage, PixelCharge)> {
         let path = &self.path;
-        let fail = |e: image::ImageError| Error::file("cannot decode image", path, e);
-        self.file.rewind().map_err(|e| fail(e.into()))?;
-        let mut reader = image::ImageReader::with_format(BufReader::new(&self.file), self.format);
+        let fail = |e: image::ImageError| match e {
+            image::ImageError::IoError(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => {
+                Error::file("cannot decode image", path, "it is truncated: the file ends before its picture does")
+            }
+            e => Error::file("cannot decode image", path, e),
+        };
         let mut limits = image::Limits::default();
         limits.max_image_width = Some(self.width);
         limits.max_image_height = Some(self.height);
         limits.max_alloc = Some(MAX_DECODER_BYTES);
-        reader.limits(limits);
-        let image = reader.decode().map_err(fail)?;
+        let image = match &self.rewritten {
+            Some(bytes) => {
+                let mut reader = image::ImageReader::with_format(std::io::Cursor::new(bytes), self.format);
+                reader.limits(limits);
+                reader.decode()
+            }
+            None => {
+                self.file.rewind().map_err(|e| fail(e.into()))?;
+                let mut reader = image::ImageReader::with_format(BufReader::new(&self.file), self.format);
+                reader.limits(limits);
+                reader.decode()
+            }
+        }
+        .map_err(fail)?;
+        if let Some((x, y, value)) = first_non_finite(&image) {
+            return Err(Error::file(
+                "cannot use image",
+                path,
+                format!("pixel ({x}, {y}) is {value}: an image must hold finite light"),
+            ));
+        }
         Ok((image, self.charge))
     }
+}
+
+/// The first pixel (column, row) of a floating-point `image` with a colour channel that is NaN or
+/// infinite, and that value.
+fn first_non_finite(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
+    let (pixels, channels): (&[f32], usize) = match image {
+        image::DynamicImage::ImageRgb32F(img) => (img.as_raw(), 3),
+        image::DynamicImage::ImageRgba32F(img) => (img.as_raw(), 4),
+        _ => return None,
+    };
+    let width = image.width() as usize;
+    pixels.chunks_exact(channels).enumerate().find_map(|(i, p)| {
+        let bad = p[..3].iter().find(|c| !c.is_finite())?;
+        Some(((i % width) as u32, (i / width) as u32, *bad))
+    })
 }

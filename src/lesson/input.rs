@@ -21,7 +21,7 @@ use std::sync::Mutex;
 static FILES_READ: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
 /// What a file that is not a regular file is, for the message that refuses it.
-fn kind(file_type: std::fs::FileType) -> &'static str {
+pub(crate) fn kind(file_type: std::fs::FileType) -> &'static str {
     if file_type.is_dir() {
         return "a folder";
     }

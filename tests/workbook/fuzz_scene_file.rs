@@ -12,6 +12,7 @@
 
 use crate::common;
 
+use crate::hostile_files::{encoded, float_picture, gradient};
 use common::hostile::{black_png, fifo, run_bounded, scratch};
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
@@ -76,13 +77,31 @@ fn hostile() -> &'static Hostile {
             write("nan.obj", b"v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n"),
             write("bad-index.obj", b"v 0 0 0\nf 1 2 9\n"),
             write("picture.obj", &black_png(4, 4)),
+            // The second round (`hostile_files.rs`): faces coming back to their corners, polylines only, a
+            // byte-order mark, Latin-1 bytes, an index past the end on a later line.
+            write(
+                "repeated-corners.obj",
+                format!("v 0 0 0\nv 1 0 0\nv 0 1 0\nf{}\n", " 1 2 3".repeat(20_000)).as_bytes(),
+            ),
+            write("polylines.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nl 1 2 3 4 1\n"),
+            write("bom.obj", b"\xef\xbb\xbfv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+            write("latin-1.obj", b"# caf\xe9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 -9\n"),
         ];
         common(&mut meshes);
+        let jpeg = encoded(gradient(64, 64), image::ImageFormat::Jpeg);
+        let hdr = encoded(float_picture(0.5), image::ImageFormat::Hdr);
+        let bmp = encoded(gradient(64, 64), image::ImageFormat::Bmp);
         let mut images = vec![
             write("zero.bmp", &zero_bmp),
             write("bomb.png", &black_png(16000, 16000)),
             write("cut.png", &black_png(64, 64)[..60]),
             write("text.png", b"not a picture"),
+            // The second round: truncated, non-finite, another Radiance signature, a BMP cut short.
+            write("cut.jpg", &jpeg[..jpeg.len() / 2]),
+            write("nan.exr", &encoded(float_picture(f32::NAN), image::ImageFormat::OpenExr)),
+            write("inf.exr", &encoded(float_picture(f32::INFINITY), image::ImageFormat::OpenExr)),
+            write("rgbe.hdr", &[&b"#?RGBE\n"[..], &hdr[b"#?RADIANCE\n".len()..]].concat()),
+            write("cut.bmp", &bmp[..bmp.len() / 2]),
         ];
         common(&mut images);
         let mut folders = vec![cube_with_fifo.display().to_string(), dir.join("bomb.png").display().to_string()];

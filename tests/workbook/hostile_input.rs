@@ -13,30 +13,30 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 const FOLDER: &str = "hostile-input";
 
-fn dir() -> PathBuf {
+pub(crate) fn dir() -> PathBuf {
     scratch(FOLDER)
 }
 
 /// Writes `bytes` to `name` in the scratch folder.
-fn file(name: &str, bytes: impl AsRef<[u8]>) -> PathBuf {
+pub(crate) fn file(name: &str, bytes: impl AsRef<[u8]>) -> PathBuf {
     let path = dir().join(name);
     std::fs::create_dir_all(path.parent().unwrap()).unwrap();
     std::fs::write(&path, bytes).unwrap();
     path
 }
 
-fn s(path: &Path) -> &str {
+pub(crate) fn s(path: &Path) -> &str {
     path.to_str().unwrap()
 }
 
 /// The bundled scene file (the fresnel example's scene), its textures found wherever it is written.
-fn scene_text() -> String {
+pub(crate) fn scene_text() -> String {
     scene_with("", "")
 }
 
 /// The bundled scene with `old` replaced by `new` (which must be there), its textures found wherever it is
 /// written.
-fn scene_with(old: &str, new: &str) -> String {
+pub(crate) fn scene_with(old: &str, new: &str) -> String {
     let text = std::fs::read_to_string(common::root().join("examples/data/fresnel.qdmg")).unwrap();
     assert!(text.contains(old), "the bundled scene has no {old:?}");
     let text = text.replacen(old, new, 1);
@@ -44,10 +44,10 @@ fn scene_with(old: &str, new: &str) -> String {
 }
 
 /// The floor's texture file in the bundled scene.
-const FLOOR_TEXTURE: &str = "../../textures/floor_tiles.png";
+pub(crate) const FLOOR_TEXTURE: &str = "../../textures/floor_tiles.png";
 
 /// The line of the bundled scene file on which `text` starts.
-fn line_of(scene: &str, text: &str) -> usize {
+pub(crate) fn line_of(scene: &str, text: &str) -> usize {
     scene[..scene.find(text).unwrap()].matches('\n').count() + 1
 }
 
@@ -58,27 +58,27 @@ fn earlier_output() -> PathBuf {
 }
 
 /// Runs `example` with `args` at a small size over an earlier output, which must survive.
-fn run(example: &str, args: &[&str]) -> (Run, PathBuf) {
+pub(crate) fn run(example: &str, args: &[&str]) -> (Run, PathBuf) {
     let output = earlier_output();
     (run_to(example, &output, args), output)
 }
 
 /// Runs `example` with `args` at a small size, writing to `output`.
-fn run_to(example: &str, output: &Path, args: &[&str]) -> Run {
+pub(crate) fn run_to(example: &str, output: &Path, args: &[&str]) -> Run {
     let mut all = vec!["--width", "32", "--height", "24", "--spp", "1", "-o", s(output)];
     all.extend_from_slice(args);
     run_bounded(example, &all)
 }
 
 /// `example` with `args` is refused in one line naming each of `needles`, its earlier output untouched.
-fn refused(example: &str, args: &[&str], needles: &[&str]) {
+pub(crate) fn refused(example: &str, args: &[&str], needles: &[&str]) {
     let (run, output) = run(example, args);
     run.assert_refused(&format!("{example} {args:?}"), needles);
     assert_eq!(std::fs::read(&output).unwrap(), b"an earlier picture", "{example} {args:?} touched the output");
 }
 
 /// The scene file `text`, written as `name`, is refused in one line naming it and each of `needles`.
-fn scene_refused(name: &str, text: &str, needles: &[&str]) {
+pub(crate) fn scene_refused(name: &str, text: &str, needles: &[&str]) {
     let path = file(name, text);
     refused("scene_file", &[s(&path)], &[&[name][..], needles].concat());
 }

@@ -21,6 +21,7 @@ mod environment;
 mod fuzz_scene_file;
 mod glossy;
 mod homework;
+mod hostile_files;
 mod hostile_input;
 mod inspect;
 mod layered_fresnel;

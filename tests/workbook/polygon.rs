@@ -154,3 +154,22 @@ fn obj_errors_say_why() {
     let image = common::root().join("textures/wood.png");
     assert!(err(&image).contains("image"), "{}", err(&image));
 }
+
+#[test]
+fn a_face_that_comes_back_to_a_corner_is_cut_into_its_loops() {
+    use lecture6::lesson::geometry::polygon::simple_loops;
+    let p = |x: f32, y: f32| Vector::new(x, y, 0.0);
+    // Round one triangle three times: one loop, one triangle.
+    let triangle = [p(0.0, 0.0), p(1.0, 0.0), p(0.0, 1.0)];
+    let thrice: Vec<Vector> = triangle.iter().cycle().take(9).copied().collect();
+    assert_eq!(simple_loops(&thrice), vec![vec![0, 1, 2]]);
+    assert_eq!(triangulate(&thrice).len(), 1);
+    // A figure eight through the origin: two squares, each triangulated on its own (the second starts
+    // at the first corner, where the walk came back).
+    let eight =
+        [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(0.0, 0.0), p(-1.0, 0.0), p(-1.0, -1.0), p(0.0, -1.0)];
+    assert_eq!(simple_loops(&eight), vec![vec![0, 1, 2, 3], vec![0, 5, 6, 7]]);
+    assert_eq!(triangulate(&eight).len(), 4);
+    // A polygon of distinct corners is one loop, as it is.
+    assert_eq!(simple_loops(&star(5)), vec![(0..10).collect::<Vec<_>>()]);
+}

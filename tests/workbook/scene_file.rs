@@ -330,7 +330,11 @@ fn every_error_row_of_the_format_is_one_line_with_its_line_number() {
         ("outside", format!("{CAMERA}color (1, 1, 1)\n"), "line 4: expected a block header"),
         ("stray-brace", format!("{CAMERA}}}\n"), "line 4: expected a block header"),
         ("no-value", format!("{CAMERA}Mesh m {{\n faceted\n}}\n"), "line 5: `faceted` has no value"),
-        ("nested", format!("{CAMERA}Node a {{\n Lambert b {{\n }}\n}}\n"), "line 7: expected a block header"),
+        (
+            "nested",
+            format!("{CAMERA}Node a {{\n Lambert b {{\n }}\n}}\n"),
+            "line 5: `Lambert b {` opens a block inside `Node` opened at line 4: that block has no `}`",
+        ),
         ("unfinished", format!("{CAMERA}Lambert a {{\n color (1, 1, 1)\n"), "unfinished object definition"),
         ("bad-number", format!("{CAMERA}Sphere s {{\n R abc\n}}\n"), "line 5: `R`: invalid number"),
         ("short-colour", format!("{CAMERA}Lambert a {{\n color (1, 1)\n}}\n"), "line 5: `color`: invalid color"),

@@ -8,7 +8,7 @@ use crate::instruments::debug_view::{DebugView, render_view};
 use crate::instruments::ray_tree::{self, PixelPos};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
-use crate::lesson::frame::save_atomically;
+use crate::lesson::frame::{check_output, save_atomically};
 use crate::lesson::input;
 use clap::ValueEnum;
 use std::ffi::OsString;
@@ -25,9 +25,10 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
 /// `--view`: draws the example's debug view and writes it to `--output`, or `out/NAME-VIEW.png` (a heat view
 /// with its legend in a strip below it); returns the lines to print (its size, where it went, and its scale).
 pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
-    let (scene, settings) = args.prepare()?;
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
     let path = args.output_path_for(name, &format!("-{label}"));
+    check_output(&path, Some(image::ImageFormat::Png))?;
+    let (scene, settings) = args.prepare()?;
     // The scene's files have been read: the view may not replace one of them.
     input::check_not_an_input(&path, "the debug view")?;
     let start = Instant::now();
@@ -64,6 +65,11 @@ fn without_side_by_side(args: &[OsString]) -> Vec<OsString> {
     out
 }
 
+/// The options `--side-by-side` refuses in B's OPTIONS: each writes elsewhere, or makes something else
+/// than a render.
+const NOT_IN_B: [&str; 7] =
+    ["--output", "--compare", "--trace-pixel", "--view", "--side-by-side", "--window", "--help"];
+
 /// `--side-by-side`: renders the example `name` with its options `args` (as given on the command line,
 /// without the program name) and again with the options `alternative` (split at white space) added after
 /// them, where they win; writes A | B | difference to `--output` or `out/NAME-side-by-side.png` and returns
@@ -71,6 +77,18 @@ fn without_side_by_side(args: &[OsString]) -> Vec<OsString> {
 pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str) -> Result<String> {
     let base = without_side_by_side(args);
     let alt: Vec<OsString> = alternative.split_whitespace().map(OsString::from).collect();
+    // B is one panel of the one picture: options that write elsewhere or replace the render have no place.
+    for word in alternative.split_whitespace() {
+        let option = word.split('=').next().unwrap_or(word);
+        let short_output = option.starts_with("-o") && !option.starts_with("--");
+        if short_output || NOT_IN_B.contains(&option) {
+            return Err(Error::parameter(
+                "--side-by-side",
+                alternative,
+                format!("`{option}` cannot be one of B's options: B is rendered into the one side-by-side picture"),
+            ));
+        }
+    }
     let parse = |extra: &[OsString]| -> Result<Cli<E>> {
         let argv = std::iter::once(OsString::from(name)).chain(base.iter().cloned()).chain(extra.iter().cloned());
         let matches = Cli::<E>::command_named(name)
@@ -80,10 +98,31 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
         matches.map_err(|e| Error::parameter("--side-by-side", alternative, e.to_string().lines().next().unwrap_or("")))
     };
     let (a, b) = (parse(&[])?, parse(&alt)?);
+    let path = a.output_path_for(name, "-side-by-side");
+    check_output(&path, Some(image::ImageFormat::Png))?;
+    // B's frame size is known from its options and its scene before anything is traced: a B of another
+    // size than A is refused before either is rendered.
+    let mut b_settings = b.settings();
+    b_settings.check()?;
+    b.scene_and_settings(&mut b_settings)?;
+    let b_size = (b_settings.width, b_settings.height);
     let words = |args: &[OsString]| args.iter().map(|a| a.to_string_lossy()).collect::<Vec<_>>().join(" ");
     let base_text = if base.is_empty() { "(its defaults)".to_string() } else { words(&base) };
     let panel = |label: &str, args: &Cli<E>, options: &str| -> Result<Panel> {
-        let (frame, stats) = args.render()?;
+        let (frame, stats, _) = args.render_checked(|_, settings| {
+            if (settings.width, settings.height) != b_size {
+                return Err(Error::parameter(
+                    "--side-by-side",
+                    alternative,
+                    format!(
+                        "changes the picture's size ({}x{} to {}x{}): A and B cannot be compared",
+                        settings.width, settings.height, b_size.0, b_size.1
+                    ),
+                ));
+            }
+            // The inputs have been read: the picture may not replace one.
+            input::check_not_an_input(&path, "the side-by-side picture")
+        })?;
         let secs = stats.elapsed.as_secs_f64();
         let rays = stats.counters.total() as f64 * 1e-6;
         Ok(Panel {
@@ -93,11 +132,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     };
     let pa = panel("A", &a, &base_text)?;
     let pb = panel("B", &b, &format!("{base_text} + {alternative}"))?;
-    let (picture, diff) = a_b_difference(pa, pb).map_err(|_| {
-        Error::parameter("--side-by-side", alternative, "changes the picture's size: A and B cannot be compared")
-    })?;
-    let path = a.output_path_for(name, "-side-by-side");
-    input::check_not_an_input(&path, "the side-by-side picture")?;
+    let (picture, diff) = a_b_difference(pa, pb)?;
     save_atomically(&path, |file| picture.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",

@@ -1,7 +1,7 @@
 //! An example: its own options and how they become a scene ([`Example`]), and the whole command line of
 //! one ([`Cli`]): parsing, the render settings, the scene prepared as the options say, and the render.
 
-use super::options::CommonArgs;
+use super::options::{CommonArgs, MAX_EXHAUSTIVE_DEPTH};
 use crate::lesson::environment;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
@@ -164,6 +164,16 @@ impl<E: Example> Cli<E> {
         let common = &self.common;
         let mut scene = self.example.scene_and_settings(common, settings)?;
         if let Some(depth) = common.max_depth {
+            if common.exhaustive && depth > MAX_EXHAUSTIVE_DEPTH {
+                return Err(Error::parameter(
+                    "--max-depth",
+                    depth,
+                    format!(
+                        "at most {MAX_EXHAUSTIVE_DEPTH} with --exhaustive: nothing prunes the ray tree then, and every \
+                         glass surface splits a ray in two, so a sample's rays can double with each level"
+                    ),
+                ));
+            }
             scene.max_depth = depth;
         }
         if let Some(path) = &common.env {

@@ -6,7 +6,7 @@ use super::example::{Cli, Example};
 use super::help::help_command;
 use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
-use crate::lesson::frame::{keeps_linear_light, save_atomically};
+use crate::lesson::frame::{check_output, keeps_linear_light, save_atomically};
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
 use crate::lesson::render::thread_pool;
@@ -142,6 +142,12 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         }
         None => None,
     };
+    // Where the picture and the heat map go is checked before any work (after the reference's own check:
+    // this one makes the output's folder).
+    check_output(&output, None)?;
+    if reference_file.is_some() {
+        check_output(&heat_path, Some(image::ImageFormat::Png))?;
+    }
     let mut reference = None;
     let quiet = args.common.quiet;
     let (frame, stats, settings) = args.render_checked(|scene, settings| {

@@ -113,7 +113,18 @@ impl Loader<'_> {
             "Sphere" => {
                 let center = r.vector(self, "O")?.unwrap_or(Vector::ZERO);
                 let radius = r.length(self, "R", 1.0)?;
-                Arc::new(Sphere::new(center, radius as f32))
+                if radius < 0.0 {
+                    self.warn(
+                        r.line_of("R"),
+                        format!(
+                            "`R {}` is negative: the sphere of radius {} is used, as the course draws it (its \
+                             normals point out whatever the sign)",
+                            r.raw_line("R").map_or("", |p| p.value.as_str()),
+                            -radius
+                        ),
+                    );
+                }
+                Arc::new(Sphere::new(center, radius.abs() as f32))
             }
             "Cube" => {
                 let center = r.vector(self, "O")?.unwrap_or(Vector::ZERO);
@@ -209,7 +220,8 @@ impl Loader<'_> {
             }
             "Phong" => {
                 let color = self.color_source(&mut r, Color::gray(0.5))?;
-                let exponent = r.float(self, "specularExponent", 10.0, -1e120, 1e120)?;
+                // A negative exponent makes the highlight infinite where its cosine is 0.
+                let exponent = r.float(self, "specularExponent", 10.0, 0.0, 1e120)?;
                 let multiplier = r.float(self, "specularMultiplier", 0.4, -1e120, 1e120)?;
                 Arc::new(Phong::new(color, multiplier as f32, exponent as f32))
             }

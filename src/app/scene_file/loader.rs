@@ -27,6 +27,8 @@ pub(super) struct Loader<'a> {
     pub(super) dir: PathBuf,
     pub(super) options: &'a LoadOptions,
     pub(super) warnings: Vec<String>,
+    /// The file is not UTF-8 and was read byte by byte, each byte as one character (see `text_of`).
+    pub(super) bytes_as_chars: bool,
     /// Name -> index of the first block of that name, per namespace.
     pub(super) names: HashMap<(Namespace, String), usize>,
     pub(super) geometries: Built<Arc<dyn Geometry>>,
@@ -56,6 +58,7 @@ impl<'a> Loader<'a> {
             dir,
             options,
             warnings: Vec::new(),
+            bytes_as_chars: false,
             names: HashMap::new(),
             geometries: HashMap::new(),
             textures: HashMap::new(),
@@ -85,7 +88,7 @@ impl<'a> Loader<'a> {
                         self.warn(
                             b.line,
                             format!(
-                                "a {} called `{name}` is already defined at line {first_line}, which references get",
+                                "a {} called `{name}` is already defined at line {first_line}: references get that one, and this one is never used",
                                 ns.word()
                             ),
                         );
@@ -157,6 +160,17 @@ impl<'a> Loader<'a> {
                     let pos = r.vector(&self, "pos")?.ok_or_else(|| self.required(b, "pos"))?;
                     let color = r.color(&self, "color", Color::WHITE)?;
                     let power = r.float(&self, "power", 1.0, -1e17, 1e17)?;
+                    // The light's intensity, its colour times its power, must itself be a finite number.
+                    let intensity = color.0.to_array().map(|c| c as f64 * power);
+                    if let Some(&c) = intensity.iter().find(|&&c| !(c as f32).is_finite()) {
+                        return Err(self.error(
+                            r.line_of("color"),
+                            format!(
+                                "the light's colour times its power is {c:.2e}: not a finite 32-bit number (the \
+                                 renderer's numbers end at 3.4e38)"
+                            ),
+                        ));
+                    }
                     lights.push(PointLight::new(pos, color, power as f32));
                 }
                 "Plane" | "Sphere" | "Cube" | "Mesh" => {
@@ -239,11 +253,22 @@ impl<'a> Loader<'a> {
 
     /// A file or folder property, resolved against the scene file's folder (spec 2.1); it must exist.
     pub(super) fn file(&self, p: &Property) -> Result<PathBuf> {
-        let path = self.dir.join(&p.value);
+        let path = self.dir.join(self.file_name(&p.value));
         if !path.exists() {
             return Err(self.error(p.line, format!("required file not found: '{}'", path.display())));
         }
         Ok(path)
+    }
+
+    /// The file name a property's value `value` names: its bytes as the scene file has them.
+    fn file_name(&self, value: &str) -> PathBuf {
+        #[cfg(unix)]
+        if self.bytes_as_chars {
+            use std::os::unix::ffi::OsStringExt;
+            // Every character of a file read byte by byte is one byte.
+            return PathBuf::from(std::ffi::OsString::from_vec(value.chars().map(|c| c as u8).collect()));
+        }
+        PathBuf::from(value)
     }
 
     /// An error loading the file a property names: the file's own error, at the property's line.

@@ -153,12 +153,28 @@ pub(super) fn fill_group(class: &str) -> usize {
     }
 }
 
+/// The text of a scene file, without a UTF-8 byte-order mark; and whether it was read byte by byte. A file
+/// that is not UTF-8 (Windows-1251, the course's Cyrillic encoding, or Latin-1) has each byte read as the
+/// character of that number (U+0000 to U+00FF): every byte stays itself, so two names that differ in their
+/// bytes differ in the text, and a file name is found by its bytes ([`Loader::file`]).
+fn text_of(bytes: Vec<u8>) -> (String, bool) {
+    let bytes = match bytes.strip_prefix(b"\xef\xbb\xbf") {
+        Some(rest) => rest.to_vec(),
+        None => bytes,
+    };
+    match String::from_utf8(bytes) {
+        Ok(text) => (text, false),
+        Err(e) => (e.into_bytes().iter().map(|&b| char::from(b)).collect(), true),
+    }
+}
+
 /// Loads the scene file at `path`. Errors are one line naming the file and the line; warnings go to
 /// [`SceneFile::warnings`].
 pub fn load(path: &Path, options: &LoadOptions) -> Result<SceneFile> {
     let bytes = input::read_capped(path, "cannot read scene", "a scene file", MAX_SCENE_BYTES)?;
-    let text = String::from_utf8_lossy(&bytes);
+    let (text, bytes_as_chars) = text_of(bytes);
     let mut loader = Loader::new(path, options);
+    loader.bytes_as_chars = bytes_as_chars;
     let mut syntax_warnings = Vec::new();
     let blocks = parse::parse(&text, &mut syntax_warnings)
         .map_err(|e| Error::file("cannot load scene", path, format!("line {}: {}", e.line, e.message)))?;

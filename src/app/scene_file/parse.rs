@@ -74,15 +74,36 @@ pub struct SyntaxError {
     pub message: String,
 }
 
+/// The block header `tokens` are, if they are one: `Class {` or `Class name {` with a class the course knows.
+fn header<'t>(tokens: &[&'t str]) -> Option<(&'t str, Option<&'t str>)> {
+    let (class, name) = match *tokens {
+        [class, "{"] => (class, None),
+        [class, name, "{"] => (class, Some(name)),
+        _ => return None,
+    };
+    CLASSES.contains(&class).then_some((class, name))
+}
+
+/// The value `value` if it is one number written with a decimal comma (`0,9`), which the course reads as
+/// the number before the comma (`0`): C's `scanf` stops at the comma.
+fn decimal_comma(value: &str) -> Option<&str> {
+    let (whole, fraction) = value.split_once(',')?;
+    let whole = whole.strip_prefix(['+', '-']).unwrap_or(whole);
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    (digits(whole) && digits(fraction)).then_some(value)
+}
+
 /// Splits a scene file's text into blocks. `warnings` receives the line-numbered warnings of this layer
-/// (a file that ends inside a block comment).
+/// (a file that ends inside a block comment, a number written with a decimal comma). Lines end at `\n`,
+/// or at `\r` in a file without a `\n` (the line ends of classic Mac OS).
 pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Block>, SyntaxError> {
     let mut blocks = Vec::new();
     let mut open: Option<Block> = None;
     let mut comment_from: Option<usize> = None;
     let err = |line: usize, message: String| Err(SyntaxError { line, message });
     let mut count = 0;
-    for (index, raw) in text.split('\n').enumerate() {
+    let end_of_line = if text.contains('\n') { '\n' } else { '\r' };
+    for (index, raw) in text.split(end_of_line).enumerate() {
         let line = index + 1;
         count = line;
         if raw.trim_end_matches('\r').len() > MAX_LINE {
@@ -110,9 +131,11 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
         let tokens: Vec<&str> = content.split(is_space).filter(|t| !t.is_empty()).collect();
         match &mut open {
             None => {
-                let (class, name) = match tokens[..] {
-                    [class, "{"] => (class, None),
-                    [class, name, "{"] => (class, Some(name)),
+                let (class, name) = match (header(&tokens), &tokens[..]) {
+                    (Some(header), _) => header,
+                    (None, &[class, "{"] | &[class, _, "{"]) => {
+                        return err(line, format!("unknown object class `{class}`"));
+                    }
                     _ => {
                         return err(
                             line,
@@ -120,9 +143,6 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
                         );
                     }
                 };
-                if !CLASSES.contains(&class) {
-                    return err(line, format!("unknown object class `{class}`"));
-                }
                 if name.is_some_and(|n| n.len() > MAX_NAME) {
                     return err(line, format!("the name is longer than {MAX_NAME} characters"));
                 }
@@ -143,6 +163,15 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
                 if tokens.len() == 1 {
                     return err(line, format!("`{}` has no value (a property line needs one)", tokens[0]));
                 }
+                if header(&tokens).is_some() {
+                    return err(
+                        line,
+                        format!(
+                            "`{content}` opens a block inside `{}` opened at line {}: that block has no `}}` before it",
+                            block.class, block.line
+                        ),
+                    );
+                }
                 let name = tokens[0];
                 let rest = content[name.len()..].trim_start_matches(is_space);
                 let value = match rest.strip_prefix('"').and_then(|r| r.strip_suffix('"')) {
@@ -151,6 +180,17 @@ pub fn parse(text: &str, warnings: &mut Vec<(usize, String)>) -> Result<Vec<Bloc
                 };
                 if value.len() > MAX_VALUE {
                     return err(line, format!("the value of `{name}` is longer than {MAX_VALUE} characters"));
+                }
+                if let Some(number) = decimal_comma(value) {
+                    let point = number.replace(',', ".");
+                    warnings.push((
+                        line,
+                        format!(
+                            "`{name} {number}` has a decimal comma: it reads as {}, the number before the comma; \
+                             write `{point}`",
+                            &number[..number.find(',').unwrap_or(0)]
+                        ),
+                    ));
                 }
                 block.properties.push(Property { name: name.into(), value: value.into(), line });
             }
