@@ -22,8 +22,16 @@ fn with(name: &str, facts: impl Fn() -> facts::Facts + 'static) -> Vec<Exercise>
     exercises
 }
 
+/// The renderer's hooks keep one record of the blanks a picture meets, shared by the process: the tests that
+/// draw or answer through them run one at a time.
+fn serial() -> std::sync::MutexGuard<'static, ()> {
+    static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
 #[test]
 fn every_solution_holds_its_facts() {
+    let _serial = serial();
     let exercises = workbook();
     for (exercise, verdict) in exercises.iter().zip(grade(&exercises, &pictures_as_expected)) {
         assert_eq!(verdict, Verdict::Passed { example: exercise.example.to_string() }, "{}", exercise.name);
@@ -38,6 +46,7 @@ fn fresnel_of_water(i: Vector, n: Vector, _eta1_over_eta2: f32) -> f32 {
 
 #[test]
 fn a_wrong_fresnel_fails_with_a_message_a_student_understands() {
+    let _serial = serial();
     let exercises = with("fresnel_schlick", || facts::fresnel_schlick(fresnel_of_water));
     let verdicts = grade(&exercises, &pictures_as_expected);
     for (exercise, verdict) in exercises.iter().zip(&verdicts) {
@@ -65,6 +74,7 @@ fn blank_refract(_i: Vector, _n: Vector, _eta1_over_eta2: f32) -> Option<Vector>
 
 #[test]
 fn a_blank_exercise_is_named_and_the_others_still_grade() {
+    let _serial = serial();
     let exercises = with("refract", || facts::refract(blank_refract));
     let verdicts = grade(&exercises, &pictures_as_expected);
     for (exercise, verdict) in exercises.iter().zip(&verdicts) {
@@ -80,6 +90,7 @@ fn a_blank_exercise_is_named_and_the_others_still_grade() {
 
 #[test]
 fn a_picture_that_needs_a_blank_exercise_waits_for_it_and_one_that_differs_fails() {
+    let _serial = serial();
     // `fresnel` renders as if `faceforward` were blank; `glossy` differs; the others are as expected.
     let pictures = |example: &str| match example {
         "fresnel" => todo!("faceforward"),
@@ -105,6 +116,7 @@ static FACEFORWARD: Hook = Hook::new();
 
 #[test]
 fn a_picture_names_every_blank_it_needs_in_one_run() {
+    let _serial = serial();
     // `fresnel` meets two blanks, `cube_map` (its sky) and `faceforward`, each many times, as a render does:
     // drawn around them, the picture names both (before, only the first it met, one run at a time).
     let draws = std::sync::atomic::AtomicUsize::new(0);
@@ -137,6 +149,7 @@ fn a_picture_names_every_blank_it_needs_in_one_run() {
 
 #[test]
 fn the_hand_out_is_one_list() {
+    let _serial = serial();
     assert!(exercises::listed(exercises::EXERCISES, "refract") && !exercises::listed(exercises::EXERCISES, "refrac"));
     assert_eq!(exercises::HANDED_OUT.len(), 11, "the workbook hands out every exercise");
     assert!(workbook().iter().all(|e| e.handed_out == exercises::listed(exercises::HANDED_OUT, e.name)));
@@ -144,6 +157,7 @@ fn the_hand_out_is_one_list() {
 
 #[test]
 fn an_exercise_that_panics_fails_and_one_not_handed_out_is_skipped() {
+    let _serial = serial();
     let mut exercises = with("bilinear", || facts::bilinear(|_, _, texel| texel(i64::MAX, 0) * 0.0));
     exercises[1].handed_out = false;
     exercises[2].facts = Box::new(|| panic!("index out of bounds"));
@@ -161,6 +175,7 @@ fn fails(check: facts::Facts) -> String {
 
 #[test]
 fn every_fact_check_fails_on_a_plausible_mistake() {
+    let _serial = serial();
     use exercises::*;
     // Bilinear without the half-texel offset.
     let message = fails(facts::bilinear(|x, y, texel| bilinear::bilinear(x + 0.5, y + 0.5, texel)));
@@ -251,6 +266,7 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
 
 #[test]
 fn the_exercises_types_agree_with_the_workbooks() {
+    let _serial = serial();
     use lecture6::lesson::environment::CubeFace;
     let faces = [Face::PosX, Face::NegX, Face::PosY, Face::NegY, Face::PosZ, Face::NegZ];
     for (face, workbook) in faces.into_iter().zip(CubeFace::ALL) {

@@ -40,7 +40,9 @@ fn every_option_becomes_a_control_of_its_kind() {
     let spp_range = Kind::Integer { min: 1.0, max: MAX_SPP as f64 };
     assert_eq!(kind("spp"), Some((spp_range, String::new())), "--spp not given: the example's default");
     assert_eq!(kind("width").map(|k| k.0), Some(Kind::Integer { min: 1.0, max: u32::MAX as f64 }));
-    assert_eq!(kind("max-depth").map(|k| k.0), Some(Kind::Integer { min: 0.0, max: u32::MAX as f64 }));
+    // --max-depth stops at the recursion's safety cap, where every ray stops anyway.
+    let depth_range = Kind::Integer { min: 0.0, max: lecture6::lesson::scene::RECURSION_SAFETY_CAP as f64 };
+    assert_eq!(kind("max-depth").map(|k| k.0), Some(depth_range));
     // An option without a default may stay empty, and says what empty means.
     let spp = control("spp").unwrap();
     assert!(spp.optional && spp.placeholder == fresnel::Options::DEFAULT_SPP.to_string(), "{spp:?}");
