@@ -5,7 +5,7 @@
 //! the mesh BVH (mesh: brute force), camera-relative coordinates (stress: scenes moved 1e6 away), and every
 //! example against `--slide` (slide).
 
-use crate::common::{examples, parse, root};
+use crate::common::{examples, parse, random_unit, root};
 use lecture6::lesson::bitmap::{Bitmap, Filter, Wrap};
 use lecture6::lesson::camera::Camera;
 use lecture6::lesson::color::Color;
@@ -20,13 +20,6 @@ use lecture6::lesson::scene::Scene;
 use lecture6::lesson::shader::Lambert;
 use lecture6::lesson::slide;
 use std::sync::Arc;
-
-fn random_unit(rng: &mut Rng) -> Vector {
-    let z = 1.0 - 2.0 * rng.next_f32();
-    let phi = 2.0 * std::f32::consts::PI * rng.next_f32();
-    let s = (1.0 - z * z).max(0.0).sqrt();
-    Vector::new(s * phi.cos(), s * phi.sin(), z)
-}
 
 /// Twenty nodes (more than the node tree's threshold): spheres, cubes, transformed teapots sharing one mesh,
 /// and a plane.

@@ -2,19 +2,13 @@
 //! vertices never slip through, and bad, empty or degenerate OBJ files are handled without a panic or a NaN.
 
 use crate::common;
+use common::random_unit;
 
 use lecture6::lesson::geometry::mesh::intersect_triangle;
 use lecture6::lesson::geometry::{Geometry, Mesh};
 use lecture6::lesson::math::Vector;
 use lecture6::lesson::ray::Ray;
 use lecture6::lesson::rng::Rng;
-
-fn random_unit(rng: &mut Rng) -> Vector {
-    let z = 1.0 - 2.0 * rng.next_f32();
-    let phi = 2.0 * std::f32::consts::PI * rng.next_f32();
-    let s = (1.0 - z * z).max(0.0).sqrt();
-    Vector::new(s * phi.cos(), s * phi.sin(), z)
-}
 
 fn teapot() -> Mesh {
     Mesh::load(&common::root().join("textures/teapot_low.obj")).expect("bundled teapot")

@@ -79,3 +79,11 @@ pub fn example_binary(name: &str) -> PathBuf {
 pub fn run_example(name: &str, args: &[&str]) -> Output {
     Command::new(example_binary(name)).args(args).current_dir(root()).output().expect("run example")
 }
+
+/// A direction drawn uniformly from the whole sphere.
+pub fn random_unit(rng: &mut lecture6::lesson::rng::Rng) -> lecture6::lesson::math::Vector {
+    let z = 1.0 - 2.0 * rng.next_f32();
+    let phi = 2.0 * std::f32::consts::PI * rng.next_f32();
+    let s = (1.0 - z * z).max(0.0).sqrt();
+    lecture6::lesson::math::Vector::new(s * phi.cos(), s * phi.sin(), z)
+}
