@@ -40,28 +40,6 @@ pub enum Filter {
 }
 
 impl Wrap {
-    /// The pair of neighbouring texels around the coordinate `f` (in texels, their centres at whole numbers)
-    /// in a row or a column of `n`, when the two lie side by side there: where the first one is, and how far
-    /// past its centre `f` lies. Always so for `Repeat` (unless the first is the last texel of a tile), only
-    /// inside the image for the other modes; never for a coordinate too large for an `i32`.
-    #[inline(always)]
-    fn pair(self, f: f32, n: usize) -> Option<(usize, f32)> {
-        const I32_RANGE: f32 = 2_147_483_648.0;
-        // Also false for NaN.
-        let fits = f.abs() < I32_RANGE;
-        // `f as i32` rounds towards zero: one step down where that rounded up gives the floor (it wraps
-        // only where `f` does not fit, and is not used then).
-        let i = f as i32;
-        let i = i.wrapping_sub(((i as f32) > f) as i32);
-        let past = f - i as f32;
-        let i = if self == Wrap::Repeat && !(0..n as i64).contains(&(i as i64)) {
-            (i as i64).rem_euclid(n as i64)
-        } else {
-            i as i64
-        };
-        (fits && (0..n as i64 - 1).contains(&i)).then_some((i as usize, past))
-    }
-
     /// Maps an integer texel index into [0, n).
     #[inline(always)]
     pub fn texel(self, i: i64, n: usize) -> usize {
@@ -95,6 +73,8 @@ enum Texels {
 pub struct Bitmap {
     width: usize,
     height: usize,
+    /// The width and height as floats, for turning texture coordinates into texel coordinates.
+    size: (f32, f32),
     texels: Texels,
     /// The texels' share of the pixel budget.
     _charge: PixelCharge,
@@ -106,7 +86,7 @@ impl Bitmap {
     pub fn from_pixels(width: usize, height: usize, pixels: Vec<Color>) -> Bitmap {
         assert!(width > 0 && height > 0 && pixels.len() == width * height);
         let charge = PixelCharge::count(pixels.len() as u64);
-        Bitmap { width, height, texels: Texels::Linear(pixels), _charge: charge }
+        Bitmap { width, height, size: (width as f32, height as f32), texels: Texels::Linear(pixels), _charge: charge }
     }
 
     /// Loads an image file; the format is detected from its contents. Its size is checked against the
@@ -135,7 +115,7 @@ impl Bitmap {
                 table: srgb8_to_linear_table(),
             },
         };
-        Ok(Bitmap { width, height, texels, _charge: charge })
+        Ok(Bitmap { width, height, size: (width as f32, height as f32), texels, _charge: charge })
     }
 
     /// Width in pixels.
@@ -179,8 +159,8 @@ impl Bitmap {
         linear: impl Fn(T) -> Color,
     ) -> Color {
         // NaN coordinates (a degenerate hit) read the first texel rather than index out of range.
-        let x = if u.is_finite() { u * self.width as f32 } else { 0.0 };
-        let y = if v.is_finite() { v * self.height as f32 } else { 0.0 };
+        let x = if u.is_finite() { u * self.size.0 } else { 0.0 };
+        let y = if v.is_finite() { v * self.size.1 } else { 0.0 };
         let at = |i: usize, j: usize| linear(texels[j * self.width + i]);
         match filter {
             Filter::Nearest => {
@@ -189,22 +169,47 @@ impl Bitmap {
             Filter::Bilinear => {
                 exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
                 // Texel centres sit at half-integer coordinates.
-                let (fx, fy) = (x - 0.5, y - 0.5);
-                // The usual case: the four texels lie two by two in two neighbouring rows, read as two
-                // slices of two without wrapping each index.
-                if let (Some((i, tx)), Some((j, ty))) = (wrap.0.pair(fx, self.width), wrap.1.pair(fy, self.height)) {
-                    let first = j * self.width + i;
-                    let (top, bottom) = (&texels[first..][..2], &texels[first + self.width..][..2]);
-                    return bilinear([top[0], top[1], bottom[0], bottom[1]].map(linear), tx, ty);
-                }
-                let (x0, y0) = (floor(fx), floor(fy));
-                let (tx, ty) = (fx - x0, fy - y0);
-                let (x0, y0) = (x0 as i64, y0 as i64);
-                let (i0, i1) = (wrap.0.texel(x0, self.width), wrap.0.texel(x0 + 1, self.width));
-                let (j0, j1) = (wrap.1.texel(y0, self.height), wrap.1.texel(y0 + 1, self.height));
+                let (i0, i1, tx) = wrap.0.neighbours(x - 0.5, self.width);
+                let (j0, j1, ty) = wrap.1.neighbours(y - 0.5, self.height);
                 bilinear([at(i0, j0), at(i1, j0), at(i0, j1), at(i1, j1)], tx, ty)
             }
         }
+    }
+}
+
+impl Wrap {
+    /// The two texels of a row or column of `n` around the coordinate `f` (in texels, their centres at whole
+    /// numbers), wrapped, and how far past the first one's centre `f` lies.
+    ///
+    /// The usual case, two texels side by side inside the image, costs one comparison; `Repeat` wraps the
+    /// first with one remainder; the rest is kept out of the look-up ([`Wrap::wrapped_pair`]). Coordinates
+    /// beyond 2^30 texels (where a float cannot tell neighbouring texels apart anyway) count as 2^30.
+    #[inline(always)]
+    fn neighbours(self, f: f32, n: usize) -> (usize, usize, f32) {
+        const LIMIT: f32 = (1u32 << 30) as f32;
+        let f = f.clamp(-LIMIT, LIMIT);
+        // `f as i32` rounds towards zero: one step down where that rounded up gives the floor.
+        let i = f as i32;
+        let i = i - ((i as f32) > f) as i32;
+        let past = f - i as f32;
+        let last = n as u32 - 1;
+        if (i as u32) < last {
+            return (i as usize, i as usize + 1, past);
+        }
+        if self == Wrap::Repeat {
+            let first = i.rem_euclid(n as i32) as u32;
+            return (first as usize, if first < last { first as usize + 1 } else { 0 }, past);
+        }
+        let (first, second) = self.wrapped_pair(i, n);
+        (first, second, past)
+    }
+
+    /// The texels `i` and `i + 1` of a row or column of `n`, wrapped (the rare case of
+    /// [`Wrap::neighbours`]).
+    #[cold]
+    #[inline(never)]
+    fn wrapped_pair(self, i: i32, n: usize) -> (usize, usize) {
+        (self.texel(i as i64, n), self.texel(i as i64 + 1, n))
     }
 }
 
