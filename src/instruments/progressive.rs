@@ -18,11 +18,10 @@
 //! [`render`]: crate::lesson::render::render
 
 use crate::lesson::color::Color;
-use crate::lesson::error::{Error, Result};
+use crate::lesson::error::Result;
 use crate::lesson::frame::Frame;
-use crate::lesson::render::{RenderSettings, RenderStats, render_rect};
+use crate::lesson::render::{RenderJob, RenderSettings, RenderStats, spectral_plan};
 use crate::lesson::scene::{Counters, Scene};
-use crate::lesson::spectral::SpectralPlan;
 use rayon::prelude::*;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -121,34 +120,29 @@ pub fn preview_settings(settings: &RenderSettings) -> RenderSettings {
     }
 }
 
-/// The wavelength plan a render of `scene` with `settings` follows (as [`crate::lesson::render::render`] chooses it).
-fn plan_for(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
-    crate::lesson::render::spectral_plan(scene, settings)
-}
-
 /// Renders the whole of a (small) picture with `settings`, rows in parallel, unless `cancel` is set first:
 /// the coarse pass, and the picture the viewer shows while the camera moves. Returns the frame and the rays
 /// traced, or `None` if cancelled.
 pub fn quick_frame(scene: &Scene, settings: &RenderSettings, cancel: &AtomicBool) -> Result<Option<(Frame, Counters)>> {
-    settings.check()?;
-    scene.check()?;
-    let plan = plan_for(scene, settings);
+    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    Ok(quick_frame_of(&job, settings, cancel))
+}
+
+/// [`quick_frame`] of a job made already.
+fn quick_frame_of(job: &RenderJob, settings: &RenderSettings, cancel: &AtomicBool) -> Option<(Frame, Counters)> {
     let mut frame = Frame::new(settings.width, settings.height);
     let width = settings.width;
     let rows: Option<Vec<Counters>> = frame
         .pixels
         .par_chunks_mut(width as usize)
         .enumerate()
-        .map(|(y, row)| {
-            let y = y as u32;
-            (!cancel.load(Ordering::Relaxed)).then(|| render_rect(scene, settings, &plan, 0..width, y..y + 1, row))
-        })
+        .map(|(y, row)| (!cancel.load(Ordering::Relaxed)).then(|| job.render_row(0..width, y as u32, row, None, None)))
         .collect();
-    Ok(rows.map(|rows| {
+    rows.map(|rows| {
         let mut counters = Counters::default();
         rows.iter().for_each(|c| counters.add(c));
         (frame, counters)
-    }))
+    })
 }
 
 /// Renders `scene` progressively: the coarse pass, then the tiles of the full picture, each given to
@@ -160,14 +154,12 @@ pub fn render_progressive(
     cancel: &AtomicBool,
     on_update: &(dyn Fn(Update) + Sync),
 ) -> Result<Outcome> {
-    settings.check()?;
-    scene.check()?;
-    let plan = plan_for(scene, settings);
-    if settings.adaptive_aa && plan != SpectralPlan::White {
-        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
-    }
+    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    let scene = job.scene();
+    let coarse = coarse_settings(settings);
+    let coarse_job = RenderJob::new(scene, &coarse, job.plan().clone())?;
     let start = Instant::now();
-    let Some((coarse, coarse_rays)) = quick_frame(scene, &coarse_settings(settings), cancel)? else {
+    let Some((coarse, coarse_rays)) = quick_frame_of(&coarse_job, &coarse, cancel) else {
         return Ok(Outcome::Cancelled);
     };
     on_update(Update::Coarse(&coarse));
@@ -183,7 +175,7 @@ pub fn render_progressive(
             let Some(tile) = tiles.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
             let mut tile = Tile { pixels: vec![Color::BLACK; (tile.width * tile.height) as usize], ..tile.clone() };
             let (xs, ys) = (tile.x..tile.x + tile.width, tile.y..tile.y + tile.height);
-            let tile_rays = render_rect(scene, settings, &plan, xs, ys, &mut tile.pixels);
+            let tile_rays = job.render_rect(xs, ys, &mut tile.pixels);
             tile.rays = tile_rays.total();
             rays.add(&tile_rays);
             on_update(Update::Tile(&tile));
@@ -202,16 +194,8 @@ pub fn render_progressive(
     let mut counters = counters.into_inner().expect("no worker panicked");
     // The course's adaptive anti-aliasing looks at each pixel's neighbours: once every tile is drawn.
     if settings.adaptive_aa {
-        let camera = scene.camera.frame(settings.width, settings.height);
-        counters.add(&crate::lesson::adaptive_aa::refine(scene, &camera, settings, &mut frame));
+        counters.add(&job.refine(&mut frame));
     }
-    let stats = RenderStats {
-        elapsed: start.elapsed(),
-        threads: rayon::current_num_threads(),
-        warnings: crate::lesson::diagnostics::Problems::report(&counters, scene),
-        counters,
-        spectral: plan,
-        photons: scene.photon_map.as_ref().map(|map| map.stats),
-    };
+    let stats = job.stats(start.elapsed(), rayon::current_num_threads(), counters);
     Ok(Outcome::Finished(frame, Box::new(stats)))
 }

@@ -40,11 +40,14 @@ pub enum Step {
     /// Rendering in coordinates relative to the camera
     /// ([`crate::lesson::scene::Scene::relative_to_camera`]).
     CameraRelative,
+    /// The workbook's own shapes, shaders and textures called through an enum instead of a trait object
+    /// ([`crate::lesson::dispatch`]), a student's type as one more case.
+    StaticDispatch,
 }
 
 impl Step {
     /// Every step, in the order of the ledger.
-    pub const ALL: [Step; 13] = [
+    pub const ALL: [Step; 14] = [
         Step::AdaptiveDepth,
         Step::TwoPhaseHit,
         Step::NodeTree,
@@ -58,6 +61,7 @@ impl Step {
         Step::AimedEmission,
         Step::LayerPruning,
         Step::CameraRelative,
+        Step::StaticDispatch,
     ];
 }
 

@@ -187,19 +187,29 @@ impl<'a> TraceContext<'a> {
     /// normal that was not of unit length as the geometry returned it (`unit_normal` false), a ray that
     /// found the surface it left, a NaN or infinite colour made here.
     #[inline(always)]
-    pub(crate) fn shade_hit(&mut self, node: &'a Node, ray: &Ray, info: &IntersectionInfo, unit_normal: bool) -> Color {
+    pub(crate) fn shade_hit<const WATCHED: bool>(
+        &mut self,
+        i: usize,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        unit_normal: bool,
+    ) -> Color {
+        let scene = self.scene;
+        let node = &scene.nodes[i];
         if !unit_normal {
-            self.note(node, |p| &mut p.bad_normals);
+            self.note(i, |p| &mut p.bad_normals);
         }
         if self.shading.finds_its_own_surface(node, ray, info) {
-            self.note(node, |p| &mut p.self_hits);
+            self.note(i, |p| &mut p.self_hits);
         }
         let outer = std::mem::replace(&mut self.shading, ShadingPoint::new(node, ray, info));
-        let color = node.shader.shade(ray, info, self);
+        let color = match scene.preparation() {
+            Some(prepared) if !WATCHED => prepared.shade(i, ray, info, self),
+            _ => node.shader.shade(ray, info, self),
+        };
         let point = std::mem::replace(&mut self.shading, outer);
         if !color.is_finite() && !point.siblings.non_finite {
-            let source = self.scene.node_index(node).map_or(Source::Environment, Source::Node);
-            Problems::count(&mut self.counters.problems.non_finite, source);
+            Problems::count(&mut self.counters.problems.non_finite, Source::Node(i));
         }
         color
     }
@@ -207,8 +217,7 @@ impl<'a> TraceContext<'a> {
     /// Counts one more problem of the kind `what` picks for `node` (kept out of `raytrace`'s code: it is
     /// the rare path).
     #[inline(never)]
-    fn note(&mut self, node: &Node, what: impl FnOnce(&mut Problems) -> &mut BTreeMap<usize, u64>) {
-        let index = self.scene.node_index(node).unwrap_or(usize::MAX);
-        Problems::count(what(&mut self.counters.problems), index);
+    fn note(&mut self, i: usize, what: impl FnOnce(&mut Problems) -> &mut BTreeMap<usize, u64>) {
+        Problems::count(what(&mut self.counters.problems), i);
     }
 }

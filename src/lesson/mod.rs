@@ -20,6 +20,7 @@ pub mod branching;
 pub mod camera;
 pub mod color;
 pub mod diagnostics;
+pub mod dispatch;
 pub mod environment;
 pub mod error;
 #[cfg(feature = "exercises")]
@@ -33,6 +34,7 @@ pub mod math;
 pub mod node;
 pub mod observer;
 pub mod photon_map;
+pub mod prepared;
 pub mod ray;
 pub mod render;
 pub mod rng;

@@ -121,13 +121,20 @@ impl Node {
     /// without a NaN in the picture; `raytrace` counts it for the end-of-run report).
     #[inline]
     pub(crate) fn checked_surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
-        let unit = |info: &IntersectionInfo| (info.normal.length_squared() - 1.0).abs() <= UNIT_NORMAL_TOLERANCE;
         match &self.transform {
-            None => self.geometry.surface(ray, hit).map(|info| (info, unit(&info))),
-            Some(t) => {
-                self.geometry.surface(&t.ray_to_canonical(ray), hit).map(|info| (t.info_to_world(&info), unit(&info)))
-            }
+            None => self.geometry.surface(ray, hit).map(|info| (info, Node::is_unit_normal(&info))),
+            Some(t) => self
+                .geometry
+                .surface(&t.ray_to_canonical(ray), hit)
+                .map(|info| (t.info_to_world(&info), Node::is_unit_normal(&info))),
         }
+    }
+
+    /// Whether a geometry described its surface with a normal of unit length (within
+    /// [`UNIT_NORMAL_TOLERANCE`]); false for a NaN normal.
+    #[inline(always)]
+    pub(crate) fn is_unit_normal(info: &IntersectionInfo) -> bool {
+        (info.normal.length_squared() - 1.0).abs() <= UNIT_NORMAL_TOLERANCE
     }
 
     /// Whether the ray hits this node before `t_max` (shadow rays).
@@ -208,16 +215,16 @@ impl Closest {
         Closest { start_scale: max_abs(ray.start), t_max: f32::INFINITY, best: None }
     }
 
-    /// Tests node `i`: a hit before the best so far wins, unless it is a tie ([`TIE`]); a tie goes to the
-    /// node that comes earlier in the scene.
+    /// Tests node `i` of `nodes`: a hit before the best so far wins, unless it is a tie ([`TIE`]); a tie
+    /// goes to the node that comes earlier in the scene.
     #[inline]
-    fn consider(&mut self, nodes: &[Node], i: usize, ray: &Ray) {
+    fn consider(&mut self, i: usize, nodes: &impl NodeHits) {
         let limit = match self.best {
             None => f32::INFINITY,
             Some((_, b)) if i < b => self.t_max + tie(self.start_scale, self.t_max),
             Some(_) => self.t_max - tie(self.start_scale, self.t_max),
         };
-        if let Some(hit) = nodes[i].hit(ray, limit) {
+        if let Some(hit) = nodes.hit(i, limit) {
             self.t_max = hit.distance;
             self.best = Some((hit, i));
         }
@@ -229,9 +236,9 @@ impl Closest {
         if self.best.is_some() { self.t_max + tie(self.start_scale, self.t_max) } else { self.t_max }
     }
 
-    /// The winner and where it was hit.
-    fn finish(self, nodes: &[Node]) -> Option<(Hit, &Node)> {
-        self.best.map(|(hit, i)| (hit, &nodes[i]))
+    /// Where the winner was hit, and its index.
+    fn finish(self) -> Option<(Hit, usize)> {
+        self.best
     }
 }
 
@@ -240,16 +247,53 @@ impl Closest {
 /// each hit, the next nodes are searched up to that hit's distance less a tie.
 #[inline]
 pub fn nearest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
+    nearest_of(&(nodes, ray), ray).map(|(hit, i)| (hit, &nodes[i]))
+}
+
+/// A scene's nodes as the searches for a ray's hits see them: each tested by its index, for one ray.
+pub(crate) trait NodeHits {
+    /// How many nodes there are.
+    fn count(&self) -> usize;
+    /// [`Node::hit`] of node `i` up to `t_max`.
+    fn hit(&self, i: usize, t_max: f32) -> Option<Hit>;
+    /// [`Node::intersects`] of node `i` before `t_max`.
+    fn intersects(&self, i: usize, t_max: f32) -> bool;
+}
+
+/// The nodes themselves, tested for one ray through their trait objects.
+impl NodeHits for (&[Node], &Ray) {
+    fn count(&self) -> usize {
+        self.0.len()
+    }
+    #[inline(always)]
+    fn hit(&self, i: usize, t_max: f32) -> Option<Hit> {
+        self.0[i].hit(self.1, t_max)
+    }
+    #[inline(always)]
+    fn intersects(&self, i: usize, t_max: f32) -> bool {
+        self.0[i].intersects(self.1, t_max)
+    }
+}
+
+/// [`nearest_hit_linear`] over `nodes`, tested for `ray`: where the nearest is hit, and its index.
+#[inline(always)]
+pub(crate) fn nearest_of(nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize)> {
     let start_scale = max_abs(ray.start);
     let mut nearest = None;
     let mut limit = f32::INFINITY;
-    for node in nodes {
-        if let Some(hit) = node.hit(ray, limit) {
-            limit = hit.distance - tie(start_scale, hit.distance);
-            nearest = Some((hit, node));
+    for i in 0..nodes.count() {
+        if let Some(found) = nodes.hit(i, limit) {
+            limit = found.distance - tie(start_scale, found.distance);
+            nearest = Some((found, i));
         }
     }
     nearest
+}
+
+/// Whether any of `nodes` is hit before `t_max`, testing them in turn.
+#[inline(always)]
+pub(crate) fn any_of(nodes: &impl NodeHits, t_max: f32) -> bool {
+    (0..nodes.count()).any(|i| nodes.intersects(i, t_max))
 }
 
 impl NodeTree {
@@ -277,30 +321,42 @@ impl NodeTree {
 
     /// The nearest of `nodes` (the ones the tree was built over) hit by the ray, and where.
     pub fn nearest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
+        self.nearest_of(&(nodes, ray), ray).map(|(hit, i)| (hit, &nodes[i]))
+    }
+
+    /// [`NodeTree::nearest_hit`] over `nodes`, tested for `ray`: where the nearest is hit, and its index.
+    #[inline]
+    pub(crate) fn nearest_of(&self, nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize)> {
         beyond!(NodeTree);
         let mut closest = Closest::new(ray);
         for &i in &self.unbounded {
-            closest.consider(nodes, i as usize, ray);
+            closest.consider(i as usize, nodes);
         }
         self.bvh.traverse(ray.start, ray.dir, closest.reach(), |range, t_max| {
             for &i in &self.bounded[range] {
-                closest.consider(nodes, i as usize, ray);
+                closest.consider(i as usize, nodes);
             }
             *t_max = closest.reach();
             false
         });
-        closest.finish(nodes)
+        closest.finish()
     }
 
     /// Whether any of `nodes` is hit before `t_max` (shadow rays).
     pub fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
+        self.any_of(&(nodes, ray), ray, t_max)
+    }
+
+    /// [`NodeTree::intersects`] over `nodes`, tested for `ray`.
+    #[inline]
+    pub(crate) fn any_of(&self, nodes: &impl NodeHits, ray: &Ray, t_max: f32) -> bool {
         beyond!(NodeTree);
-        if self.unbounded.iter().any(|&i| nodes[i as usize].intersects(ray, t_max)) {
+        if self.unbounded.iter().any(|&i| nodes.intersects(i as usize, t_max)) {
             return true;
         }
         let mut hit = false;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            hit = self.bounded[range].iter().any(|&i| nodes[i as usize].intersects(ray, *t_max));
+            hit = self.bounded[range].iter().any(|&i| nodes.intersects(i as usize, *t_max));
             hit
         });
         hit

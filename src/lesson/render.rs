@@ -30,9 +30,8 @@ use crate::lesson::ray::Ray;
 use crate::lesson::rng::{Rng, key_of, mix64, shuffled_index};
 use crate::lesson::scene::{Counters, PixelSample, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::lesson::spectral::{Band, MAX_WAVELENGTHS, SpectralMode, SpectralPlan};
-use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use std::io::IsTerminal;
+use std::borrow::Cow;
 use std::ops::Range;
 use std::time::{Duration, Instant};
 
@@ -66,7 +65,8 @@ pub struct RenderSettings {
     pub threads: Option<usize>,
     /// Seed of every random choice; the same seed gives the same picture.
     pub seed: u64,
-    /// Show a progress bar on stderr (only when stderr is a terminal).
+    /// Show a progress bar on stderr (only when stderr is a terminal). The command line draws it
+    /// ([`render_with_progress`]); [`render`] itself shows none.
     pub progress: bool,
     /// For a dispersive scene, the wavelength passes (the slide's K) or, with hero-wavelength sampling, the
     /// wavelengths each path carries; ignored by other scenes and by spectral sampling.
@@ -209,6 +209,7 @@ impl Stratifier {
     }
 
     /// The position of sample `s` within the pixel, in [0, 1)^2.
+    #[inline]
     pub fn offset(&self, s: u32, rng: &mut Rng) -> (f32, f32) {
         if self.spp == 1 {
             return (0.5, 0.5);
@@ -221,11 +222,30 @@ impl Stratifier {
     }
 }
 
+/// What a render tells about how far it has got, counted in camera samples: the command line draws its
+/// progress bar with it ([`render_with_progress`]). Called from the worker threads.
+pub trait Progress: Sync {
+    /// The render will trace `samples` camera samples in all.
+    fn begin(&self, samples: u64);
+    /// `samples` more camera samples are done.
+    fn advance(&self, samples: u64);
+    /// The render is over.
+    fn end(&self);
+}
+
 /// Renders the scene. Fails, before any work, on settings or a scene that cannot be rendered. A dispersive
 /// scene is traced as `settings.spectral` says; any other in one white pass.
 pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, RenderStats)> {
-    settings.check()?;
-    render_with_plan(scene, settings, spectral_plan(scene, settings))
+    render_with_progress(scene, settings, None)
+}
+
+/// [`render`], telling `progress`, if given, how far it has got.
+pub fn render_with_progress(
+    scene: &Scene,
+    settings: &RenderSettings,
+    progress: Option<&dyn Progress>,
+) -> Result<(Frame, RenderStats)> {
+    RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render(progress)
 }
 
 /// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive.
@@ -236,66 +256,177 @@ pub fn spectral_plan(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
 /// Renders the scene with the given wavelength plan, whether or not the scene needs it (tests use this to
 /// check that a non-dispersive material gives the same picture in every plan).
 pub fn render_with_plan(scene: &Scene, settings: &RenderSettings, plan: SpectralPlan) -> Result<(Frame, RenderStats)> {
-    settings.check()?;
-    scene.check()?;
-    let scene = &scene.with_node_tree();
-    let pool = thread_pool(settings.threads)?;
-    let start = Instant::now();
-    let (w, h) = (settings.width, settings.height);
-    let camera = scene.camera.frame(w, h);
-    let bar = if settings.progress && std::io::stderr().is_terminal() {
-        // Counted in camera samples, pixel by pixel: a row that runs away still moves the bar, and its
-        // estimate of the time left, instead of leaving it at the last row.
-        let bar = ProgressBar::new(w as u64 * h as u64 * settings.spp as u64);
-        bar.set_style(
-            ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {human_pos}/{human_len} samples, {eta} left")
-                .expect("valid template")
-                .progress_chars("=> "),
-        );
-        bar
-    } else {
-        ProgressBar::hidden()
-    };
-    let bar_shown = !bar.is_hidden();
-    let mut frame = pool.install(|| Frame::new(w, h));
-    check_adaptive_aa(settings, &plan)?;
-    let mut counters = pool.install(|| {
-        frame
-            .pixels
-            .par_chunks_mut(w as usize)
-            // One row per task: rows cost very different amounts (sky against glass), and rayon's default
-            // splitting into a few large chunks leaves a thread idle at the end.
-            .with_max_len(1)
-            .enumerate()
-            .map(|(y, row)| {
-                let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
-                for (x, pixel) in row.iter_mut().enumerate() {
-                    *pixel = tracer.pixel(x as u32, y as u32);
-                    if bar_shown {
-                        bar.inc(settings.spp as u64);
-                    }
-                }
-                tracer.counters
-            })
-            .reduce(Counters::default, |mut a, b| {
-                a.add(&b);
-                a
-            })
-    });
-    bar.finish_and_clear();
-    if settings.adaptive_aa {
-        counters.add(&pool.install(|| adaptive_aa::refine(scene, &camera, settings, &mut frame)));
-    }
-    let stats = RenderStats {
-        elapsed: start.elapsed(),
-        threads: pool.current_num_threads(),
-        warnings: Problems::report(&counters, scene),
-        counters,
-        spectral: plan,
-        photons: scene.photon_map.as_ref().map(|map| map.stats),
-    };
-    Ok((frame, stats))
+    RenderJob::new(scene, settings, plan)?.render(None)
 }
+
+/// One render's fixed parts, checked once: the scene prepared for tracing ([`Scene::prepared`]), the
+/// settings, the wavelength plan and the camera set up for the frame's size. Every way of rendering pixels
+/// ([`render`], [`render_pixel`], [`render_row`], the progressive renderer's tiles) goes through
+/// [`RenderJob::render_row`], so a pixel's colour is the same whichever renders it.
+pub struct RenderJob<'a> {
+    scene: Cow<'a, Scene>,
+    settings: RenderSettings,
+    plan: SpectralPlan,
+    camera: CameraFrame,
+}
+
+impl<'a> RenderJob<'a> {
+    /// Checks the settings and the scene (and that adaptive anti-aliasing is not asked of a dispersive
+    /// plan), and prepares the scene for tracing if it is not yet.
+    pub fn new(scene: &'a Scene, settings: &RenderSettings, plan: SpectralPlan) -> Result<RenderJob<'a>> {
+        settings.check()?;
+        scene.check()?;
+        if settings.adaptive_aa && plan != SpectralPlan::White {
+            return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
+        }
+        let camera = scene.camera.frame(settings.width, settings.height);
+        Ok(RenderJob { scene: scene.prepared(), settings: *settings, plan, camera })
+    }
+
+    /// The scene as this job traces it.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The wavelength plan the job follows.
+    pub fn plan(&self) -> &SpectralPlan {
+        &self.plan
+    }
+
+    /// The whole frame, rows in parallel on a pool of `settings.threads` workers, then the course's adaptive
+    /// anti-aliasing if the settings ask for it.
+    pub fn render(&self, progress: Option<&dyn Progress>) -> Result<(Frame, RenderStats)> {
+        let pool = thread_pool(self.settings.threads)?;
+        let start = Instant::now();
+        let (w, h) = (self.settings.width, self.settings.height);
+        let mut frame = pool.install(|| Frame::new(w, h));
+        if let Some(progress) = progress {
+            progress.begin(w as u64 * h as u64 * self.settings.spp as u64);
+        }
+        let mut counters = pool.install(|| {
+            frame
+                .pixels
+                .par_chunks_mut(w as usize)
+                // One row per task: rows cost very different amounts (sky against glass), and rayon's default
+                // splitting into a few large chunks leaves a thread idle at the end.
+                .with_max_len(1)
+                .enumerate()
+                .map(|(y, row)| self.render_row(0..w, y as u32, row, None, progress))
+                .reduce(Counters::default, |mut a, b| {
+                    a.add(&b);
+                    a
+                })
+        });
+        if let Some(progress) = progress {
+            progress.end();
+        }
+        if self.settings.adaptive_aa {
+            counters.add(&pool.install(|| self.refine(&mut frame)));
+        }
+        Ok((frame, self.stats(start.elapsed(), pool.current_num_threads(), counters)))
+    }
+
+    /// The course's adaptive anti-aliasing over a frame of this job's single samples (on the current rayon
+    /// pool): see [`adaptive_aa::refine`]. Returns the rays traced.
+    pub fn refine(&self, frame: &mut Frame) -> Counters {
+        adaptive_aa::refine(&self.scene, &self.camera, &self.settings, frame)
+    }
+
+    /// What a render of this job that took `elapsed` on `threads` workers and traced `counters` reports.
+    pub fn stats(&self, elapsed: Duration, threads: usize, counters: Counters) -> RenderStats {
+        RenderStats {
+            elapsed,
+            threads,
+            warnings: Problems::report(&counters, &self.scene),
+            counters,
+            spectral: self.plan.clone(),
+            photons: self.scene.photon_map.as_ref().map(|map| map.stats),
+        }
+    }
+
+    /// Renders the pixels `xs` of row `y` into `out` on the calling thread, and returns the rays traced:
+    /// the colours [`render`] gives them, since every pixel's random streams depend only on (seed, x, y).
+    /// `observer`, if given, is told what the recursion does; `progress` is told of every few pixels done.
+    pub fn render_row<'o>(
+        &'o self,
+        xs: Range<u32>,
+        y: u32,
+        out: &mut [Color],
+        observer: Option<&'o mut dyn Observer>,
+        progress: Option<&dyn Progress>,
+    ) -> Counters {
+        let mut tracer = PixelTracer::new(self, observer);
+        let mut since_report = 0;
+        let spp = self.settings.spp as u64;
+        for (pixel, x) in out.iter_mut().zip(xs) {
+            *pixel = tracer.pixel(x, y);
+            since_report += 1;
+            // Reported every few pixels, not once per row: a row that runs away still moves the bar.
+            if let Some(progress) = progress
+                && since_report == PROGRESS_PIXELS
+            {
+                progress.advance(since_report * spp);
+                since_report = 0;
+            }
+        }
+        if let Some(progress) = progress
+            && since_report > 0
+        {
+            progress.advance(since_report * spp);
+        }
+        tracer.ctx.counters
+    }
+
+    /// Renders the pixels `xs` of the rows `ys` into `out`, row by row, on the calling thread (the
+    /// progressive renderer's tiles), and returns the rays traced.
+    pub fn render_rect(&self, xs: Range<u32>, ys: Range<u32>, out: &mut [Color]) -> Counters {
+        let mut counters = Counters::default();
+        for (y, row) in ys.zip(out.chunks_mut(xs.len())) {
+            counters.add(&self.render_row(xs.clone(), y, row, None, None));
+        }
+        counters
+    }
+
+    /// The pixels `xs` of row `y`, as [`render`] renders them, each with its own ray counters; `observer`
+    /// sees every ray traced for them. With adaptive anti-aliasing the single samples of the pixels around
+    /// them are rendered too (not counted): they decide which of the pixels the adaptive pass refines.
+    fn render_pixels<'o>(&'o self, y: u32, xs: Range<u32>, observer: Option<&'o mut dyn Observer>) -> Vec<PixelTrace> {
+        let xs = xs.start..xs.end.min(self.settings.width);
+        let mut tracer = PixelTracer::new(self, observer);
+        let mut pixels: Vec<PixelTrace> = xs
+            .clone()
+            .map(|x| {
+                let color = tracer.pixel(x, y);
+                PixelTrace { color, counters: std::mem::take(&mut tracer.ctx.counters) }
+            })
+            .collect();
+        if self.settings.adaptive_aa && !xs.is_empty() {
+            let (width, height) = (self.settings.width, self.settings.height);
+            let (x0, x1) = (xs.start.saturating_sub(1), (xs.end + 1).min(width));
+            let (y0, y1) = (y.saturating_sub(1), (y + 2).min(height));
+            let mut around = Frame::new(x1 - x0, y1 - y0);
+            self.render_rect(x0..x1, y0..y1, &mut around.pixels);
+            for (pixel, x) in pixels.iter_mut().zip(xs) {
+                if adaptive_aa::marked_at(&around, x - x0, y - y0) {
+                    let observer = tracer.ctx.observer.as_deref_mut().map(|o| o as &mut dyn Observer);
+                    pixel.color = adaptive_aa::refine_pixel(
+                        &self.scene,
+                        &self.camera,
+                        &self.settings,
+                        (x, y),
+                        pixel.color,
+                        &mut pixel.counters,
+                        observer,
+                    );
+                }
+            }
+        }
+        pixels
+    }
+}
+
+/// How many pixels a row renders between two reports to the progress bar.
+const PROGRESS_PIXELS: u64 = 64;
 
 /// One pixel rendered alone, exactly as [`render`] renders it (same samples, same random streams).
 #[derive(Clone, Debug)]
@@ -324,92 +455,14 @@ pub fn render_pixel(
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let mut pixels = render_pixels(scene, settings, y, x..x + 1, observer)?;
-    Ok(pixels.remove(0))
+    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    Ok(job.render_pixels(y, x..x + 1, observer.map(|o| o as &mut dyn Observer)).remove(0))
 }
 
 /// Renders the pixels `xs` of row `y` as [`render`] would (adaptive anti-aliasing included), each with its
 /// own ray counters. The debug views use it.
 pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
-    render_pixels(scene, settings, y, xs, None)
-}
-
-/// The pixels `xs` of row `y`, as [`render`] renders them, each with its own ray counters; `observer` sees
-/// every ray traced for them. With adaptive anti-aliasing the single samples of the pixels around them are
-/// rendered too (not counted): they decide which of the pixels the adaptive pass refines.
-fn render_pixels(
-    scene: &Scene,
-    settings: &RenderSettings,
-    y: u32,
-    xs: Range<u32>,
-    observer: Option<&mut dyn Observer>,
-) -> Result<Vec<PixelTrace>> {
-    settings.check()?;
-    let plan = spectral_plan(scene, settings);
-    check_adaptive_aa(settings, &plan)?;
-    let camera = scene.camera.frame(settings.width, settings.height);
-    let xs = xs.start..xs.end.min(settings.width);
-    let mut tracer = PixelTracer::new(scene, &camera, settings, &plan);
-    tracer.observer = observer.map(|o| o as &mut dyn Observer);
-    let mut pixels = Vec::with_capacity(xs.len());
-    for x in xs.clone() {
-        tracer.counters = Counters::default();
-        let color = tracer.pixel(x, y);
-        pixels.push(PixelTrace { color, counters: tracer.counters.clone() });
-    }
-    if settings.adaptive_aa && !xs.is_empty() {
-        let (x0, x1) = (xs.start.saturating_sub(1), (xs.end + 1).min(settings.width));
-        let (y0, y1) = (y.saturating_sub(1), (y + 2).min(settings.height));
-        let mut around = Frame::new(x1 - x0, y1 - y0);
-        render_rect(scene, settings, &plan, x0..x1, y0..y1, &mut around.pixels);
-        for (pixel, x) in pixels.iter_mut().zip(xs) {
-            if adaptive_aa::marked_at(&around, x - x0, y - y0) {
-                let observer = tracer.observer.as_deref_mut().map(|o| o as &mut dyn Observer);
-                pixel.color = adaptive_aa::refine_pixel(
-                    scene,
-                    &camera,
-                    settings,
-                    (x, y),
-                    pixel.color,
-                    &mut pixel.counters,
-                    observer,
-                );
-            }
-        }
-    }
-    Ok(pixels)
-}
-
-/// Adaptive anti-aliasing refines single white-light samples: a dispersive scene is refused.
-fn check_adaptive_aa(settings: &RenderSettings, plan: &SpectralPlan) -> Result<()> {
-    if settings.adaptive_aa && *plan != SpectralPlan::White {
-        return Err(Error::parameter("anti-aliasing", "adaptive", "it renders scenes without dispersion only"));
-    }
-    Ok(())
-}
-
-/// Renders the pixels `xs` of the rows `ys` of the frame that `settings` describes into `out`, row by row, on
-/// the calling thread, and returns the rays it traced: the same colours [`render`] gives those pixels, since
-/// every pixel's random stream depends only on (seed, x, y). The progressive renderer draws its tiles with it.
-pub fn render_rect(
-    scene: &Scene,
-    settings: &RenderSettings,
-    plan: &SpectralPlan,
-    xs: Range<u32>,
-    ys: Range<u32>,
-    out: &mut [Color],
-) -> Counters {
-    let camera = scene.camera.frame(settings.width, settings.height);
-    let mut counters = Counters::default();
-    let width = xs.len();
-    for (y, row) in ys.zip(out.chunks_mut(width)) {
-        let mut tracer = PixelTracer::new(scene, &camera, settings, plan);
-        for (pixel, x) in row.iter_mut().zip(xs.clone()) {
-            *pixel = tracer.pixel(x, y);
-        }
-        counters.add(&tracer.counters);
-    }
-    counters
+    Ok(RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render_pixels(y, xs, None))
 }
 
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.
@@ -426,62 +479,71 @@ const SAMPLE_SET_KEY: u64 = 0x5345_5453_414d_504c;
 /// by `stream_keys` (see [`Rng::for_keys`]). The adaptive anti-aliasing pass asks for it again to give a
 /// refined pixel's extra samples the same set.
 pub fn pixel_key(stream_keys: &[u64]) -> u64 {
-    mix64(key_of(stream_keys) ^ SAMPLE_SET_KEY)
+    pixel_key_of(key_of(stream_keys))
 }
 
-/// Renders the pixels of one row: the samples of each pixel, in every wavelength pass the plan asks for.
-struct PixelTracer<'a> {
-    scene: &'a Scene,
-    camera: &'a CameraFrame,
-    settings: &'a RenderSettings,
-    plan: &'a SpectralPlan,
+/// [`pixel_key`] from the stream's key word ([`key_of`] of its keys), found once for both.
+fn pixel_key_of(stream_key: u64) -> u64 {
+    mix64(stream_key ^ SAMPLE_SET_KEY)
+}
+
+/// Renders pixels one after another: the samples of each pixel, in every wavelength pass the plan asks for,
+/// all through one [`TraceContext`] whose counters add up the pixels' rays.
+struct PixelTracer<'j> {
+    job: &'j RenderJob<'j>,
+    ctx: TraceContext<'j>,
     stratifier: Stratifier,
     /// The [`PixelSample::count`] of every pixel: the spp, or what adaptive anti-aliasing may give a pixel.
     samples_per_pixel: u32,
-    counters: Counters,
-    /// The instrument watching the pixels this tracer renders (`--trace-pixel`), if any.
-    observer: Option<&'a mut dyn Observer>,
 }
 
-impl<'a> PixelTracer<'a> {
-    fn new(scene: &'a Scene, camera: &'a CameraFrame, settings: &'a RenderSettings, plan: &'a SpectralPlan) -> Self {
-        let stratifier = Stratifier::new(settings.spp);
+impl<'j> PixelTracer<'j> {
+    fn new(job: &'j RenderJob<'j>, observer: Option<&'j mut dyn Observer>) -> Self {
+        let settings = &job.settings;
         let samples_per_pixel =
             if settings.adaptive_aa { adaptive_aa::SAMPLES_PER_REFINED_PIXEL } else { settings.spp };
-        PixelTracer {
-            scene,
-            camera,
-            settings,
-            plan,
-            stratifier,
-            samples_per_pixel,
-            counters: Counters::default(),
-            observer: None,
-        }
+        let mut ctx = TraceContext::new(&job.scene, Rng::for_keys(&[]));
+        ctx.observer = observer;
+        PixelTracer { job, ctx, stratifier: Stratifier::new(settings.spp), samples_per_pixel }
+    }
+
+    /// Starts the samples of a pixel (or of one wavelength pass of it) whose random stream is keyed by
+    /// `stream_keys`: its own random stream, its sample positions, a fresh shading point for its camera rays.
+    /// Returns its [`PixelSample::pixel_key`].
+    fn start_pixel(&mut self, stream_keys: &[u64]) -> u64 {
+        let key = key_of(stream_keys);
+        self.ctx.rng = Rng::for_key(key);
+        self.ctx.restart_pixel();
+        self.stratifier.start_pixel(&mut self.ctx.rng);
+        pixel_key_of(key)
+    }
+
+    /// The camera ray of sample `s` of pixel (x, y), which is about to be traced as sample `s` of the pixel
+    /// whose key is `pixel_key`.
+    #[inline]
+    fn camera_ray(&mut self, x: u32, y: u32, s: u32, pixel_key: u64) -> Ray {
+        self.ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
+        let (dx, dy) = self.stratifier.offset(s, &mut self.ctx.rng);
+        self.job.camera.get_screen_ray(x as f32 + dx, y as f32 + dy)
     }
 
     /// The average of the pixel's samples, all traced at `wavelength`, with the random stream keyed by
     /// `stream_keys`.
     fn samples(&mut self, x: u32, y: u32, stream_keys: &[u64], wavelength: Option<f32>) -> Color {
-        let mut ctx = TraceContext::new(self.scene, Rng::for_keys(stream_keys));
-        let pixel_key = pixel_key(stream_keys);
-        ctx.observer = self.observer.take();
-        self.stratifier.start_pixel(&mut ctx.rng);
+        let pixel_key = self.start_pixel(stream_keys);
+        let settings = &self.job.settings;
         let mut sum = Color::BLACK;
-        for s in 0..self.settings.spp {
-            ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
-            let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
-            let ray = Ray { wavelength, ..self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy) };
-            sum += self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters);
+        for s in 0..settings.spp {
+            let ray = Ray { wavelength, ..self.camera_ray(x, y, s, pixel_key) };
+            let color = self.ctx.raytrace(&ray);
+            sum += settings.sample(color, &mut self.ctx.counters);
         }
-        self.counters.add(&ctx.counters);
-        self.observer = ctx.observer.take();
-        sum / self.settings.spp as f32
+        sum / settings.spp as f32
     }
 
     fn pixel(&mut self, x: u32, y: u32) -> Color {
-        let seed = self.settings.seed;
-        match self.plan {
+        let seed = self.job.settings.seed;
+        match &self.job.plan {
             SpectralPlan::White => self.samples(x, y, &[seed, x as u64, y as u64], None),
             SpectralPlan::Passes(bands) => {
                 let mut sum = [0.0f64; 3];
@@ -508,37 +570,30 @@ impl<'a> PixelTracer<'a> {
     /// same for every wavelength).
     fn wavelength_samples(&mut self, x: u32, y: u32, per_path: u32, split: bool) -> Color {
         beyond!(HeroWavelengths);
-        let (seed, spp, illuminant) = (self.settings.seed, self.settings.spp, self.scene.illuminant);
-        let stream_keys = [seed, x as u64, y as u64];
-        let mut ctx = TraceContext::new(self.scene, Rng::for_keys(&stream_keys));
+        let settings = &self.job.settings;
+        let (seed, spp, illuminant) = (settings.seed, settings.spp, self.job.scene.illuminant);
+        let pixel_key = self.start_pixel(&[seed, x as u64, y as u64]);
         let mut wavelength_rng = Rng::for_keys(&[seed, x as u64, y as u64, WAVELENGTH_KEY]);
-        let pixel_key = pixel_key(&stream_keys);
-        ctx.observer = self.observer.take();
-        self.stratifier.start_pixel(&mut ctx.rng);
         let bands_key = wavelength_rng.next_u32();
         // Paths that met nothing dispersive, as a white render adds them; the others, band by band.
         let mut white = Color::BLACK;
         let mut spectral = [0.0f64; 3];
         for s in 0..spp {
-            ctx.pixel_sample = Some(PixelSample { index: s, count: spp, pixel_key });
-            let (dx, dy) = self.stratifier.offset(s, &mut ctx.rng);
-            let camera_ray = self.camera.get_screen_ray(x as f32 + dx, y as f32 + dy);
+            let camera_ray = self.camera_ray(x, y, s, pixel_key);
             let first = shuffled_index(s, spp, bands_key);
             let u = wavelength_rng.next_f32();
             for j in 0..per_path {
                 let band = Band::nth(first + j * spp, per_path * spp, illuminant);
-                ctx.met_dispersion = false;
+                self.ctx.met_dispersion = false;
                 let ray = Ray { wavelength: Some(band.at(u)), ..camera_ray };
-                let c = self.settings.sample(ctx.raytrace(&ray), &mut ctx.counters);
-                if split && j == 0 && !ctx.met_dispersion {
+                let c = settings.sample(self.ctx.raytrace(&ray), &mut self.ctx.counters);
+                if split && j == 0 && !self.ctx.met_dispersion {
                     white += c;
                     break;
                 }
                 add_weighted(&mut spectral, &band, c);
             }
         }
-        self.counters.add(&ctx.counters);
-        self.observer = ctx.observer.take();
         let light = illuminant.white();
         white / spp as f32 * to_color(light) + to_color(spectral)
     }

@@ -29,8 +29,12 @@ pub fn key_of(keys: &[u64]) -> u64 {
 impl Rng {
     /// A generator for one stream identified by `keys` (for example seed, x, y, pass).
     pub fn for_keys(keys: &[u64]) -> Rng {
-        let h = key_of(keys);
-        Rng(Pcg32::new(h, mix64(h) | 1))
+        Rng::for_key(key_of(keys))
+    }
+    /// The generator of the stream whose keys make the word `key` ([`key_of`]): [`Rng::for_keys`] when the
+    /// word is needed for something else too (a pixel's sample-set key), so that it is found once.
+    pub fn for_key(key: u64) -> Rng {
+        Rng(Pcg32::new(key, mix64(key) | 1))
     }
     /// The generator of pixel (x, y) for a render with the given seed.
     pub fn for_pixel(seed: u64, x: u32, y: u32) -> Rng {

@@ -21,14 +21,16 @@ use crate::lesson::error::Result;
 use crate::lesson::geometry::{Hit, IntersectionInfo};
 use crate::lesson::light::PointLight;
 use crate::lesson::math::{Vector, max_abs};
-use crate::lesson::node::{Node, NodeTree, nearest_hit_linear};
+use crate::lesson::node::{Node, nearest_of};
 use crate::lesson::observer::{Observer, Stop};
 use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
+use crate::lesson::prepared::Preparation;
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
 use crate::lesson::shader::Layer;
 use crate::lesson::slide::{self, Slides};
 use crate::lesson::spectral::Illuminant;
+use std::borrow::Cow;
 use std::sync::Arc;
 
 /// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
@@ -79,9 +81,8 @@ pub struct Scene {
     /// The caustic photon map, built before rendering ([`PhotonMap::build`]); `None` renders without
     /// caustics.
     pub photon_map: Option<Arc<PhotonMap>>,
-    /// The BVH over the nodes, in the copy of the scene that the renderer and the photon tracer trace
-    /// (see [`Scene::with_node_tree`]); `None` tests the nodes one by one.
-    node_tree: Option<Arc<NodeTree>>,
+    /// What the renderer works out once from the nodes ([`Scene::prepared`]); `None` until then.
+    preparation: Option<Arc<Preparation>>,
 }
 
 impl Scene {
@@ -99,7 +100,7 @@ impl Scene {
             photons: PhotonSettings::default(),
             illuminant: Illuminant::default(),
             photon_map: None,
-            node_tree: None,
+            preparation: None,
         }
     }
 
@@ -158,11 +159,27 @@ impl Scene {
         self.nodes.iter().any(|n| n.shader.is_dispersive())
     }
 
-    /// A copy of the scene with a [`NodeTree`] over its nodes (if it has enough of them), which the renderer and the photon tracer
-    /// trace instead of the scene itself: the tree is built once the scene is complete, and nothing changes
-    /// the copy's nodes after that, so the tree always describes them.
+    /// The scene ready to be traced: itself if it was prepared already and its nodes have not changed since,
+    /// else a copy prepared for its nodes ([`crate::lesson::prepared`]: the BVH over its nodes, if it has
+    /// enough of them). The renderer and the photon tracer trace the prepared scene; preparing it once
+    /// before both saves the second preparation.
+    pub fn prepared(&self) -> Cow<'_, Scene> {
+        match &self.preparation {
+            Some(p) if p.describes(&self.nodes) => Cow::Borrowed(self),
+            _ => Cow::Owned(Scene { preparation: Some(Arc::new(Preparation::new(&self.nodes))), ..self.clone() }),
+        }
+    }
+
+    /// What [`Scene::prepared`] worked out for this scene, if it is a prepared one.
+    #[inline(always)]
+    pub(crate) fn preparation(&self) -> Option<&Preparation> {
+        self.preparation.as_deref()
+    }
+
+    /// A copy of the scene prepared for tracing ([`Scene::prepared`]).
+    #[deprecated(note = "use `Scene::prepared`, which also prepares what else the renderer needs")]
     pub fn with_node_tree(&self) -> Scene {
-        Scene { node_tree: NodeTree::build(&self.nodes).map(Arc::new), ..self.clone() }
+        self.prepared().into_owned()
     }
 
     /// The name of a node of this scene: its own ([`Node::named`]), or its geometry and its position in
@@ -179,33 +196,51 @@ impl Scene {
     /// on every node, or on the nodes the node tree leads the ray to).
     #[inline(always)]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, &Node)> {
+        self.nearest_hit_index(ray).map(|(hit, i)| (hit, &self.nodes[i]))
+    }
+
+    /// [`Scene::nearest_hit`], the node given by its index.
+    #[inline(always)]
+    fn nearest_hit_index(&self, ray: &Ray) -> Option<(Hit, usize)> {
         beyond!(TwoPhaseHit);
-        match &self.node_tree {
-            Some(tree) => tree.nearest_hit(&self.nodes, ray),
-            None => nearest_hit_linear(&self.nodes, ray),
+        match &self.preparation {
+            Some(p) => p.nearest_hit(&self.nodes, ray),
+            None => nearest_of(&(&self.nodes[..], ray), ray),
         }
     }
 
     /// The closest node hit by the ray, and its surface there: the nearest hit is found first
-    /// ([`Scene::nearest_hit`]), and only the winner's surface is described ([`Node::surface`]). Inlined
-    /// into `raytrace`, so that the surface description is written once, where the shader reads it.
+    /// ([`Scene::nearest_hit`]), and only the winner's surface is described ([`Node::surface`]).
     #[inline(always)]
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
-        self.checked_closest_hit(ray).map(|(info, node, _)| (info, node))
+        self.checked_closest_hit(ray).map(|(info, i, _)| (info, &self.nodes[i]))
     }
 
-    /// [`Scene::closest_hit`], and whether the geometry gave a unit normal ([`Node::checked_surface`]).
+    /// [`Scene::closest_hit`], the node given by its index, and whether the geometry gave a unit normal
+    /// ([`Node::checked_surface`]). Inlined into `raytrace`, so that the surface description is written
+    /// once, where the shader reads it.
     #[inline(always)]
-    pub(crate) fn checked_closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node, bool)> {
-        let (hit, node) = self.nearest_hit(ray)?;
-        let (info, unit_normal) = node.checked_surface(ray, &hit)?;
-        Some((info, node, unit_normal))
+    pub(crate) fn checked_closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, usize, bool)> {
+        let (hit, i) = self.nearest_hit_index(ray)?;
+        self.surface(i, ray, &hit)
+    }
+
+    /// The surface of node `i` where the ray hit it ([`Node::checked_surface`]), the index, and whether the
+    /// geometry gave a unit normal.
+    #[inline(always)]
+    fn surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, usize, bool)> {
+        let (info, unit_normal) = match &self.preparation {
+            Some(p) => p.surface(&self.nodes, i, ray, hit)?,
+            None => self.nodes[i].checked_surface(ray, hit)?,
+        };
+        Some((info, i, unit_normal))
     }
 
     /// Whether anything is hit by the ray before `t_max`.
+    #[inline(always)]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
-        match &self.node_tree {
-            Some(tree) => tree.intersects(&self.nodes, ray, t_max),
+        match &self.preparation {
+            Some(p) => p.intersects(&self.nodes, ray, t_max),
             None => self.nodes.iter().any(|node| node.intersects(ray, t_max)),
         }
     }
@@ -308,6 +343,12 @@ impl<'a> TraceContext<'a> {
         }
     }
 
+    /// Makes the context ready for the camera rays of another pixel (the renderer keeps one context for a
+    /// row of pixels, each with its own random stream): their shading point starts afresh.
+    pub(crate) fn restart_pixel(&mut self) {
+        self.shading = ShadingPoint::camera();
+    }
+
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
     /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
     /// environment when nothing is hit; otherwise whatever the hit node's shader says. A ray over its shading
@@ -316,36 +357,63 @@ impl<'a> TraceContext<'a> {
         if self.slides.is_some() {
             return slide::raytrace(self, ray);
         }
-        self.observe(|o| o.ray_begins(ray));
+        if self.observer.is_some() {
+            return self.raytrace_watched(ray);
+        }
+        self.trace::<false>(ray)
+    }
+
+    /// `raytrace` with an observer to tell: kept out of the unwatched one, which every render but one
+    /// pixel's runs.
+    #[inline(never)]
+    fn raytrace_watched(&mut self, ray: &Ray) -> Color {
+        self.trace::<true>(ray)
+    }
+
+    /// `raytrace`, telling the observer what it does when `WATCHED`. Unwatched, a prepared scene's nodes
+    /// are shaded through their prepared materials ([`crate::lesson::dispatch`]); watched, through their
+    /// shaders, whose layers the observer sees.
+    #[inline(always)]
+    fn trace<const WATCHED: bool>(&mut self, ray: &Ray) -> Color {
+        if WATCHED {
+            self.observe(|o| o.ray_begins(ray));
+        }
         if ray.depth > self.scene.max_depth {
-            return self.stop(Stop::DepthLimit);
+            return self.stop::<WATCHED>(Stop::DepthLimit);
         }
         if ray.depth > RECURSION_SAFETY_CAP {
             self.counters.capped_rays += 1;
-            return self.stop(Stop::SafetyCap);
+            return self.stop::<WATCHED>(Stop::SafetyCap);
         }
         beyond!(AdaptiveDepth);
         if ray.weight < self.scene.min_ray_weight {
             self.counters.pruned_rays += 1;
-            return self.stop(Stop::WeightCutoff);
+            return self.stop::<WATCHED>(Stop::WeightCutoff);
         }
         if let Some(shared) = self.shading.share(ray.weight) {
             self.counters.shared_rays += 1;
-            self.observe(|o| o.ray_ends(shared, Some(Stop::Shared)));
+            if WATCHED {
+                self.observe(|o| o.ray_ends(shared, Some(Stop::Shared)));
+            }
             return shared;
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
         let scene = self.scene;
-        let (color, stop) = match scene.checked_closest_hit(ray) {
-            Some((info, node, unit_normal)) => {
-                self.observe(|o| o.ray_hits(scene, node, &info));
+        let (color, stop) = match scene.nearest_hit_index(ray).and_then(|(hit, i)| scene.surface(i, ray, &hit)) {
+            Some((info, i, unit_normal)) => {
+                let node = &scene.nodes[i];
+                if WATCHED {
+                    self.observe(|o| o.ray_hits(scene, node, &info));
+                }
                 self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
-                (self.shade_hit(node, ray, &info, unit_normal), None)
+                (self.shade_hit::<WATCHED>(i, ray, &info, unit_normal), None)
             }
             None => (self.environment(ray), Some(Stop::Missed)),
         };
         self.shading.traced(color);
-        self.observe(|o| o.ray_ends(color, stop));
+        if WATCHED {
+            self.observe(|o| o.ray_ends(color, stop));
+        }
         color
     }
 
@@ -359,8 +427,11 @@ impl<'a> TraceContext<'a> {
     }
 
     /// A ray not traced, for the reason `stop`: black.
-    fn stop(&mut self, stop: Stop) -> Color {
-        self.observe(|o| o.ray_ends(Color::BLACK, Some(stop)));
+    #[inline(always)]
+    fn stop<const WATCHED: bool>(&mut self, stop: Stop) -> Color {
+        if WATCHED {
+            self.observe(|o| o.ray_ends(Color::BLACK, Some(stop)));
+        }
         Color::BLACK
     }
 
@@ -370,10 +441,17 @@ impl<'a> TraceContext<'a> {
     /// layer's share of the colour.
     pub fn shade_layer(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
         self.observe(|o| o.layer_begins(layer));
-        self.shading.begin_layer(ray);
+        self.begin_layer(ray);
         let color = layer.shader.shade(ray, info, self);
         self.observe(|o| o.layer_ends(color, weight));
         color * weight
+    }
+
+    /// One layer of the shading point begins, seen by `ray`: its rays get a budget of their own
+    /// ([`crate::lesson::branching`]).
+    #[inline(always)]
+    pub(crate) fn begin_layer(&mut self, ray: &Ray) {
+        self.shading.begin_layer(ray);
     }
 
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).

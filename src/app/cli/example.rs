@@ -2,11 +2,12 @@
 //! one ([`Cli`]): parsing, the render settings, the scene prepared as the options say, and the render.
 
 use super::options::{CommonArgs, MAX_EXHAUSTIVE_DEPTH};
+use super::progress::SampleBar;
 use crate::lesson::environment;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::photon_map::PhotonMap;
-use crate::lesson::render::{RenderSettings, RenderStats, render, thread_pool};
+use crate::lesson::render::{Progress, RenderSettings, RenderStats, render_with_progress, thread_pool};
 use crate::lesson::scene::Scene;
 use crate::lesson::slide;
 use crate::lesson::spectral::SpectralMode;
@@ -149,7 +150,8 @@ impl<E: Example> Cli<E> {
         settings.check()?;
         self.film().check()?;
         self.check_slide()?;
-        let mut scene = self.scene_and_settings(&mut settings)?;
+        // Prepared once, for the photon tracer and the renderer alike.
+        let mut scene = self.scene_and_settings(&mut settings)?.prepared().into_owned();
         settings.check()?;
         check(&scene, &settings)?;
         if !self.common.slide {
@@ -219,8 +221,13 @@ impl<E: Example> Cli<E> {
         check: impl FnOnce(&Scene, &RenderSettings) -> Result<()>,
     ) -> Result<(Frame, RenderStats, RenderSettings)> {
         let (scene, settings) = self.prepare_checked(check)?;
-        let (frame, stats) =
-            if self.common.slide { slide::render(&scene, &settings)? } else { render(&scene, &settings)? };
+        let bar = settings.progress.then(SampleBar::on_terminal).flatten();
+        let progress = bar.as_ref().map(|bar| bar as &dyn Progress);
+        let (frame, stats) = if self.common.slide {
+            slide::render(&scene, &settings)?
+        } else {
+            render_with_progress(&scene, &settings, progress)?
+        };
         Ok((frame, stats, settings))
     }
 

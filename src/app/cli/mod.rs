@@ -9,6 +9,7 @@ pub mod commands;
 mod example;
 mod help;
 mod options;
+mod progress;
 mod run;
 
 pub use example::{Cli, Example};

@@ -201,7 +201,7 @@ fn run_job(
         let (built, settings) = build()?;
         lock().scene_camera = Some(built.camera);
         // With the tree over its nodes that `render` builds: a camera moved later keeps it.
-        *scene = Some((Arc::new(built.with_node_tree()), settings));
+        *scene = Some((Arc::new(built.prepared().into_owned()), settings));
     }
     // Options change only with a rebuild: the settings are the ones the scene decided then.
     let Some((base, settings)) = scene.as_ref() else { return Ok(()) };

@@ -192,7 +192,7 @@ impl PhotonMap {
             return Ok(None);
         };
         let start = Instant::now();
-        let photons = trace_photons(&scene.with_node_tree(), &emitter, seed);
+        let photons = trace_photons(&scene.prepared(), &emitter, seed);
         let trace_time = start.elapsed();
         // A radius below the scene's floor cannot tell photons apart: refused when asked for, and the default
         // raised to it (only in a tiny scene far from the camera).

@@ -45,12 +45,70 @@ pub struct Layer {
 impl Layer {
     /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
     pub fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
-        let blend = match &self.blend_tex {
-            Some(tex) => self.blend * tex.get_tex_color(ray, info),
-            None => self.blend,
-        };
+        Layer::clamp_blend(LayerShading::blend(self, ray, info))
+    }
+
+    /// A blend clamped to [0, 1], the range of an opacity.
+    #[inline(always)]
+    pub(crate) fn clamp_blend(blend: Color) -> Color {
         Color(blend.0.clamp(Vec3A::ZERO, Vec3A::ONE))
     }
+}
+
+/// What the Layered loop ([`shade_layers`]) needs of a layer: its opacity at a hit, and its colour there.
+/// A [`Layer`] answers through its trait objects; the renderer's prepared layers
+/// ([`crate::lesson::dispatch`]) answer the same through the workbook's own types.
+pub(crate) trait LayerShading {
+    /// The layer's opacity at the hit: its blend colour times its blend texture, before clamping.
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
+    /// The layer's colour at the hit times `weight`, its share of the surface's colour, for `ray`, which
+    /// carries the layer's weight already.
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color;
+}
+
+impl LayerShading for Layer {
+    #[inline(always)]
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        match &self.blend_tex {
+            Some(tex) => self.blend * tex.get_tex_color(ray, info),
+            None => self.blend,
+        }
+    }
+
+    #[inline(always)]
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color {
+        ctx.shade_layer(self, ray, info, weight)
+    }
+}
+
+/// The Layered shader's loop: from the top down, `uncovered` is how much of the layers seen so far lets
+/// through, so a layer's weight is `uncovered * blend`; it stops at the first layer that covers everything
+/// below it, unless `every_layer`.
+#[inline(always)]
+pub(crate) fn shade_layers<L: LayerShading>(
+    layers: &[L],
+    every_layer: bool,
+    ray: &Ray,
+    info: &IntersectionInfo,
+    ctx: &mut TraceContext,
+) -> Color {
+    let mut res = Color::BLACK;
+    let mut uncovered = Color::WHITE;
+    let mut layer_ray = *ray;
+    for layer in layers.iter().rev() {
+        let blend = Layer::clamp_blend(layer.blend(ray, info));
+        let weight = layer_weight(uncovered, blend);
+        let strength = weight.max_channel();
+        if strength > 0.0 || every_layer {
+            layer_ray.weight = ray.weight * strength;
+            res += layer.shade(&layer_ray, info, weight, ctx);
+        }
+        uncovered *= Color::WHITE - blend;
+        if uncovered.max_channel() <= 0.0 && !every_layer {
+            break;
+        }
+    }
+    res
 }
 
 /// The weight in the final colour of a layer of opacity `blend`, when the layers above it let `uncovered`
@@ -103,6 +161,11 @@ impl Layered {
         &self.layers
     }
 
+    /// Whether every layer is shaded at every point ([`Layered::shade_every_layer`]).
+    pub fn shades_every_layer(&self) -> bool {
+        self.every_layer
+    }
+
     /// The weight of each layer at this hit, computed from the top down as `shade` does, and the lowest
     /// layer that can be seen (the first one, from the top, that covers everything below it); the layers
     /// under it have no weight.
@@ -126,25 +189,7 @@ impl Layered {
 impl Shader for Layered {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         beyond!(LayerPruning);
-        // From the top down: `uncovered` is how much of the layers seen so far lets through, so a layer's
-        // weight is `uncovered * blend`. Stop at the first layer that covers everything below it.
-        let mut res = Color::BLACK;
-        let mut uncovered = Color::WHITE;
-        let mut layer_ray = *ray;
-        for layer in self.layers.iter().rev() {
-            let blend = layer.blend_at(ray, info);
-            let weight = layer_weight(uncovered, blend);
-            let strength = weight.max_channel();
-            if strength > 0.0 || self.every_layer {
-                layer_ray.weight = ray.weight * strength;
-                res += ctx.shade_layer(layer, &layer_ray, info, weight);
-            }
-            uncovered *= Color::WHITE - blend;
-            if uncovered.max_channel() <= 0.0 && !self.every_layer {
-                break;
-            }
-        }
-        res
+        shade_layers(&self.layers, self.every_layer, ray, info, ctx)
     }
 
     fn is_dispersive(&self) -> bool {

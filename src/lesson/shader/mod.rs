@@ -13,6 +13,7 @@ mod refraction;
 pub use glass::fresnel_glass;
 pub use lambert::Lambert;
 pub use layered::{Layer, Layered, MAX_LAYERS};
+pub(crate) use layered::{LayerShading, shade_layers};
 pub use phong::Phong;
 pub use reflection::{GLOSSY_SPLIT_DEPTH, GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;

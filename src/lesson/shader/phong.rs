@@ -30,6 +30,7 @@ impl Phong {
 
     /// The surface's colour at the hit when its diffuse colour there is `diffuse_color`: the diffuse colour
     /// times the light the point receives, plus the lamps' highlights.
+    #[inline]
     pub fn shade_with(
         &self,
         diffuse_color: Color,

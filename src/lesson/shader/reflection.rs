@@ -113,15 +113,16 @@ impl Reflection {
 
     /// The perfect mirror ray (the slide's Reflection v0.2): one ray in the mirror direction, one level
     /// deeper, and what it brings back times the mirror's colour `m`.
+    #[inline]
     fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
         let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
         ctx.raytrace(&new_ray) * m
     }
-}
 
-impl Shader for Reflection {
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let multiplier = self.multiplier.get(ray, info);
+    /// The mirror's colour at the hit when its colour there is `multiplier` (what [`Shader::shade`]
+    /// computes, with the multiplier read from its colour or texture).
+    #[inline]
+    pub fn shade_with(&self, multiplier: Color, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let n = faceforward(info.normal, ray.dir);
         if self.glossiness >= 1.0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
@@ -154,6 +155,12 @@ impl Shader for Reflection {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
         sum * multiplier / kept as f32
+    }
+}
+
+impl Shader for Reflection {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.shade_with(self.multiplier.get(ray, info), ray, info, ctx)
     }
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {

@@ -50,12 +50,14 @@ impl BitmapTexture {
 }
 
 impl Texture for BitmapTexture {
+    #[inline]
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
         let (u, v) = self.lookup_uv(info.uv());
         self.bitmap.sample(u, v, self.filter, self.wrap)
     }
 
     /// The surface's u/v divided by `scaling`: one copy of the image per unit.
+    #[inline]
     fn lookup_uv(&self, (u, v): (f32, f32)) -> (f32, f32) {
         (u / self.scaling, v / self.scaling)
     }

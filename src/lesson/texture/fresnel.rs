@@ -60,6 +60,7 @@ impl Fresnel {
 }
 
 impl Texture for Fresnel {
+    #[inline]
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
         Color::gray(self.reflectance(ray, info))
     }

@@ -1,0 +1,272 @@
+//! Static dispatch of the workbook's own shapes, shaders and textures (beyond the slides).
+//!
+//! The slides call a node's geometry, shader and texture through their interfaces (virtual calls in the
+//! course's C++, trait objects here): every hit costs a few indirect calls, and none of them can be
+//! inlined into its caller, so the sphere test, the Layered loop and the texel look-up each run as a
+//! separate function with its own set-up. When a scene is prepared ([`Scene::prepared`]), each node's
+//! shape and shader are looked at once: the workbook's own types (`Sphere`, `Plane`; `Lambert`, `Phong`,
+//! a perfect `Reflection`, `Refraction`, `Layered` of these; `BitmapTexture`, `CheckerTexture`, `Fresnel`)
+//! become the cases of an enum, which `raytrace` matches on, so the compiler sees the whole shading of a
+//! hit as one piece of code. Anything else (a student's own shape, shader or texture, a glossy mirror,
+//! a mesh) is one more case, `Dyn`, called through its trait object as before: a new type works the moment
+//! it compiles. pbrt-v4 dispatches its closed set of shapes and materials the same way.
+//!
+//! Nothing is computed differently: each case calls the same function of its type that the trait object
+//! would (`Lambert::shade_with` with the colour of its texture, `Sphere::hit`, `BitmapTexture::get_tex_color`,
+//! the one Layered loop, [`shade_layers`](crate::lesson::shader::Layered)), so a picture is the same bit for bit either way.
+
+use crate::lesson::color::Color;
+use crate::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo, Plane, Sphere};
+use crate::lesson::node::Node;
+use crate::lesson::ray::Ray;
+use crate::lesson::scene::{Scene, TraceContext};
+use crate::lesson::shader::{
+    CausticCaster, ColorSource, Lambert, Layer, LayerShading, Layered, Phong, Reflection, Refraction, Shader,
+    shade_layers,
+};
+use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, Texture};
+use std::any::Any;
+use std::sync::Arc;
+
+/// A node's geometry: one of the workbook's shapes without a transform, or anything else (another shape,
+/// or any shape under a transform) through the node itself.
+#[derive(Clone, Debug)]
+pub(crate) enum Shape {
+    Sphere(Sphere),
+    Plane(Plane),
+    /// The node's own [`Node::hit`] and the like: its geometry's trait object, through its transform.
+    Dyn,
+}
+
+impl Shape {
+    /// The shape of `node`.
+    pub(crate) fn of(node: &Node) -> Shape {
+        let any = &*node.geometry as &dyn Any;
+        match (any.downcast_ref::<Sphere>(), any.downcast_ref::<Plane>()) {
+            _ if node.transform.is_some() => Shape::Dyn,
+            (Some(sphere), _) => Shape::Sphere(*sphere),
+            (_, Some(plane)) => Shape::Plane(*plane),
+            _ => Shape::Dyn,
+        }
+    }
+
+    /// [`Node::hit`] of `node`, whose shape this is.
+    #[inline(always)]
+    pub(crate) fn hit(&self, node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {
+        match self {
+            Shape::Sphere(sphere) => sphere.hit(ray, t_max),
+            Shape::Plane(plane) => plane.hit(ray, t_max),
+            Shape::Dyn => node_hit(node, ray, t_max),
+        }
+    }
+
+    /// [`Node::intersects`] of `node`, whose shape this is.
+    #[inline(always)]
+    pub(crate) fn intersects(&self, node: &Node, ray: &Ray, t_max: f32) -> bool {
+        match self {
+            Shape::Sphere(sphere) => sphere.intersects(ray, t_max),
+            Shape::Plane(plane) => plane.intersects(ray, t_max),
+            Shape::Dyn => node_intersects(node, ray, t_max),
+        }
+    }
+
+    /// The surface of `node` at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length.
+    #[inline(always)]
+    pub(crate) fn surface(&self, node: &Node, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
+        let info = match self {
+            Shape::Sphere(sphere) => sphere.surface(ray, hit),
+            Shape::Plane(plane) => plane.surface(ray, hit),
+            Shape::Dyn => return node.checked_surface(ray, hit),
+        };
+        info.map(|info| (info, Node::is_unit_normal(&info)))
+    }
+}
+
+/// [`Node::hit`], kept out of the loop over the workbook's own shapes.
+#[inline(never)]
+fn node_hit(node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {
+    node.hit(ray, t_max)
+}
+
+/// [`Node::intersects`], kept out of the loop over the workbook's own shapes.
+#[inline(never)]
+fn node_intersects(node: &Node, ray: &Ray, t_max: f32) -> bool {
+    node.intersects(ray, t_max)
+}
+
+/// A texture, or the constant colour a shader has instead of one.
+#[derive(Clone)]
+pub(crate) enum Tex {
+    Color(Color),
+    Bitmap(BitmapTexture),
+    Checker(CheckerTexture),
+    Fresnel(Fresnel),
+    Dyn(Arc<dyn Texture>),
+}
+
+impl Tex {
+    fn of_texture(texture: &Arc<dyn Texture>) -> Tex {
+        let any = &**texture as &dyn Any;
+        if let Some(bitmap) = any.downcast_ref::<BitmapTexture>() {
+            Tex::Bitmap(bitmap.clone())
+        } else if let Some(checker) = any.downcast_ref::<CheckerTexture>() {
+            Tex::Checker(*checker)
+        } else if let Some(fresnel) = any.downcast_ref::<Fresnel>() {
+            Tex::Fresnel(*fresnel)
+        } else {
+            Tex::Dyn(texture.clone())
+        }
+    }
+
+    fn of(source: &ColorSource) -> Tex {
+        match source {
+            ColorSource::Color(c) => Tex::Color(*c),
+            ColorSource::Texture(texture) => Tex::of_texture(texture),
+        }
+    }
+
+    /// The colour at the hit, as [`ColorSource::get`] gives it.
+    #[inline(always)]
+    pub(crate) fn get(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        match self {
+            Tex::Color(c) => *c,
+            Tex::Bitmap(bitmap) => bitmap.get_tex_color(ray, info),
+            Tex::Checker(checker) => checker.get_tex_color(ray, info),
+            Tex::Fresnel(fresnel) => fresnel.get_tex_color(ray, info),
+            Tex::Dyn(texture) => texture.get_tex_color(ray, info),
+        }
+    }
+}
+
+/// A node's shader: one of the workbook's, or any other through its trait object.
+#[derive(Clone)]
+pub(crate) enum Material {
+    Lambert(Lambert, Tex),
+    Phong(Phong, Tex),
+    /// A perfect mirror (a glossy one is `Dyn`: its many rays cost far more than the call).
+    Mirror(Reflection, Tex),
+    Refraction(Refraction),
+    Layered(Box<[MaterialLayer]>, bool),
+    Dyn(Arc<dyn Shader>),
+}
+
+/// One layer of a [`Material::Layered`]: its material and how opaque it is.
+#[derive(Clone)]
+pub(crate) struct MaterialLayer {
+    material: Material,
+    blend: Color,
+    blend_tex: Option<Tex>,
+}
+
+impl Material {
+    /// The material of `shader`.
+    pub(crate) fn of(shader: &Arc<dyn Shader>) -> Material {
+        let any = &**shader as &dyn Any;
+        if let Some(lambert) = any.downcast_ref::<Lambert>() {
+            Material::Lambert(lambert.clone(), Tex::of(&lambert.color))
+        } else if let Some(phong) = any.downcast_ref::<Phong>() {
+            Material::Phong(phong.clone(), Tex::of(&phong.color))
+        } else if let Some(mirror) = any.downcast_ref::<Reflection>().filter(|m| m.glossiness >= 1.0) {
+            Material::Mirror(mirror.clone(), Tex::of(&mirror.multiplier))
+        } else if let Some(refraction) = any.downcast_ref::<Refraction>() {
+            Material::Refraction(*refraction)
+        } else if let Some(layered) = any.downcast_ref::<Layered>() {
+            let layers = layered.layers().iter().map(MaterialLayer::of).collect();
+            Material::Layered(layers, layered.shades_every_layer())
+        } else {
+            Material::Dyn(shader.clone())
+        }
+    }
+
+    /// The colour the shader gives the hit, as its [`Shader::shade`] would.
+    #[inline]
+    pub(crate) fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        match self {
+            Material::Lambert(lambert, color) => lambert.shade_with(color.get(ray, info), ray, info, ctx),
+            Material::Phong(phong, color) => phong.shade_with(color.get(ray, info), ray, info, ctx),
+            Material::Mirror(mirror, multiplier) => mirror.shade_with(multiplier.get(ray, info), ray, info, ctx),
+            Material::Refraction(refraction) => refraction.shade(ray, info, ctx),
+            Material::Layered(layers, every_layer) => shade_layers(layers, *every_layer, ray, info, ctx),
+            Material::Dyn(shader) => shader.shade(ray, info, ctx),
+        }
+    }
+}
+
+impl MaterialLayer {
+    fn of(layer: &Layer) -> MaterialLayer {
+        MaterialLayer {
+            material: Material::of(&layer.shader),
+            blend: layer.blend,
+            blend_tex: layer.blend_tex.as_ref().map(Tex::of_texture),
+        }
+    }
+}
+
+impl LayerShading for MaterialLayer {
+    #[inline(always)]
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+        match &self.blend_tex {
+            Some(tex) => self.blend * tex.get(ray, info),
+            None => self.blend,
+        }
+    }
+    #[inline(always)]
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color {
+        ctx.begin_layer(ray);
+        self.material.shade(ray, info, ctx) * weight
+    }
+}
+
+/// The scene with every node's geometry and shader hidden behind a type this module does not know, so that
+/// it is traced as a student's own types are, through their trait objects. The picture is the same bit for
+/// bit; the ledger (docs/beyond-the-slides.md) measures what the enum buys against it.
+pub fn through_trait_objects(scene: &Scene) -> Scene {
+    let mut hidden = scene.clone();
+    for node in &mut hidden.nodes {
+        node.geometry = Arc::new(Hidden(node.geometry.clone()));
+        node.shader = Arc::new(Hidden(node.shader.clone()));
+    }
+    hidden
+}
+
+/// A trait object under a type of its own, which forwards every call to it.
+struct Hidden<T: ?Sized>(Arc<T>);
+
+impl Geometry for Hidden<dyn Geometry> {
+    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.0.intersect(ray, t_max)
+    }
+    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.0.hit(ray, t_max)
+    }
+    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        self.0.surface(ray, hit)
+    }
+    fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        self.0.intersects(ray, t_max)
+    }
+    fn bounds(&self) -> Option<Aabb> {
+        self.0.bounds()
+    }
+    fn name(&self) -> &'static str {
+        self.0.name()
+    }
+}
+
+impl Shader for Hidden<dyn Shader> {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.0.shade(ray, info, ctx)
+    }
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        self.0.caustic_caster()
+    }
+    fn is_dispersive(&self) -> bool {
+        self.0.is_dispersive()
+    }
+    fn texture(&self) -> Option<&dyn Texture> {
+        self.0.texture()
+    }
+    fn name(&self) -> &'static str {
+        self.0.name()
+    }
+}
