@@ -30,6 +30,7 @@ use lecture6::app::cli::{Cli, Example};
 use lecture6::instruments::compare::difference;
 use lecture6::instruments::study::{Measurement, cost_at_rmse, rmse_at_time, rmse_linear};
 use lecture6::lesson::color::Color;
+use lecture6::lesson::dispatch::through_trait_objects;
 use lecture6::lesson::frame::Frame;
 use lecture6::lesson::geometry::Mesh;
 use lecture6::lesson::math::Vector;
@@ -579,6 +580,7 @@ fn main() {
     photon_map(&plan, &all, &mut rows, &mut details);
     layer_pruning(&plan, &all, &mut rows, &mut details);
     camera_relative(&all, &mut rows, &mut details);
+    static_dispatch(&plan, &all, &mut rows, &mut details);
     write_ledger(&plan, &rows, &examples_table, &details, started.elapsed().as_secs_f64());
 }
 
@@ -740,7 +742,7 @@ fn node_bvh(plan: &Plan, rows: &mut Vec<Row>, details: &mut String) {
                     "impl Closest",
                 ],
             ),
-            Code::Items("src/lesson/scene.rs", &["fn with_node_tree", "fn intersects"]),
+            Code::Items("src/lesson/scene.rs", &["fn prepared", "fn intersects"]),
             Code::Lines("src/lesson/scene.rs", "node_tree"),
         ],
     });
@@ -1281,6 +1283,60 @@ fn camera_relative(all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
         code: vec![Code::Items("src/lesson/scene.rs", &["fn relative_to_camera"]), Code::Lines("src/app/cli/example.rs", "relative_to_camera")],
     });
     writeln!(details, "## 12. Camera-relative coordinates\n\nEach example's scene moved by (1e6, -5e5, 2.5e5) (camera and lights with it), rendered in world coordinates and relative to the camera, against the scene in place.\n\n{far_table}").unwrap();
+}
+
+/// Step 13: the enum of the workbook's own types against their trait objects, on every example.
+fn static_dispatch(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
+    eprintln!("static dispatch");
+    let mut table = String::new();
+    writeln!(
+        table,
+        "| example | enum: wall / CPU s | trait objects: wall / CPU s | trait objects / enum, CPU | same picture |"
+    )
+    .unwrap();
+    writeln!(table, "|---|---:|---:|---:|---|").unwrap();
+    let mut ratios = Vec::new();
+    let mut all_same = true;
+    for ex in all {
+        let (scene, settings) =
+            (ex.prepare)(&[&ONE_THREAD[..], &SIZE_320[..]].concat().iter().map(|s| s.to_string()).collect::<Vec<_>>());
+        let hidden = through_trait_objects(&scene);
+        let scenes = [&scene, &hidden];
+        let more = Plan { quick: plan.quick, rounds: 3 * plan.rounds };
+        let [enum_run, dyn_run]: [Timed; 2] =
+            interleaved(&more, 2, |i| run_scene(scenes[i], &settings)).try_into().ok().expect("two");
+        let same = enum_run.last.frame.pixels == dyn_run.last.frame.pixels;
+        all_same &= same;
+        let ratio = dyn_run.cpu / enum_run.cpu;
+        writeln!(
+            table,
+            "| {} | {:.3} / {:.3} | {:.3} / {:.3} | {ratio:.2}x | {} |",
+            ex.name,
+            enum_run.wall,
+            enum_run.cpu,
+            dyn_run.wall,
+            dyn_run.cpu,
+            if same { "yes" } else { "no" }
+        )
+        .unwrap();
+        ratios.push((ex.name, ratio));
+    }
+    let mean = (ratios.iter().map(|(_, r)| r.ln()).sum::<f64>() / ratios.len() as f64).exp();
+    rows.push(Row {
+        step: "13. Static dispatch of the workbook's own shapes, shaders and textures",
+        slide: "a virtual call (a trait object) for every shape, shader and texture",
+        measured: "every example, 320x240, 1 thread, against the same scene with every node behind a type the enum does not know (`dispatch::through_trait_objects`)".into(),
+        buys: format!(
+            "{}; CPU time through the trait objects over the enum: {} (geometric mean {mean:.2}x)",
+            if all_same { "the same picture bit for bit on every example" } else { "A DIFFERENT PICTURE on some example" },
+            ratios.iter().map(|(name, r)| format!("{r:.2}x on {name}")).collect::<Vec<_>>().join(", ")
+        ),
+        code: vec![
+            Code::Items("src/lesson/dispatch.rs", &["enum Shape", "impl Shape", "enum Tex", "impl Tex", "enum Material", "impl Material", "struct MaterialLayer", "impl MaterialLayer", "impl LayerShading for MaterialLayer"]),
+            Code::Items("src/lesson/prepared.rs", &["struct Preparation", "impl Preparation"]),
+        ],
+    });
+    writeln!(details, "## 13. Static dispatch\n\nEach example's scene as it is and with every node's geometry and shader hidden behind a forwarding type of its own (`dispatch::through_trait_objects`), so that the renderer calls them through their trait objects as it calls a student's; medians of three times the rounds.\n\n{table}").unwrap();
 }
 
 /// The example's picture through the pixels' camera rays, each traced by the default `raytrace`: at the

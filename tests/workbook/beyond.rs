@@ -3,17 +3,19 @@
 //! The steps that already have tests of their own against the slide's version: adaptive depth control
 //! (layered_fresnel: within one level of `--exhaustive`), layer pruning (layered_fresnel: the slide's loop),
 //! the mesh BVH (mesh: brute force), camera-relative coordinates (stress: scenes moved 1e6 away), and every
-//! example against `--slide` (slide).
+//! example against `--slide` (slide). Static dispatch is tested here against the trait objects it replaces.
 
 use crate::common::{examples, parse, random_unit, root};
 use lecture6::lesson::bitmap::{Bitmap, Filter, Wrap};
 use lecture6::lesson::camera::Camera;
 use lecture6::lesson::color::Color;
+use lecture6::lesson::dispatch::through_trait_objects;
 use lecture6::lesson::geometry::{Cube, Mesh, Plane, Sphere};
 use lecture6::lesson::math::Vector;
 use lecture6::lesson::node::Node;
 use lecture6::lesson::photon_map::PhotonMap;
 use lecture6::lesson::ray::Ray;
+use lecture6::lesson::render::render;
 use lecture6::lesson::rng::Rng;
 use lecture6::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use lecture6::lesson::scene::Scene;
@@ -52,7 +54,7 @@ fn crowded_scene() -> Scene {
 /// that hit, the same node, and the distance within 1e-4 relative everywhere but at triangle edges.
 #[test]
 fn the_node_tree_and_two_phase_hit_find_the_slides_closest_hit() {
-    let scene = crowded_scene().with_node_tree();
+    let scene = crowded_scene().prepared().into_owned();
     let mut rng = Rng::for_keys(&[8]);
     let (mut hits, mut same) = (0, 0);
     for _ in 0..20_000 {
@@ -150,4 +152,25 @@ fn aimed_photons_in_a_grid_carry_the_slides_caustic() {
     let (a, b) = (estimates(&|p| default.irradiance(p, up)), estimates(&|p| slide.irradiance(p, up)));
     assert!((a - b).abs() <= 0.10 * a, "estimates at the caustic: {a} by default, {b} on the slide's map");
     let _: &PhotonMap = &default;
+}
+
+/// Static dispatch computes what the trait objects compute: every example renders the same picture bit for
+/// bit, and traces the same rays, when each node's geometry and shader is hidden behind a type the dispatch
+/// does not know (as a student's own types are).
+#[test]
+fn static_dispatch_renders_what_the_trait_objects_render() {
+    macro_rules! compare {
+        ($($name:ident),*) => {$(
+            let (scene, settings) =
+                parse::<examples::$name::Options>(&["--width", "48", "--height", "36"]).prepare().unwrap();
+            let (enum_frame, enum_stats) = render(&scene, &settings).unwrap();
+            let (dyn_frame, dyn_stats) = render(&through_trait_objects(&scene), &settings).unwrap();
+            let bits = |f: &lecture6::lesson::frame::Frame| -> Vec<u32> {
+                f.pixels.iter().flat_map(|c| c.to_array()).map(f32::to_bits).collect()
+            };
+            assert!(bits(&enum_frame) == bits(&dyn_frame), "{}: the pictures differ", stringify!($name));
+            assert_eq!(enum_stats.counters.rays_by_depth, dyn_stats.counters.rays_by_depth, "{}: the rays traced differ", stringify!($name));
+        )*};
+    }
+    every_example!(compare);
 }
