@@ -120,6 +120,13 @@ fn base_build(root: &Path, rev: &str) -> PathBuf {
     target.join("release/examples")
 }
 
+/// Where the benchmark's pictures go: `target/bench-out/`.
+fn bench_out(root: &Path) -> PathBuf {
+    let dir = target_dir(root).join("bench-out");
+    std::fs::create_dir_all(&dir).expect("cannot create target/bench-out");
+    dir
+}
+
 fn example_names(dir: &Path) -> BTreeSet<String> {
     std::fs::read_dir(dir)
         .map(|entries| {
@@ -135,29 +142,37 @@ struct Sample {
     rays: f64,
 }
 
-fn run_example(bin: &Path, threads: usize, out: &Path) -> Sample {
+/// Runs a program to its end: its output, its CPU seconds (user + system, from getrusage of the waited-for
+/// children) and the wall seconds around it.
+fn timed(what: &str, cmd: &mut Command) -> (std::process::Output, f64, f64) {
     let before = cpu_time(libc::RUSAGE_CHILDREN);
     let start = Instant::now();
-    let output = run(
-        &bin.display().to_string(),
-        Command::new(bin).arg("--threads").arg(threads.to_string()).arg("--output").arg(out),
-    );
+    let output = run(what, cmd);
     let wall = start.elapsed().as_secs_f64();
-    let cpu = (cpu_time(libc::RUSAGE_CHILDREN) - before).as_secs_f64();
-    Sample { cpu, wall, rays: rays_of(bin, &output) }
+    (output, (cpu_time(libc::RUSAGE_CHILDREN) - before).as_secs_f64(), wall)
 }
 
-/// The rays an example traced, from its summary line.
-fn rays_of(bin: &Path, output: &std::process::Output) -> f64 {
+/// One run of an example with `threads` threads and the `extra` options.
+fn run_example(bin: &Path, threads: usize, extra: &[&str], out: &Path) -> Sample {
+    let (output, cpu, wall) = timed(
+        &bin.display().to_string(),
+        Command::new(bin).arg("--threads").arg(threads.to_string()).args(extra).arg("--output").arg(out),
+    );
+    Sample { cpu, wall, rays: summary_of(bin, &output).1 }
+}
+
+/// The render's wall seconds and the rays an example traced, from its summary line.
+fn summary_of(bin: &Path, output: &std::process::Output) -> (f64, f64) {
     let stdout = String::from_utf8_lossy(&output.stdout);
     stdout
         .lines()
         .find_map(|line| {
-            let before_rays = line.split(" M rays").next().filter(|b| b.len() < line.len())?;
-            before_rays.rsplit(' ').next()?.parse::<f64>().ok()
+            let fields: Vec<&str> = line.split(", ").collect();
+            let secs = fields.iter().find_map(|f| f.strip_suffix(" s")?.parse::<f64>().ok())?;
+            let rays = fields.iter().find_map(|f| f.strip_suffix(" M rays")?.parse::<f64>().ok())?;
+            Some((secs, rays * 1e6))
         })
-        .unwrap_or_else(|| panic!("no ray count in the summary of {}: {stdout}", bin.display()))
-        * 1e6
+        .unwrap_or_else(|| panic!("no time and ray count in the summary of {}: {stdout}", bin.display()))
 }
 
 /// Instructions of one run of an example under callgrind, at `size` on one thread, and the rays it traced.
@@ -175,7 +190,7 @@ fn count_instructions(bin: &Path, (width, height): (u32, u32), out: &Path) -> (f
         .lines()
         .find_map(|line| line.split("Collected : ").nth(1)?.trim().parse::<f64>().ok())
         .unwrap_or_else(|| panic!("no instruction count from callgrind for {}: {stderr}", bin.display()));
-    (instructions, rays_of(bin, &output))
+    (instructions, summary_of(bin, &output).1)
 }
 
 fn valgrind_available() -> bool {
@@ -208,8 +223,7 @@ fn compare_examples(args: &Args, root: &Path) {
         names.retain(|n| args.examples.contains(n));
     }
     assert!(!names.is_empty(), "no examples to compare: run `cargo build --release --examples` first");
-    let out_dir = target_dir(root).join("bench-out");
-    std::fs::create_dir_all(&out_dir).expect("cannot create target/bench-out");
+    let out_dir = bench_out(root);
     let builds = [("base", &base_dir), ("new", &new_dir)];
     // samples[example][thread count][build]
     let mut samples: Vec<Vec<[Vec<Sample>; 2]>> =
@@ -222,7 +236,7 @@ fn compare_examples(args: &Args, root: &Path) {
                     let b = (k + round) % 2;
                     let (label, dir) = builds[b];
                     let out = out_dir.join(format!("{name}-{label}-{threads}t.png"));
-                    samples[e][t][b].push(run_example(&dir.join(name), threads, &out));
+                    samples[e][t][b].push(run_example(&dir.join(name), threads, &[], &out));
                 }
             }
         }
