@@ -468,9 +468,9 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
          workbook's: reading the sky and the floor's texture, building the scene, rendering, writing the PNG. \
          Render only: the C++'s own clock around render() (it prints its CPU and wall time); the workbook's \
          render time from its summary line, a wall time around the render alone. On one thread on an idle core \
-         a render's CPU time is its wall time; on this machine the C++'s render() had {:.2} s CPU per wall \
-         second (the rest waiting for a core), so the render-only ratio compares wall with wall, both runs \
-         interleaved on the same machine. The C++'s rays were counted once with a counting copy of it (it \
+         a render's CPU time is its wall time; in this run the C++'s render() had {:.2} s CPU per wall \
+         second (1.00 with a core to itself; below, it waited for one), so the render-only ratio compares wall \
+         with wall, both runs interleaved on the same machine. The C++'s rays were counted once with a counting copy of it (it \
          prints none); the workbook's are from its summary line, shadow rays included. Load average at the \
          end: {}.",
         c_render_cpu / c.render,
