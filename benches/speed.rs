@@ -1,11 +1,12 @@
-//! Speed of this build against an earlier build of the workbook, side by side in one run, and the cost of
-//! a ray against the number of objects in the scene.
+//! Speed of this build against an earlier build of the workbook, side by side in one run, against the
+//! course's own C++ program, and the cost of a ray against the number of objects in the scene.
 //!
 //! ```sh
 //! cargo build --release --examples               # this build's example binaries
 //! cargo bench --bench speed                      # against commit 49c9843, 3 rounds, 1 and 2 threads
 //! cargo bench --bench speed -- --base REV --rounds 5 --examples fresnel,glossy
 //! cargo bench --bench speed -- --base REV --threads 1 --no-curve --instructions 320x240
+//! cargo bench --bench speed -- --course --course-cpp /tmp/qd/qd_O2 --rounds 5   # the course's figures only
 //! ```
 //!
 //! - The earlier build: the commit `--base` is checked out in a worktree at `target/bench-base` and its
@@ -25,6 +26,18 @@
 //!   with the machine's load as CPU time does. The rays are read from the summary line, rounded to 10,000
 //!   rays: at 320x240 that is within 0.3% for every example. Without valgrind the table says so and the rest
 //!   runs as usual.
+//! - The course's figures (`--course`: only these; `--no-examples` skips them). The course's C++ (its
+//!   lecture-6 program, built headless by `../shared/bench/course-cpp/build.sh REPO OUTDIR`; `--course-cpp
+//!   PATH` or `QD_COURSE_CPP`, else skipped with a line saying so) renders the scene of `fresnel`. In each
+//!   round it runs once in its own folder, and this build's `fresnel` once each by default, with
+//!   `--exhaustive` (every ray traced, as the C++ does) and with `--slide` (the slides' plain code), all on
+//!   one thread at 640x480, 5 spp; the C++ goes first in one round and last in the next. Two ratios per
+//!   way: whole-process CPU (getrusage of each; the C++'s includes starting SDL and reading its textures,
+//!   the workbook's reading its textures and writing the PNG) and render only, wall against wall (the
+//!   C++'s own clock around render(), the workbook's summary-line time; on one thread on an idle core
+//!   these equal CPU time, on a loaded one they include waiting for a core, alike for both). The C++
+//!   prints no ray count; its 15.72 M rays were counted once with a copy of it that counts them. Then
+//!   `fresnel` at 1280x960 on 1 thread and on 2, interleaved: wall time at 1 over wall time at 2.
 //! - The object-count curve renders, in this process, N small spheres on a plane (the final scene of "Ray
 //!   Tracing in One Weekend" has about 500) on one thread, with the scene's BVH over its nodes (`render`) and
 //!   with the slides' loop over every node, and reports the CPU time per ray.
@@ -69,6 +82,14 @@ struct Args {
     /// Also count instructions per ray under callgrind, at this size (`320x240`), one thread.
     #[arg(long, value_parser = parse_size)]
     instructions: Option<(u32, u32)>,
+    /// The course's own C++ program, built headless (`qd_O2`, beside the `data/` it reads) by
+    /// `../shared/bench/course-cpp/build.sh REPO OUTDIR` [default: `QD_COURSE_CPP`, else skipped].
+    #[arg(long)]
+    course_cpp: Option<PathBuf>,
+    /// Only the course's figures: `fresnel` against the course's C++ and `fresnel`'s thread scaling (no
+    /// earlier build, no curve).
+    #[arg(long)]
+    course: bool,
     /// Accepted for `cargo bench` compatibility.
     #[arg(long, hide = true)]
     bench: bool,
@@ -120,6 +141,13 @@ fn base_build(root: &Path, rev: &str) -> PathBuf {
     target.join("release/examples")
 }
 
+/// Where the benchmark's pictures go: `target/bench-out/`.
+fn bench_out(root: &Path) -> PathBuf {
+    let dir = target_dir(root).join("bench-out");
+    std::fs::create_dir_all(&dir).expect("cannot create target/bench-out");
+    dir
+}
+
 fn example_names(dir: &Path) -> BTreeSet<String> {
     std::fs::read_dir(dir)
         .map(|entries| {
@@ -128,36 +156,47 @@ fn example_names(dir: &Path) -> BTreeSet<String> {
         .unwrap_or_default()
 }
 
-/// One run of an example: CPU seconds, wall seconds, rays.
+/// One run of a program: the whole process's CPU seconds and wall seconds, the wall seconds of its render
+/// (from its own timer), rays.
 struct Sample {
     cpu: f64,
     wall: f64,
+    render: f64,
     rays: f64,
 }
 
-fn run_example(bin: &Path, threads: usize, out: &Path) -> Sample {
+/// Runs a program to its end: its output, its CPU seconds (user + system, from getrusage of the waited-for
+/// children) and the wall seconds around it.
+fn timed(what: &str, cmd: &mut Command) -> (std::process::Output, f64, f64) {
     let before = cpu_time(libc::RUSAGE_CHILDREN);
     let start = Instant::now();
-    let output = run(
-        &bin.display().to_string(),
-        Command::new(bin).arg("--threads").arg(threads.to_string()).arg("--output").arg(out),
-    );
+    let output = run(what, cmd);
     let wall = start.elapsed().as_secs_f64();
-    let cpu = (cpu_time(libc::RUSAGE_CHILDREN) - before).as_secs_f64();
-    Sample { cpu, wall, rays: rays_of(bin, &output) }
+    (output, (cpu_time(libc::RUSAGE_CHILDREN) - before).as_secs_f64(), wall)
 }
 
-/// The rays an example traced, from its summary line.
-fn rays_of(bin: &Path, output: &std::process::Output) -> f64 {
+/// One run of an example with `threads` threads and the `extra` options.
+fn run_example(bin: &Path, threads: usize, extra: &[&str], out: &Path) -> Sample {
+    let (output, cpu, wall) = timed(
+        &bin.display().to_string(),
+        Command::new(bin).arg("--threads").arg(threads.to_string()).args(extra).arg("--output").arg(out),
+    );
+    let (render, rays) = summary_of(bin, &output);
+    Sample { cpu, wall, render, rays }
+}
+
+/// The render's wall seconds and the rays an example traced, from its summary line.
+fn summary_of(bin: &Path, output: &std::process::Output) -> (f64, f64) {
     let stdout = String::from_utf8_lossy(&output.stdout);
     stdout
         .lines()
         .find_map(|line| {
-            let before_rays = line.split(" M rays").next().filter(|b| b.len() < line.len())?;
-            before_rays.rsplit(' ').next()?.parse::<f64>().ok()
+            let fields: Vec<&str> = line.split(", ").collect();
+            let secs = fields.iter().find_map(|f| f.strip_suffix(" s")?.parse::<f64>().ok())?;
+            let rays = fields.iter().find_map(|f| f.strip_suffix(" M rays")?.parse::<f64>().ok())?;
+            Some((secs, rays * 1e6))
         })
-        .unwrap_or_else(|| panic!("no ray count in the summary of {}: {stdout}", bin.display()))
-        * 1e6
+        .unwrap_or_else(|| panic!("no time and ray count in the summary of {}: {stdout}", bin.display()))
 }
 
 /// Instructions of one run of an example under callgrind, at `size` on one thread, and the rays it traced.
@@ -175,7 +214,7 @@ fn count_instructions(bin: &Path, (width, height): (u32, u32), out: &Path) -> (f
         .lines()
         .find_map(|line| line.split("Collected : ").nth(1)?.trim().parse::<f64>().ok())
         .unwrap_or_else(|| panic!("no instruction count from callgrind for {}: {stderr}", bin.display()));
-    (instructions, rays_of(bin, &output))
+    (instructions, summary_of(bin, &output).1)
 }
 
 fn valgrind_available() -> bool {
@@ -187,6 +226,7 @@ fn valgrind_available() -> bool {
 struct Figures {
     cpu: f64,
     wall: f64,
+    render: f64,
     rays: f64,
 }
 
@@ -194,6 +234,7 @@ fn figures(samples: &[Sample]) -> Figures {
     Figures {
         cpu: median(samples.iter().map(|s| s.cpu).collect()),
         wall: median(samples.iter().map(|s| s.wall).collect()),
+        render: median(samples.iter().map(|s| s.render).collect()),
         rays: median(samples.iter().map(|s| s.rays).collect()),
     }
 }
@@ -208,8 +249,7 @@ fn compare_examples(args: &Args, root: &Path) {
         names.retain(|n| args.examples.contains(n));
     }
     assert!(!names.is_empty(), "no examples to compare: run `cargo build --release --examples` first");
-    let out_dir = target_dir(root).join("bench-out");
-    std::fs::create_dir_all(&out_dir).expect("cannot create target/bench-out");
+    let out_dir = bench_out(root);
     let builds = [("base", &base_dir), ("new", &new_dir)];
     // samples[example][thread count][build]
     let mut samples: Vec<Vec<[Vec<Sample>; 2]>> =
@@ -222,7 +262,7 @@ fn compare_examples(args: &Args, root: &Path) {
                     let b = (k + round) % 2;
                     let (label, dir) = builds[b];
                     let out = out_dir.join(format!("{name}-{label}-{threads}t.png"));
-                    samples[e][t][b].push(run_example(&dir.join(name), threads, &out));
+                    samples[e][t][b].push(run_example(&dir.join(name), threads, &[], &out));
                 }
             }
         }
@@ -309,6 +349,169 @@ fn instruction_table(
     }
 }
 
+/// Rays the course's C++ traces at 640x480, 5 spp: it prints no count; this one was counted once, with a
+/// copy of it that counts its rays.
+const COURSE_CPP_RAYS: f64 = 15.72e6;
+
+/// `fresnel` the three ways the course's C++ is compared with: the default, every ray traced as the C++
+/// does, and the slides' plain code.
+const FRESNEL_WAYS: [(&str, &[&str]); 3] =
+    [("fresnel", &[]), ("fresnel --exhaustive", &["--exhaustive"]), ("fresnel --slide", &["--slide"])];
+
+/// The machine's load average over 1, 5 and 15 minutes, as `/proc/loadavg` gives it.
+fn load_average() -> String {
+    std::fs::read_to_string("/proc/loadavg")
+        .map_or("unknown".into(), |l| l.split(' ').take(3).collect::<Vec<_>>().join(" "))
+}
+
+/// The course's C++: `--course-cpp`, else `QD_COURSE_CPP`.
+fn course_cpp(args: &Args) -> Option<PathBuf> {
+    args.course_cpp.clone().or_else(|| std::env::var_os("QD_COURSE_CPP").map(PathBuf::from))
+}
+
+/// One run of the course's C++ in its own folder (where its `data/` is), headless: the whole process, with
+/// the wall seconds of its render() as `render`, and the CPU seconds of its render() it prints
+/// (`render() cpu C s wall W s`).
+fn run_course_cpp(bin: &Path) -> (Sample, f64) {
+    let (output, cpu, wall) = timed(
+        &bin.display().to_string(),
+        Command::new(bin)
+            .current_dir(bin.parent().expect("a file has a folder"))
+            .env("SDL_VIDEODRIVER", "dummy")
+            .env("QD_NOROWDISPLAY", "1"),
+    );
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let (render_cpu, render) = stdout
+        .lines()
+        .find_map(|line| {
+            let (c, w) = line.split("render() cpu ").nth(1)?.split_once(" s wall ")?;
+            Some((c.parse::<f64>().ok()?, w.trim().strip_suffix(" s")?.parse::<f64>().ok()?))
+        })
+        .unwrap_or_else(|| panic!("no `render() cpu C s wall W s` from {}: {stdout}", bin.display()));
+    (Sample { cpu, wall, render, rays: COURSE_CPP_RAYS }, render_cpu)
+}
+
+/// The figures the course's scene is tracked by: `fresnel` against the course's C++, if it is there, and
+/// `fresnel`'s thread scaling.
+fn course_figures(args: &Args, root: &Path) {
+    let fresnel = target_dir(root).join("release/examples/fresnel");
+    assert!(fresnel.exists(), "no {}: run `cargo build --release --examples` first", fresnel.display());
+    let out_dir = bench_out(root);
+    match course_cpp(args) {
+        Some(cpp) => against_course_cpp(args, &cpp, &fresnel, &out_dir),
+        None => println!(
+            "\nThe course's C++: skipped. Build it with `../shared/bench/course-cpp/build.sh REPO OUTDIR` (REPO: a clone of anrieff/quaddamage) and pass `--course-cpp OUTDIR/qd_O2` or set QD_COURSE_CPP."
+        ),
+    }
+    fresnel_threads(args, &fresnel, &out_dir);
+}
+
+/// The course's C++ and `fresnel` three ways, on one thread at 640x480, 5 spp, interleaved: in each round
+/// each of the four runs once, the C++ first in one round and last in the next.
+fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
+    let cpp = cpp.canonicalize().unwrap_or_else(|e| panic!("--course-cpp {}: {e}", cpp.display()));
+    let (mut cpp_samples, mut cpp_render_cpu) = (Vec::new(), Vec::new());
+    let mut samples: [Vec<Sample>; 3] = [Vec::new(), Vec::new(), Vec::new()];
+    for round in 0..args.rounds {
+        eprintln!("the course's C++ and fresnel: round {} of {}", round + 1, args.rounds);
+        let mut order = [0, 1, 2, 3];
+        if round % 2 == 1 {
+            order.reverse();
+        }
+        for i in order {
+            if i == 0 {
+                let (sample, render_cpu) = run_course_cpp(&cpp);
+                cpp_samples.push(sample);
+                cpp_render_cpu.push(render_cpu);
+            } else {
+                let out = out_dir.join(format!("fresnel-course-{i}.png"));
+                samples[i - 1].push(run_example(fresnel, 1, FRESNEL_WAYS[i - 1].1, &out));
+            }
+        }
+    }
+    let c = figures(&cpp_samples);
+    let c_render_cpu = median(cpp_render_cpu);
+    let ways = samples.map(|s| figures(&s));
+    println!(
+        "\n## The course's C++ ({}) against `fresnel`: 640x480, 5 spp, one thread, median of {} interleaved rounds\n",
+        cpp.display(),
+        args.rounds
+    );
+    println!("| program | process CPU s | process wall s | render CPU s | render wall s | M rays | M rays/render s |");
+    println!("|---|---:|---:|---:|---:|---:|---:|");
+    println!(
+        "| the course's C++ | {:.3} | {:.3} | {c_render_cpu:.3} | {:.3} | {:.2} (counted once) | {:.2} |",
+        c.cpu,
+        c.wall,
+        c.render,
+        c.rays * 1e-6,
+        c.rays * 1e-6 / c.render
+    );
+    for ((name, _), w) in FRESNEL_WAYS.iter().zip(&ways) {
+        println!(
+            "| {name} | {:.3} | {:.3} | - | {:.3} | {:.2} | {:.2} |",
+            w.cpu,
+            w.wall,
+            w.render,
+            w.rays * 1e-6,
+            w.rays * 1e-6 / w.render
+        );
+    }
+    println!("\n| C++ / this (above 1: the workbook takes less) | whole process, CPU | render only, wall |");
+    println!("|---|---:|---:|");
+    for ((name, _), w) in FRESNEL_WAYS.iter().zip(&ways) {
+        println!("| {name} | {:.2}x | {:.2}x |", c.cpu / w.cpu, c.render / w.render);
+    }
+    println!(
+        "\nWhole process: CPU (user + system, getrusage) of the whole run. The C++'s: starting SDL (dummy driver), \
+         building the scene and reading its textures, render(), showing the frame; it writes no file. The \
+         workbook's: reading the sky and the floor's texture, building the scene, rendering, writing the PNG. \
+         Render only: the C++'s own clock around render() (it prints its CPU and wall time); the workbook's \
+         render time from its summary line, a wall time around the render alone. On one thread on an idle core \
+         a render's CPU time is its wall time; in this run the C++'s render() had {:.2} s CPU per wall \
+         second (1.00 with a core to itself; below, it waited for one), so the render-only ratio compares wall \
+         with wall, both runs interleaved on the same machine. The C++'s rays were counted once with a counting copy of it (it \
+         prints none); the workbook's are from its summary line, shadow rays included. Load average at the \
+         end: {}.",
+        c_render_cpu / c.render,
+        load_average()
+    );
+}
+
+/// `fresnel` at 1280x960 on one thread against two, interleaved (the order alternating between rounds):
+/// wall time at one thread over wall time at two.
+fn fresnel_threads(args: &Args, fresnel: &Path, out_dir: &Path) {
+    const SIZE: [&str; 4] = ["--width", "1280", "--height", "960"];
+    let mut samples: [Vec<Sample>; 2] = [Vec::new(), Vec::new()];
+    for round in 0..args.rounds {
+        eprintln!("fresnel at 1280x960, 1 and 2 threads: round {} of {}", round + 1, args.rounds);
+        for k in 0..2 {
+            let t = (k + round) % 2;
+            let out = out_dir.join(format!("fresnel-1280-{}t.png", t + 1));
+            samples[t].push(run_example(fresnel, t + 1, &SIZE, &out));
+        }
+    }
+    let [one, two] = samples.map(|s| figures(&s));
+    println!(
+        "\n## Thread scaling: `fresnel --width 1280 --height 960`, 1 thread against 2, median of {} interleaved rounds\n",
+        args.rounds
+    );
+    println!("| threads | process CPU s | process wall s | render wall s | M rays |");
+    println!("|---:|---:|---:|---:|---:|");
+    for (threads, f) in [(1, one), (2, two)] {
+        println!("| {threads} | {:.3} | {:.3} | {:.3} | {:.2} |", f.cpu, f.wall, f.render, f.rays * 1e-6);
+    }
+    println!(
+        "\nWall time at 1 thread over 2 threads: {:.2}x for the whole process, {:.2}x for the render alone \
+         (the target: 1.9x). CPU time at 2 threads over 1: {:.2}x. Two threads scale only as far as the \
+         machine has a second core free: load average at the end {}.",
+        one.wall / two.wall,
+        one.render / two.render,
+        two.cpu / one.cpu,
+        load_average()
+    );
+}
+
 const CURVE_WIDTH: u32 = 320;
 const CURVE_HEIGHT: u32 = 240;
 
@@ -371,10 +574,13 @@ fn object_count_curve(args: &Args) {
 fn main() {
     let args = Args::parse();
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    if !args.no_examples {
+    if !args.no_examples && !args.course {
         compare_examples(&args, root);
     }
-    if !args.no_curve {
+    if !args.no_examples {
+        course_figures(&args, root);
+    }
+    if !args.no_curve && !args.course {
         object_count_curve(&args);
     }
 }
