@@ -19,7 +19,7 @@ use crate::lesson::transform::Transform;
 use std::sync::Arc;
 
 #[cfg(doc)]
-use crate::lesson::scene::Scene;
+use crate::lesson::{scene::Scene, shader::Shader};
 
 /// What [`Scene::prepared`] works out once from the nodes.
 pub(crate) struct Preparation {
@@ -29,6 +29,8 @@ pub(crate) struct Preparation {
     shapes: Vec<Shape>,
     /// Each node's shader, in the order of the nodes.
     materials: Vec<Material>,
+    /// Whether each node's shader is dispersive ([`Shader::is_dispersive`]), asked once.
+    dispersive: Vec<bool>,
     /// Which nodes it was made from.
     made_from: Vec<NodeIdentity>,
 }
@@ -59,6 +61,7 @@ impl Preparation {
             node_tree: NodeTree::build(nodes),
             shapes: nodes.iter().map(Shape::of).collect(),
             materials: nodes.iter().map(|n| Material::of(&n.shader)).collect(),
+            dispersive: nodes.iter().map(|n| n.shader.is_dispersive()).collect(),
             made_from: nodes.iter().map(NodeIdentity::of).collect(),
         }
     }
@@ -72,6 +75,12 @@ impl Preparation {
             Some(tree) => tree.nearest_of(&shapes, ray),
             None => nearest_of(&shapes, ray),
         }
+    }
+
+    /// Whether node `i`'s shader is dispersive.
+    #[inline(always)]
+    pub(crate) fn is_dispersive(&self, i: usize) -> bool {
+        self.dispersive[i]
     }
 
     /// The surface of node `i` of `nodes` at `hit`, and whether its normal is of unit length.

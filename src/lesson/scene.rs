@@ -405,7 +405,8 @@ impl<'a> TraceContext<'a> {
                 if WATCHED {
                     self.observe(|o| o.ray_hits(scene, node, &info));
                 }
-                self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
+                self.met_dispersion |= ray.wavelength.is_some()
+                    && scene.preparation().map_or_else(|| node.shader.is_dispersive(), |p| p.is_dispersive(i));
                 (self.shade_hit::<WATCHED>(i, ray, &info, unit_normal), None)
             }
             None => (self.environment(ray), Some(Stop::Missed)),
