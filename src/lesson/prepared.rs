@@ -5,7 +5,7 @@
 //! - each node's shape and shader as the cases of an enum ([`crate::lesson::dispatch`]), so that the
 //!   workbook's own types are called without a trait object.
 //!
-//! A preparation belongs to the nodes it was made from: [`Preparation::describes`] checks, in one pass over
+//! A preparation belongs to the nodes it was made from: `Preparation::describes` checks, in one pass over
 //! the nodes, that the scene still holds exactly those (the same geometry and shader, by address, under the
 //! same transform), so a scene changed after it was prepared is prepared again rather than traced wrongly.
 
