@@ -18,7 +18,7 @@ use glam::Vec3A;
 use std::path::Path;
 
 /// What happens to texture coordinates outside [0, 1).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Wrap {
     /// The image tiles the plane.
     #[default]
@@ -30,7 +30,7 @@ pub enum Wrap {
 }
 
 /// How a texel is chosen for a point between texel centres.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Filter {
     /// The texel the point falls in: blocky when magnified.
     Nearest,

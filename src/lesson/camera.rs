@@ -49,7 +49,7 @@ impl Default for Camera {
 }
 
 /// The extent of the image across which the camera's field of view is measured.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FovAxis {
     /// Corner to corner, as the course measures it: a change of aspect ratio changes both extents.
     #[default]

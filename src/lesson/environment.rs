@@ -217,11 +217,10 @@ pub fn cube_face_direction(face: CubeFace, u: f32, v: f32) -> Vector {
 pub const FACE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr"];
 
 /// How the six images of a cube map are oriented (see the module documentation).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum CubemapLayout {
     /// OpenGL's and Direct3D's: the skyboxes found on the web, and the workbook's own `sky_cubemap`.
     #[default]
-    #[value(name = "opengl")]
     OpenGl,
     /// The course's: `negz` turned by 180° against OpenGL's. The course's cube maps and scene files.
     Course,

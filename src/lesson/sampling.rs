@@ -37,7 +37,7 @@ use crate::lesson::scene::PixelSample;
 use std::f32::consts::FRAC_PI_4;
 
 /// How the points in the unit disc are chosen.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum DiscSampler {
     /// Independent uniform points (the slide's sampler).
     Random,

@@ -24,7 +24,7 @@ use crate::lesson::spectral::GamutMapping;
 use rayon::prelude::*;
 
 /// How linear light above 1 is fitted into an 8-bit picture.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ToneMap {
     /// Every channel clamped to 1, as the course does: exact below 1, white above.
     #[default]

@@ -11,6 +11,7 @@ mod help;
 mod options;
 mod progress;
 mod run;
+mod values;
 
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};

@@ -36,7 +36,7 @@ pub const LAMBDA_MIN: f32 = 400.0;
 pub const LAMBDA_MAX: f32 = 700.0;
 
 /// The spectrum a white light of the scene stands for, when wavelengths are traced (`--illuminant`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Illuminant {
     /// CIE standard illuminant D65, average daylight: the white of sRGB, so a white light stays white.
     #[default]
@@ -199,7 +199,7 @@ pub fn bands(n: u32, illuminant: Illuminant) -> Vec<Band> {
 /// spectrum have negative channels, and so may a pixel that adds up a few of them (the edge of a rainbow).
 /// The renderer's frame keeps them (an `.exr` file holds them); the picture that is shown (a PNG, the
 /// viewer) maps them, the same way whatever traced the wavelengths.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum GamutMapping {
     /// Negative channels become 0, the others stay: the usual choice for spectral colours, which keeps the
     /// rainbow saturated (and makes it a little lighter than the light it shows).

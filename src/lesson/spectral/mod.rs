@@ -136,7 +136,7 @@ impl From<f32> for Ior {
 
 /// How a dispersive scene spends its rays on wavelengths (`--spectral`). The default is the one the
 /// error-versus-time study of the dispersion example found best for its picture (see `docs/measurements.md`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum SpectralMode {
     /// The slide's method: `--wavelengths` K full passes, one per band, added with the bands' colours.
     Passes,

@@ -14,7 +14,7 @@ use crate::lesson::ray::Ray;
 use crate::lesson::spectral::Ior;
 
 /// Which formula the Fresnel texture uses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FresnelMode {
     /// Schlick's approximation, as on the slide.
     #[default]
