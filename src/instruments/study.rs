@@ -14,12 +14,10 @@
 //! samplers; wavelength passes against per-path spectral sampling). Another example joins it with one more [`Sweep::new`] there; a test
 //! (`tests/workbook/study.rs`) checks on a tiny picture that the error really falls as the sample count rises.
 
-use crate::app::cli::{Cli, Example};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::rng::mix64;
 use std::path::{Path, PathBuf};
-use std::time::Duration;
 
 /// A render and what it cost.
 pub struct Timed {
@@ -34,16 +32,12 @@ pub struct Timed {
 /// Renders an example from its command-line options; what a [`Sweep`] calls for every point.
 pub type RenderFn = fn(&[String]) -> Result<Timed>;
 
-/// Renders the example `E` with the options `args`, exactly as its binary would.
-pub fn render_timed<E: Example>(args: &[String]) -> Result<Timed> {
-    let parsed = Cli::<E>::parse_args("study", args).map_err(|e| {
-        let message = e.to_string();
-        Error::parameter("study options", args.join(" "), message.lines().next().unwrap_or_default())
-    })?;
-    let (frame, stats) = parsed.render()?;
-    // A caustic render's cost includes the photon pass that runs before it.
-    let photon_pass = stats.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time);
-    Ok(Timed { frame, seconds: (stats.elapsed + photon_pass).as_secs_f64(), rays: stats.counters.total() })
+/// What a study renders: an example, named by its options type, rendered from its command-line options
+/// exactly as its binary would render them. The application implements it for every example (its
+/// `Example` trait), so a sweep names the example it studies: `Sweep::new::<glossy::Options>(...)`.
+pub trait Subject {
+    /// Renders the example with the options `args` (a caustic render's time includes its photon pass).
+    fn render_timed(args: &[String]) -> Result<Timed>;
 }
 
 /// One curve of the study: an example, the options every point shares, and the values of the one
@@ -70,9 +64,9 @@ fn strings(args: &[&str]) -> Vec<String> {
 }
 
 impl Sweep {
-    /// A sweep of example `E`, called `example`: `fixed` options for every render, `knob` taking each of `values`, and a
+    /// A sweep of the example `E`, called `example`: `fixed` options for every render, `knob` taking each of `values`, and a
     /// reference rendered with `fixed` followed by `reference`.
-    pub fn new<E: Example>(
+    pub fn new<E: Subject>(
         example: &'static str,
         label: &str,
         fixed: &[&str],
@@ -87,7 +81,7 @@ impl Sweep {
             knob,
             values: values.to_vec(),
             reference: strings(reference),
-            render: render_timed::<E>,
+            render: E::render_timed,
         }
     }
 

@@ -8,10 +8,10 @@ use crate::common;
 
 use common::examples::{fresnel, glossy, scene_file};
 use lecture6::Vector;
-use lecture6::app::cli::Cli;
-use lecture6::app::cli::Example;
+use lecture6::app::cli::{Cli, Example, controls as controls_of};
 use lecture6::instruments::compare::difference;
 use lecture6::instruments::progressive::{PREVIEW_PIXELS, preview_settings};
+use lecture6::instruments::viewer::ExampleOptions;
 use lecture6::instruments::viewer::controls::{Controls, Kind};
 use lecture6::instruments::viewer::fly::{Motion, as_code, moved};
 use lecture6::instruments::viewer::worker::{Job, Worker};
@@ -27,9 +27,14 @@ fn os(args: &[&str]) -> Vec<OsString> {
     args.iter().map(OsString::from).collect()
 }
 
+/// The options the controls spell, read back as the window reads them.
+fn parse<E: Example>(controls: &Controls) -> Result<Cli<E>, String> {
+    Cli::<E>::from_controls(controls)
+}
+
 #[test]
 fn every_option_becomes_a_control_of_its_kind() {
-    let controls = Controls::new::<fresnel::Options>("fresnel", &os(&["--ior", "2.4"])).unwrap();
+    let controls = controls_of::<fresnel::Options>("fresnel", &os(&["--ior", "2.4"])).unwrap();
     let control = |long: &str| controls.controls.iter().find(|c| c.long == long);
     let kind = |long: &str| control(long).map(|c| (c.kind.clone(), c.value.clone()));
     assert_eq!(kind("ior"), Some((Kind::Real, "2.4".into())));
@@ -60,20 +65,20 @@ fn every_option_becomes_a_control_of_its_kind() {
 
 #[test]
 fn empty_optional_controls_leave_the_defaults_and_negative_numbers_reach_their_checks() {
-    let mut controls = Controls::new::<fresnel::Options>("fresnel", &[]).unwrap();
-    let cli: Cli<fresnel::Options> = controls.parse().unwrap();
+    let mut controls = controls_of::<fresnel::Options>("fresnel", &[]).unwrap();
+    let cli: Cli<fresnel::Options> = parse(&controls).unwrap();
     assert_eq!((cli.common.spp, cli.common.wavelengths, cli.common.spectral), (None, None, None));
     assert_eq!(cli.prepare().unwrap().1.spp, fresnel::Options::DEFAULT_SPP);
     assert!(!controls.args().iter().any(|a| a == "--spp" || a == "--spectral"), "{:?}", controls.args());
 
     controls.get_mut("spp").unwrap().value = "9".into();
-    assert_eq!(controls.parse::<fresnel::Options>().unwrap().prepare().unwrap().1.spp, 9);
+    assert_eq!(parse::<fresnel::Options>(&controls).unwrap().prepare().unwrap().1.spp, 9);
     controls.get_mut("spp").unwrap().value = "-1".into();
-    let error = controls.parse::<fresnel::Options>().unwrap_err().to_string();
+    let error = parse::<fresnel::Options>(&controls).unwrap_err();
     assert!(error.contains("-1") && error.contains("--spp"), "{error}");
     controls.get_mut("spp").unwrap().value.clear();
     controls.get_mut("ior").unwrap().value = "-1".into();
-    let cli: Cli<fresnel::Options> = controls.parse().unwrap();
+    let cli: Cli<fresnel::Options> = parse(&controls).unwrap();
     let error = cli.prepare().map(|_| ()).unwrap_err().to_string();
     assert!(error.contains("--ior") && error.contains("-1"), "{error}");
 }
@@ -81,24 +86,24 @@ fn empty_optional_controls_leave_the_defaults_and_negative_numbers_reach_their_c
 #[test]
 fn controls_spell_the_command_line_they_came_from() {
     let given = ["--glossiness", "0.5", "--exhaustive", "--width", "200", "--seed", "7"];
-    let controls = Controls::new::<glossy::Options>("glossy", &os(&given)).unwrap();
-    let from_controls: Cli<glossy::Options> = controls.parse().unwrap();
+    let controls = controls_of::<glossy::Options>("glossy", &os(&given)).unwrap();
+    let from_controls: Cli<glossy::Options> = parse(&controls).unwrap();
     let direct: Cli<glossy::Options> = common::parse(&given);
     assert_eq!(format!("{from_controls:?}"), format!("{direct:?}"));
 }
 
 #[test]
 fn a_changed_control_changes_the_options_and_a_bad_one_is_the_parsers_error() {
-    let mut controls = Controls::new::<fresnel::Options>("fresnel", &[]).unwrap();
+    let mut controls = controls_of::<fresnel::Options>("fresnel", &[]).unwrap();
     controls.get_mut("ior").unwrap().value = "2.42".into();
     controls.get_mut("exhaustive").unwrap().value = "true".into();
     controls.get_mut("fresnel").unwrap().value = "exact".into();
-    let cli: Cli<fresnel::Options> = controls.parse().unwrap();
+    let cli: Cli<fresnel::Options> = parse(&controls).unwrap();
     assert_eq!(cli.example.ior, 2.42);
     assert!(cli.common.exhaustive);
     assert_eq!(format!("{:?}", cli.example.fresnel), "Exact");
     controls.get_mut("width").unwrap().value = "wide".into();
-    let error = controls.parse::<fresnel::Options>().unwrap_err().to_string();
+    let error = parse::<fresnel::Options>(&controls).unwrap_err();
     assert!(error.contains("wide") && error.contains("--width"), "{error}");
 }
 

@@ -4,15 +4,25 @@
 //!
 //! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
 //! unknown options, whose message is put on one line too), never a panic.
+//!
+//! The instruments that render an example again and again (the study, the live window) say what they need of
+//! its command line as traits of their own; `instruments.rs` implements them for every example, and
+//! `controls.rs` makes the window's controls from the example's command, so the instruments import nothing
+//! from here.
 
 pub mod commands;
+#[cfg(feature = "viewer")]
+mod controls;
 mod example;
 mod help;
+mod instruments;
 mod options;
 mod progress;
 mod run;
 mod values;
 
+#[cfg(feature = "viewer")]
+pub use controls::controls;
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};
 pub use run::{one_line, run};

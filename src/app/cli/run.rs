@@ -58,10 +58,16 @@ pub fn run<E: Example>() -> ExitCode {
     }
 }
 
-/// `--window`: the live viewer, with the options as given on the command line.
+/// `--window`: the live viewer, with the options as given on the command line, and as its controls.
 #[cfg(feature = "viewer")]
 fn open_window<E: Example>(name: &str, args: Cli<E>, argv: Vec<std::ffi::OsString>) -> ExitCode {
-    crate::instruments::viewer::run(name, args, argv)
+    match super::controls::<E>(name, &argv) {
+        Ok(controls) => crate::instruments::viewer::run(name, args, controls),
+        Err(e) => {
+            eprintln!("{name}: {}", one_line(&e.to_string()));
+            ExitCode::from(2)
+        }
+    }
 }
 
 /// `--window` in a build without the viewer: say how to get it.

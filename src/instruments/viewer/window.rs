@@ -6,10 +6,10 @@
 //! the arrow keys turn and Q/E roll; dragging the mouse over the picture looks around; a click shows what
 //! the pixel sees: the node and shader it hits and its whole ray tree (see [`crate::instruments::ray_tree`]).
 
+use super::ExampleOptions;
 use super::controls::{Control, Controls, Kind};
 use super::fly::{Motion, as_code, moved};
 use super::worker::{Job, Worker};
-use crate::app::cli::{Cli, Example};
 use crate::instruments::compare::{self, Reference};
 use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::lesson::camera::Camera;
@@ -17,7 +17,6 @@ use crate::lesson::error::Result;
 use crate::lesson::frame::keeps_linear_light;
 use crate::lesson::render::thread_pool;
 use eframe::egui;
-use std::ffi::OsString;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
@@ -29,10 +28,9 @@ const SETTLE: Duration = Duration::from_millis(150);
 const TURN_RATE: f32 = 60.0;
 
 /// Opens the window and runs it until it is closed. Fails when the window cannot be opened (no display).
-pub fn open<E: Example>(name: &str, cli: Cli<E>, args: &[OsString]) -> std::result::Result<(), String> {
-    let controls = Controls::new::<E>(name, args).map_err(|e| e.to_string())?;
+pub fn open<O: ExampleOptions>(name: &str, options: O, controls: Controls) -> std::result::Result<(), String> {
     let name = name.to_string();
-    let options = eframe::NativeOptions {
+    let native = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1180.0, 720.0])
             .with_title(format!("{name} (lecture 6)")),
@@ -41,10 +39,10 @@ pub fn open<E: Example>(name: &str, cli: Cli<E>, args: &[OsString]) -> std::resu
     let title = name.clone();
     eframe::run_native(
         &title,
-        options,
+        native,
         Box::new(move |cc| {
             let ctx = cc.egui_ctx.clone();
-            let app = Viewer::new(name, cli, controls, move || ctx.request_repaint()).map_err(|e| e.to_string())?;
+            let app = Viewer::new(name, options, controls, move || ctx.request_repaint()).map_err(|e| e.to_string())?;
             Ok(Box::new(app))
         }),
     )
@@ -52,11 +50,11 @@ pub fn open<E: Example>(name: &str, cli: Cli<E>, args: &[OsString]) -> std::resu
 }
 
 /// The window's state.
-struct Viewer<E: Example> {
+struct Viewer<O: ExampleOptions> {
     name: String,
     controls: Controls,
     /// The options of the picture shown (the last valid ones).
-    cli: Cli<E>,
+    options: O,
     worker: Worker,
     /// The camera the window moved to; `None` while it is the scene's own.
     camera: Option<Camera>,
@@ -73,13 +71,13 @@ struct Viewer<E: Example> {
     picked: Option<Picked>,
 }
 
-impl<E: Example> Viewer<E> {
-    fn new(name: String, cli: Cli<E>, controls: Controls, repaint: impl Fn() + Send + Sync + 'static) -> Result<Self> {
-        let worker = Worker::start(cli.common.threads, repaint)?;
+impl<O: ExampleOptions> Viewer<O> {
+    fn new(name: String, options: O, controls: Controls, repaint: impl Fn() + Send + Sync + 'static) -> Result<Self> {
+        let worker = Worker::start(options.threads(), repaint)?;
         let mut viewer = Viewer {
             name,
             controls,
-            cli,
+            options,
             worker,
             camera: None,
             speed: 0.0,
@@ -94,12 +92,12 @@ impl<E: Example> Viewer<E> {
     }
 
     fn submit(&mut self, rebuild: bool, preview: bool) {
-        let cli = self.cli.clone();
+        let options = self.options.clone();
         self.heat_map = None;
         self.worker.submit(Job {
-            rebuild: rebuild.then(|| Box::new(move || cli.prepare()) as _),
+            rebuild: rebuild.then(|| Box::new(move || options.prepare()) as _),
             camera: self.camera,
-            film: self.cli.film(),
+            film: self.options.film(),
             preview,
             cancel: Arc::new(AtomicBool::new(false)),
         });
@@ -107,16 +105,13 @@ impl<E: Example> Viewer<E> {
 
     /// The options changed: parse them as the command line would and render the new scene.
     fn rebuild(&mut self) {
-        match self.controls.parse::<E>() {
-            Ok(cli) => match cli.settings().check().and_then(|()| cli.film().check()) {
-                Ok(()) => {
-                    self.cli = cli;
-                    self.message.clear();
-                    self.submit(true, false);
-                }
-                Err(e) => self.message = e.to_string(),
-            },
-            Err(e) => self.message = crate::app::cli::one_line(&e.to_string()),
+        match O::from_controls(&self.controls) {
+            Ok(options) => {
+                self.options = options;
+                self.message.clear();
+                self.submit(true, false);
+            }
+            Err(e) => self.message = e,
         }
     }
 
@@ -243,8 +238,8 @@ impl<E: Example> Viewer<E> {
                     if ui.button(format!("Save .{ext}")).clicked()
                         && let Some(frame) = &finished
                     {
-                        let path = self.cli.output_path(&self.name).with_extension(ext);
-                        let picture = self.cli.film().develop(frame.clone(), keeps_linear_light(&path));
+                        let path = self.options.output_path(&self.name).with_extension(ext);
+                        let picture = self.options.film().develop(frame.clone(), keeps_linear_light(&path));
                         self.message = match picture.save(&path) {
                             Ok(()) => format!("saved {}", path.display()),
                             Err(e) => e.to_string(),
@@ -271,15 +266,10 @@ impl<E: Example> Viewer<E> {
         if self.heat_map.take().is_some() {
             return;
         }
-        let reference = self
-            .cli
-            .common
-            .compare
-            .clone()
-            .unwrap_or_else(|| std::path::Path::new("expected").join(format!("{}.png", self.name)));
+        let reference = self.options.reference(&self.name);
         let comparison = Reference::load(&reference).and_then(|expected| {
             expected.check_size(&reference, frame.width, frame.height)?;
-            compare::compare(&self.cli.film().develop(frame.clone(), keeps_linear_light(&reference)), &expected)
+            compare::compare(&self.options.film().develop(frame.clone(), keeps_linear_light(&reference)), &expected)
         });
         match comparison {
             Ok(comparison) => {
@@ -482,7 +472,7 @@ fn number_ui(
     }
 }
 
-impl<E: Example> eframe::App for Viewer<E> {
+impl<O: ExampleOptions> eframe::App for Viewer<O> {
     fn update(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
         egui::SidePanel::left("options").resizable(true).default_width(300.0).show(ctx, |ui| self.side_panel(ui));
         egui::TopBottomPanel::bottom("status").show(ctx, |ui| {
