@@ -25,6 +25,7 @@ mod hostile_files;
 mod hostile_input;
 mod inspect;
 mod layered_fresnel;
+mod layers;
 mod math;
 mod mesh;
 mod output;
