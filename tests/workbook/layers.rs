@@ -5,13 +5,6 @@
 use crate::common::root;
 use std::path::{Path, PathBuf};
 
-/// The one place the rules below do not hold yet, each with why: (file under src/, what it names).
-/// The test fails when an exception is no longer needed, so that this list stays exact.
-const KNOWN_EXCEPTIONS: [(&str, &str); 1] = [
-    // The renderer's progress bar; it moves out of the lesson with the rewrite of the render loop.
-    ("lesson/render.rs", "indicatif"),
-];
-
 /// The Rust files under `dir`.
 fn rust_files(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -130,13 +123,7 @@ fn violations(layer: &str, words: &[&str], modules: &[&str]) -> Vec<String> {
 #[test]
 fn the_lesson_uses_no_other_layer_and_no_command_line() {
     let found = violations("lesson", &["clap", "indicatif"], &["app", "instruments"]);
-    let known = |v: &String| KNOWN_EXCEPTIONS.iter().any(|(file, name)| *v == format!("{file}: {name}"));
-    let unexpected: Vec<&String> = found.iter().filter(|v| !known(v)).collect();
-    assert!(unexpected.is_empty(), "the lesson layer uses what lies above it:\n{unexpected:#?}");
-    for (file, name) in KNOWN_EXCEPTIONS {
-        let exception = format!("{file}: {name}");
-        assert!(found.contains(&exception), "{exception} is no longer needed: remove it from KNOWN_EXCEPTIONS");
-    }
+    assert!(found.is_empty(), "the lesson layer uses what lies above it:\n{found:#?}");
 }
 
 #[test]
