@@ -161,5 +161,5 @@ pub struct Photon {
     pub power: Color,
 }
 
-/// The cone filter's constant k >= 1 (Jensen's 1.1): see [`photon_estimate`].
-pub const CONE_FILTER_K: f32 = 1.1;
+// The cone filter's constant (see [`photon_estimate`]) is the workbook's own, read from its file.
+include!("../../src/lesson/photon_map/cone_filter_k.rs");

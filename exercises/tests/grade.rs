@@ -4,10 +4,10 @@
 //! workbook is built for the exercises), is within the regression tests' tolerance of `expected/`. A picture
 //! that differs is saved with a heat map of the difference under `target/exercises/`.
 //!
-//! The pictures are rendered at full size because `expected/` holds full-size pictures, and there is no
-//! other reference in the same run: built for the exercises, the workbook has no functions of its own left
-//! for the exercises handed out. The eight pictures take about ten seconds together, in the default (dev)
-//! build too, whose dependencies are optimised.
+//! The pictures are rendered at full size and compared with `expected/`, the pictures a student sees in the
+//! README and renders with the plain workbook (the grader's own tests also compare a solution's picture with
+//! the workbook's own drawn in the same build, `drawing_with_the_workbooks_own`). The eight pictures take
+//! about ten seconds together, in the default (dev) build too, whose dependencies are optimised.
 
 #[macro_use]
 #[path = "../../tests/workbook/common/examples.rs"]

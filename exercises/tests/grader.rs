@@ -2,12 +2,17 @@
 //! facts; a blank is named and the others still grade; a wrong answer fails with a message that says what
 //! was expected, of what, and what came out; and every fact check can fail, on a plausible mistake.
 
+#[macro_use]
+#[path = "../../tests/workbook/common/examples.rs"]
+mod examples;
 mod grading;
 
 use exercises::{Face, Vector};
 use glam::Affine3A;
 use grading::{Exercise, Verdict, facts, grade, workbook};
-use lecture6::lesson::exercise_hooks::{Hook, answer};
+use lecture6::app::cli::{Cli, Example};
+use lecture6::lesson::exercise_hooks::{Hook, answer, drawing_with_the_workbooks_own};
+use lecture6::lesson::frame::Frame;
 
 /// A picture check that finds every picture as expected, so that only the facts decide.
 fn pictures_as_expected(_example: &str) -> Result<(), String> {
@@ -273,5 +278,50 @@ fn the_exercises_types_agree_with_the_workbooks() {
         assert_eq!(face as usize, workbook as usize);
         assert_eq!(format!("{face:?}"), format!("{workbook:?}"));
     }
-    assert_eq!(exercises::CONE_FILTER_K, lecture6::lesson::photon_map::CONE_FILTER_K);
+}
+
+/// The example called `name`, rendered small (160x120, 4 samples a pixel) as its binary would.
+fn small_render(name: &str) -> Frame {
+    fn render_as<E: Example>(name: &str) -> Frame {
+        let args = ["--quiet", "--width", "160", "--height", "120", "--spp", "4"];
+        let cli = Cli::<E>::parse_args(name, args).expect("the options parse");
+        cli.render().expect("the example renders").0
+    }
+    macro_rules! by_name {
+        ($($example:ident),*) => {
+            match name {
+                $(stringify!($example) => render_as::<examples::$example::Options>(name),)*
+                _ => panic!("the workbook has no example `{name}`"),
+            }
+        };
+    }
+    every_example!(by_name)
+}
+
+/// Where two frames of one size differ: the first differing pixel and how many do.
+fn first_difference(a: &Frame, b: &Frame) -> Option<String> {
+    let differing: Vec<usize> = (0..a.pixels.len()).filter(|&i| a.pixels[i] != b.pixels[i]).collect();
+    let &first = differing.first()?;
+    let (x, y) = (first % a.width as usize, first / a.width as usize);
+    Some(format!(
+        "{} of {} pixels differ, the first at ({x}, {y}): {:?} against the workbook's {:?}",
+        differing.len(),
+        a.pixels.len(),
+        a.pixels[first],
+        b.pixels[first]
+    ))
+}
+
+/// The photon-estimate exercise's solution draws `photon_map` bit for bit as the workbook's own estimate
+/// does: the student's sum is finished by the same function as the workbook's (`arriving_light`), with the
+/// same constant (`CONE_FILTER_K`). The other solutions are held to the pictures' tolerance only, by the
+/// grader itself: where a slide's formula may be written in more than one order, a correct answer may
+/// differ from the workbook's in the last bit.
+#[test]
+fn the_photon_estimate_solution_draws_photon_map_as_the_workbook_does() {
+    let _serial = serial();
+    let students = small_render("photon_map");
+    let workbooks = drawing_with_the_workbooks_own(|| small_render("photon_map"));
+    assert_eq!(students.width, workbooks.width);
+    assert_eq!(first_difference(&students, &workbooks), None);
 }

@@ -5,7 +5,9 @@
 //! `exercises` crate: the slide function returns it, and its own code is not run. When the exercise is not
 //! handed out it returns `None` and the workbook's own code runs. In the plain build the line is nothing at
 //! all. The grader renders a picture [`drawing_around_blanks`], so that a blank does not stop the render at
-//! the first `todo!()`: it names every exercise the picture needs in one run.
+//! the first `todo!()`: it names every exercise the picture needs in one run. A picture rendered
+//! [`drawing_with_the_workbooks_own`] uses none of the student's functions, so the grader can set the two
+//! side by side in one build.
 //!
 //! The exercises use glam's types only (they know nothing of the workbook), so these functions turn the
 //! workbook's types into glam's and back; where the workbook does more than the slide's function around it
@@ -51,6 +53,9 @@ impl Default for Hook {
 /// Whether the renderer draws around blanks now (see [`drawing_around_blanks`]).
 static AROUND_BLANKS: AtomicBool = AtomicBool::new(false);
 
+/// Whether every hook answers with the workbook's own function now (see [`drawing_with_the_workbooks_own`]).
+static WORKBOOKS_OWN: AtomicBool = AtomicBool::new(false);
+
 /// The hooks met blank during the current [`drawing_around_blanks`].
 static MET: Mutex<Vec<&'static Hook>> = Mutex::new(Vec::new());
 
@@ -59,7 +64,7 @@ static MET: Mutex<Vec<&'static Hook>> = Mutex::new(Vec::new());
 /// remembered, and answered with the workbook's own function (`None`) from then on, so that the render
 /// goes on and meets every other blank it needs.
 pub fn answer<T>(hook: &'static Hook, handed_out: bool, student: impl FnOnce() -> T) -> Option<T> {
-    if !handed_out {
+    if !handed_out || WORKBOOKS_OWN.load(Relaxed) {
         return None;
     }
     if !AROUND_BLANKS.load(Relaxed) {
@@ -98,9 +103,7 @@ fn note_met(hook: &'static Hook) {
 /// `"glossy_disc: concentric_disc"`), in the order met: the grader names every exercise a picture needs in
 /// one run. One drawing at a time.
 pub fn drawing_around_blanks<T>(draw: impl FnOnce() -> T) -> (T, Vec<String>) {
-    AROUND_BLANKS.store(true, Relaxed);
-    let result = draw();
-    AROUND_BLANKS.store(false, Relaxed);
+    let result = while_set(&AROUND_BLANKS, draw);
     let met = std::mem::take(&mut *MET.lock().unwrap_or_else(|e| e.into_inner()));
     let texts = met
         .iter()
@@ -110,6 +113,26 @@ pub fn drawing_around_blanks<T>(draw: impl FnOnce() -> T) -> (T, Vec<String>) {
         })
         .collect();
     (result, texts)
+}
+
+/// Runs `draw` (a render) with the workbook's own function for every exercise, handed out or not, and
+/// returns what it returned: the picture the workbook draws without the student's functions, to compare
+/// theirs with. One drawing at a time.
+pub fn drawing_with_the_workbooks_own<T>(draw: impl FnOnce() -> T) -> T {
+    while_set(&WORKBOOKS_OWN, draw)
+}
+
+/// Runs `f` with `flag` set, and clears it afterwards, also when `f` panics.
+fn while_set<T>(flag: &'static AtomicBool, f: impl FnOnce() -> T) -> T {
+    struct Clear(&'static AtomicBool);
+    impl Drop for Clear {
+        fn drop(&mut self) {
+            self.0.store(false, Relaxed);
+        }
+    }
+    flag.store(true, Relaxed);
+    let _clear = Clear(flag);
+    f()
 }
 
 /// [`Bitmap`](crate::lesson::bitmap::Bitmap)'s bilinear filter, with `texel(i, j)` the wrapped texel.

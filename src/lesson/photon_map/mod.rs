@@ -76,9 +76,7 @@ use std::time::{Duration, Instant};
 pub const MAX_PHOTONS: u32 = 1 << 24;
 /// Most photons one estimate may gather.
 pub const MAX_K: u32 = 10_000;
-/// The cone filter's constant k >= 1 (Jensen's 1.1): the weight of a photon at distance d from the shaded
-/// point, in a disc of radius r, is `1 - d / (CONE_FILTER_K * r)`.
-pub const CONE_FILTER_K: f32 = 1.1;
+include!("cone_filter_k.rs");
 /// `--show-photons`: the radius of a photon's dot, as a fraction of the estimate's maximum radius.
 pub const DOT_RADIUS: f32 = 0.25;
 /// `--show-photons`: the irradiance of a dot, enough to turn any surface that is not black white (or the
