@@ -888,7 +888,7 @@ fn bitmap_filtering(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
             per_ray
         ),
         code: vec![
-            Code::Items("src/lesson/bitmap.rs", &["fn pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "fn decode", "enum Filter"]),
+            Code::Items("src/lesson/bitmap.rs", &["fn neighbours", "fn wrapped_pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "fn decode", "enum Filter"]),
             Code::Items("src/lesson/color.rs", &["fn srgb8_to_linear_table"]),
         ],
     });
