@@ -8,7 +8,7 @@ use lecture6::app::cli::Example;
 use lecture6::instruments::debug_view::{DebugImage, DebugView, heat, render_view};
 use lecture6::instruments::ray_tree::{self, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
 use lecture6::instruments::side_by_side::{Panel, compose};
-use lecture6::lesson::observer::{Light, Stop};
+use lecture6::lesson::observer::{LightTerm, Stop};
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::lesson::shader::IntoShader;
 use lecture6::prelude::*;
@@ -72,7 +72,7 @@ fn kinds(tree: &RayTree) -> Vec<RayKind> {
     tree.rays.iter().map(|r| r.kind).collect()
 }
 
-fn lights(tree: &RayTree) -> Vec<Light> {
+fn lights(tree: &RayTree) -> Vec<LightTerm> {
     tree.rays
         .iter()
         .flat_map(|r| &r.terms)
@@ -117,7 +117,7 @@ fn trees_add_up_with_glossy_samples_lamps_and_depth_limits() {
     let samples = |t: &RayTree| kinds(t).iter().filter(|&&k| k == RayKind::Reflection).count();
     assert!(trees.iter().any(|t| samples(t) > 1), "no glossy samples traced");
     assert!(trees.iter().any(|t| t.to_text(0).contains("reflection 2 of ")), "glossy samples are numbered");
-    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, Light::Lamp { .. }))));
+    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, LightTerm::Lamp { .. }))));
     assert_eq!(own_colours(&trees), 0);
     let trees = check_trees::<reflect_v02::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 30)]);
     assert!(trees.iter().any(|t| t.rays.iter().any(|r| r.stop == Some(Stop::DepthLimit))), "no ray at the depth limit");
@@ -130,7 +130,7 @@ fn trees_add_up_through_layers_and_the_photon_map() {
     let args = ["--width", "80", "--height", "60", "--photons", "20000"];
     let pixels: Vec<(u32, u32)> = (0..8).map(|i| (10 * i, 50)).collect();
     let trees = check_trees::<photon_map::Options>(&args, &pixels);
-    assert!(trees.iter().any(|t| lights(t).contains(&Light::Photons)), "no photon estimate in the trees");
+    assert!(trees.iter().any(|t| lights(t).contains(&LightTerm::Photons)), "no photon estimate in the trees");
     assert_eq!(own_colours(&trees), 0);
 }
 
