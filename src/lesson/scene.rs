@@ -148,10 +148,18 @@ impl Scene {
         self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
     }
 
-    /// Whether a photon map can add light to this scene: some node is a mirror or glass that casts caustics
-    /// ([`crate::lesson::shader::Shader::caustic_caster`]) and some light shines on it.
-    pub fn casts_caustics(&self) -> bool {
+    /// Whether a photon map can add light to this scene: some node is a caustic caster (a mirror or glass,
+    /// [`crate::lesson::shader::is_caustic_caster`]) and some light shines on it. A question about the
+    /// scene's nodes and lights, not a setting: `photons.count` says whether the map is made.
+    pub fn can_have_caustics(&self) -> bool {
         crate::lesson::photon_map::Emitter::new(self, 1, 0).is_some()
+    }
+
+    /// The old name of [`Scene::can_have_caustics`].
+    #[deprecated(note = "renamed `can_have_caustics`: whether a photon map can add light to the scene (a shader's \
+                         own question is `shader::is_caustic_caster`)")]
+    pub fn casts_caustics(&self) -> bool {
+        self.can_have_caustics()
     }
 
     /// Whether some node's shader depends on the wavelength: only then does the renderer trace wavelengths.

@@ -267,7 +267,7 @@ impl<E: Example> Cli<E> {
             ("--radius", p.radius.is_some()),
             ("--show-photons", p.show_photons),
         ]);
-        if !photon_options.is_empty() && !scene.casts_caustics() {
+        if !photon_options.is_empty() && !scene.can_have_caustics() {
             notes.push(no_effect(&photon_options, "no mirror or glass in this scene casts caustics from a light"));
         } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
             notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());

@@ -19,7 +19,7 @@
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
-use super::{CausticCaster, IntoShader, PhotonScatter, Shader, casts_caustics, scatter_photon};
+use super::{CausticCaster, IntoShader, PhotonScatter, Shader, is_caustic_caster, scatter_photon};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::photon_map::strength;
@@ -198,7 +198,7 @@ impl Shader for Layered {
 
     /// A caustic caster when one of its layers is.
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        self.layers.iter().any(|layer| casts_caustics(&*layer.shader)).then_some(self as &dyn CausticCaster)
+        self.layers.iter().any(|layer| is_caustic_caster(&*layer.shader)).then_some(self as &dyn CausticCaster)
     }
 
     /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a

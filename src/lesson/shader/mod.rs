@@ -108,9 +108,17 @@ pub trait CausticCaster {
     fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter;
 }
 
-/// Whether `shader` makes its object a caustic caster, which the lights aim photons at.
-pub fn casts_caustics(shader: &dyn Shader) -> bool {
+/// Whether `shader` makes its object a caustic caster, which the lights aim photons at (whether a scene has
+/// one that a light shines on is [`crate::lesson::scene::Scene::can_have_caustics`]).
+pub fn is_caustic_caster(shader: &dyn Shader) -> bool {
     shader.caustic_caster().is_some()
+}
+
+/// The old name of [`is_caustic_caster`].
+#[deprecated(note = "renamed `is_caustic_caster`: whether the shader's surface sends photons on (a scene's question \
+                     is `Scene::can_have_caustics`)")]
+pub fn casts_caustics(shader: &dyn Shader) -> bool {
+    is_caustic_caster(shader)
 }
 
 /// What a photon does where it hits a surface with `shader`: what its caustic caster says, or, on a surface
