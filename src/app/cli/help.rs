@@ -12,7 +12,7 @@ pub(super) fn help_command<E: Example>(name: &str) -> clap::Command {
     let Ok(defaults) = Cli::<E>::parse_args(name, std::iter::empty::<std::ffi::OsString>()) else {
         return command;
     };
-    let Ok(scene) = defaults.scene_and_settings(&mut defaults.settings()) else {
+    let Ok(scene) = defaults.scene_with_common_options(&mut defaults.settings()) else {
         return command;
     };
     let with_default = |value: String| {
