@@ -309,18 +309,18 @@ impl Shader for Flat {
     }
 }
 
-/// The scaling of the bitmap on the floor in [`the_uv_view_shows_the_coordinates_the_texture_looks_up`].
+/// The tile size of the bitmap on the floor in [`the_uv_view_shows_the_coordinates_the_texture_looks_up`].
 const TILE: f32 = 7.0;
 /// The checker's squares per unit there.
 const SQUARES: f32 = 0.25;
 
 /// `--view uv` shows the coordinates the floor's texture looks up, after its scaling: a bitmap's u/v divided
-/// by its scaling (also under a layer, the slides' floor), a checker's times its scaling; a texture or a
+/// by its tile size (also under a layer, the slides' floor), a checker's times its scaling; a texture or a
 /// shader of a student's own that says nothing gets the surface's own u/v. The scale text names which.
 #[test]
 fn the_uv_view_shows_the_coordinates_the_texture_looks_up() {
     let bitmap = Arc::new(Bitmap::from_pixels(2, 2, vec![Color::BLACK, Color::WHITE, Color::WHITE, Color::BLACK]));
-    let tiles = || BitmapTexture::new(bitmap.clone()).with_scaling(TILE);
+    let tiles = || BitmapTexture::new(bitmap.clone()).with_tile_size(TILE);
     let mut layered = Layered::new();
     layered.add_layer(Lambert::new(tiles()), Color::WHITE, None);
     layered.add_layer(Reflection::new(0.9), Color::gray(0.02), None);
