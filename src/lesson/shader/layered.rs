@@ -202,11 +202,13 @@ impl Shader for Layered {
     }
 
     /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a
-    /// textured Lambert under a faint reflection, the floor's texture. A layer's blend texture is not
-    /// considered: it says how much of the layer shows (a Fresnel blend reads no u/v at all), not what
-    /// colour the surface has.
+    /// textured Lambert under a faint reflection, the floor's texture. Where no layer's shader reads a
+    /// texture, the first blend texture, from the bottom up, that reads u/v ([`Texture::reads_uv`]): a
+    /// pattern painted with a checker as a layer's blend shows the checker's coordinates, and a glass
+    /// blended by the Fresnel texture, which reads no u/v, names none.
     fn texture(&self) -> Option<&dyn Texture> {
-        self.layers.iter().find_map(|layer| layer.shader.texture())
+        let blend = || self.layers.iter().filter_map(|layer| layer.blend_tex.as_deref()).find(|t| t.reads_uv());
+        self.layers.iter().find_map(|layer| layer.shader.texture()).or_else(blend)
     }
 }
 
