@@ -83,6 +83,9 @@ pub struct Scene {
     pub photon_map: Option<Arc<PhotonMap>>,
     /// What the renderer works out once from the nodes ([`Scene::prepared`]); `None` until then.
     preparation: Option<Arc<Preparation>>,
+    /// Where the origin of the coordinates the renderer computes with lies in the world the scene was built
+    /// in: zero, or the camera's first position once [`Scene::relative_to_camera`] moved the scene.
+    world_origin: Vector,
 }
 
 impl Scene {
@@ -101,6 +104,7 @@ impl Scene {
             illuminant: Illuminant::default(),
             photon_map: None,
             preparation: None,
+            world_origin: Vector::ZERO,
         }
     }
 
@@ -118,6 +122,10 @@ impl Scene {
     /// of one near it (pbrt-v4's "camera-world" space). A scene around the origin is left as it is, and
     /// costs nothing. Environments depend on directions only and are unaffected. The examples do this
     /// before building the photon map and rendering.
+    ///
+    /// What a shader sees then is camera-relative too: `info.ip`, `ray.start` and the lights' positions.
+    /// Directions and distances are the same as in the world; a shader or texture that needs where a point
+    /// is in the world the scene was built in (bands at fixed heights) asks [`Scene::world_position`].
     ///
     /// Deviation from the slides: the course always renders in world coordinates; in f32, a scene moved
     /// 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
@@ -141,6 +149,16 @@ impl Scene {
             light.position -= camera;
         }
         self.camera.position = Vector::ZERO;
+        self.world_origin += camera;
+    }
+
+    /// Where `point`, in the coordinates the renderer computes with (a hit's `info.ip`), lies in the world the
+    /// scene was built in: the same point, unless [`Scene::relative_to_camera`] moved the scene to the
+    /// camera. A shader asks it as `ctx.scene.world_position(info.ip)`. Its precision is that of the world's
+    /// coordinates (f32 rounds a point 1e4 from the origin to about 0.001), which is what a pattern fixed
+    /// in the world needs; the renderer's own work stays camera-relative.
+    pub fn world_position(&self, point: Vector) -> Vector {
+        point + self.world_origin
     }
 
     /// Checks what can only be checked once the scene is complete: every node's transform is invertible.
