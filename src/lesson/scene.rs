@@ -180,9 +180,30 @@ impl Scene {
         self.can_have_caustics()
     }
 
-    /// Whether some node's shader depends on the wavelength: only then does the renderer trace wavelengths.
+    /// Whether some node's shader depends on the wavelength ([`crate::lesson::shader::Shader::is_dispersive`]):
+    /// only then does the renderer trace wavelengths. A shader that reads `ray.wavelength` without saying so
+    /// is traced in white light; the end-of-run report names it ([`crate::lesson::diagnostics`]).
     pub fn is_dispersive(&self) -> bool {
         self.nodes.iter().any(|n| n.shader.is_dispersive())
+    }
+
+    /// This scene's camera, lights, environment and settings around `nodes` instead of its own, not
+    /// prepared and without a photon map.
+    pub(crate) fn around(&self, nodes: Vec<Node>) -> Scene {
+        Scene {
+            camera: self.camera,
+            nodes,
+            lights: self.lights.clone(),
+            environment: self.environment.clone(),
+            ambient: self.ambient,
+            max_depth: self.max_depth,
+            min_ray_weight: self.min_ray_weight,
+            photons: self.photons,
+            illuminant: self.illuminant,
+            photon_map: None,
+            preparation: None,
+            world_origin: self.world_origin,
+        }
     }
 
     /// The scene ready to be traced: itself if it was prepared already and its nodes have not changed since,

@@ -36,7 +36,9 @@ pub trait Texture: Any + Send + Sync {
     }
 
     /// Whether the colour depends on the ray's wavelength (a dispersive Fresnel texture), so that the
-    /// renderer must trace wavelengths separately.
+    /// renderer must trace wavelengths separately: **a texture that reads `ray.wavelength` must return
+    /// `true`**, as a shader must ([`crate::lesson::shader::Shader::is_dispersive`], which asks the texture
+    /// the shader names; a `Layered` shader asks its blend textures).
     fn is_dispersive(&self) -> bool {
         false
     }
