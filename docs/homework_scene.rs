@@ -12,7 +12,9 @@ struct Bands {
 
 impl Shader for Bands {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let even = (info.ip.y / self.width).floor().rem_euclid(2.0) == 0.0;
+        // The height in the world the scene is built in (`info.ip` may be relative to the camera).
+        let height = ctx.scene.world_position(info.ip).y;
+        let even = (height / self.width).floor().rem_euclid(2.0) == 0.0;
         let color = if even { self.a } else { self.b };
         color * diffuse_light(ctx, info, faceforward(info.normal, ray.dir))
     }

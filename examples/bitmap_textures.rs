@@ -5,7 +5,7 @@
 //! (docs/beyond-the-slides.md).
 //!
 //! Diffuse textures read from image files colour a floor, two spheres and a cube. Look at:
-//! - the floor: one image, repeated every 40 units (`scaling`), fading with distance;
+//! - the floor: one image, repeated every 40 units (`with_tile_size`), fading with distance;
 //! - the planet: a 2:1 map wrapped once around a sphere (u = longitude, v = latitude);
 //! - the checker sphere: an 8 x 8 image magnified, so `--filter nearest` shows blocks and `--filter
 //!   bilinear` blends them;
@@ -13,7 +13,7 @@
 //!
 //! Try: `--filter nearest`, `--wrap mirror`, `--texture my_photo.jpg`.
 //!
-//! Homework ideas: add a `--scaling` option for the floor; implement trilinear filtering (mip-maps) and
+//! Homework ideas: add a `--tile-size` option for the floor; implement trilinear filtering (mip-maps) and
 //! compare the far floor with `--spp 1`.
 
 use lecture6::prelude::*;
@@ -58,7 +58,7 @@ impl Example for Options {
         scene.lights.push(PointLight::new(Vector::new(-60.0, 160.0, -90.0), Color::WHITE, 38000.0));
 
         // The floor keeps the bundled tiles, so a student's own image is judged on the objects.
-        let floor = self.load("floor_tiles.png", None)?.with_scaling(40.0);
+        let floor = self.load("floor_tiles.png", None)?.with_tile_size(40.0);
         scene.add(Node::new(Plane::new(0.0, 200.0), Lambert::new(floor)));
 
         // A 2:1 world map wrapped once around a sphere: u is the longitude, v the latitude.
@@ -66,7 +66,7 @@ impl Example for Options {
         scene.add(Node::new(Sphere::new(Vector::new(-42.0, 20.0, 25.0), 20.0), Phong::new(planet, 0.25, 40.0)));
 
         // An 8 x 8 checker image, magnified: the filter decides whether its texels show as blocks.
-        let checker = self.load("checker8.png", own)?.with_scaling(0.5);
+        let checker = self.load("checker8.png", own)?.with_tile_size(0.5);
         scene.add(Node::new(Sphere::new(Vector::new(0.0, 20.0, 25.0), 20.0), Lambert::new(checker)));
 
         let wood = self.load("wood.png", own)?;

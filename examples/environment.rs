@@ -57,7 +57,7 @@ impl Example for Options {
         let sun = workbook::sun_direction() * distance;
         scene.lights.push(PointLight::new(sun, Color::new(1.0, 0.92, 0.8), distance * distance));
 
-        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(texture("floor_tiles.png")?.with_scaling(30.0))));
+        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(texture("floor_tiles.png")?.with_tile_size(30.0))));
         // The mirror sphere shows the whole environment around it.
         scene.add(Node::new(Sphere::new(Vector::new(0.0, 20.0, 15.0), 20.0), Reflection::new(0.9)));
         let red = Phong::new(Color::new(0.7, 0.1, 0.08), 0.35, 80.0);

@@ -53,7 +53,7 @@ impl Example for Options {
 
         // The floor y = 1: tiles, and over them a mirror layer at blend 0.02.
         let mut floor = Layered::new();
-        floor.add_layer(Lambert::new(texture("floor_tiles.png")?.with_scaling(100.0)), Color::WHITE, None);
+        floor.add_layer(Lambert::new(texture("floor_tiles.png")?.with_tile_size(100.0)), Color::WHITE, None);
         floor.add_layer(Reflection::new(0.9), Color::gray(0.02), None);
         scene.add(Node::new(Plane::new(1.0, 100.0), floor).named("floor"));
 

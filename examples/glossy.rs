@@ -54,11 +54,11 @@ impl Example for Options {
         scene.ambient = Color::gray(0.15);
         scene.environment = Some(sky()?);
         scene.lights.push(PointLight::new(Vector::new(-70.0, 150.0, -60.0), Color::WHITE, 42000.0));
-        scene.add(Node::new(Plane::new(0.0, 300.0), Lambert::new(texture("floor_tiles.png")?.with_scaling(30.0))));
+        scene.add(Node::new(Plane::new(0.0, 300.0), Lambert::new(texture("floor_tiles.png")?.with_tile_size(30.0))));
 
         // A wall behind the camera, for the mirrors to reflect: the plane stood up facing the scene, the map
         // upright on it.
-        let map = texture("world.png")?.with_scaling(240.0);
+        let map = texture("world.png")?.with_tile_size(240.0);
         scene.add(
             Node::new(Plane::new(0.0, 240.0), Lambert::new(map))
                 .rotate(0.0, 90.0, 0.0)

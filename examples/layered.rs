@@ -57,7 +57,7 @@ impl Example for Options {
 
         // Lacquered wood: diffuse wood, and on top a clear layer that reflects as much as Fresnel says.
         let mut floor = Layered::new();
-        floor.add_layer(Lambert::new(texture("wood.png")?.with_scaling(60.0)), Color::WHITE, None);
+        floor.add_layer(Lambert::new(texture("wood.png")?.with_tile_size(60.0)), Color::WHITE, None);
         let fresnel = Fresnel::new(IOR, FresnelMode::Exact);
         floor.add_layer(Reflection::new(1.0), Color::gray(self.lacquer), Some(Arc::new(fresnel)));
         floor.shade_every_layer(self.shade_every_layer);

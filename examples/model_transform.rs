@@ -91,7 +91,7 @@ impl Example for Options {
         let mut scene = Scene::new(camera);
         scene.ambient = Color::gray(0.12);
         scene.lights.push(PointLight::new(Vector::new(-14.0, 30.0, -12.0), Color::WHITE, 1500.0));
-        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(texture("floor_tiles.png")?.with_scaling(8.0))));
+        scene.add(Node::new(Plane::new(0.0, 60.0), Lambert::new(texture("floor_tiles.png")?.with_tile_size(8.0))));
 
         // The canonical teapot, as the file has it, and the slide's transform of the same mesh.
         let (mesh, fit) = self.load_mesh()?;
@@ -127,7 +127,7 @@ impl Example for Options {
         );
 
         // A tilted square from the horizontal plane: its u/v (canonical x and z) go with it.
-        let checker = load_texture("checker8.png", None, Filter::Nearest)?.with_scaling(3.0);
+        let checker = load_texture("checker8.png", None, Filter::Nearest)?.with_tile_size(3.0);
         scene.add(
             Node::new(Plane::new(0.0, 3.0), Lambert::new(checker))
                 .rotate(0.0, -60.0, 0.0)

@@ -3,9 +3,10 @@
 //!
 //! - `normals`, `uv`, `depth`: what the camera ray through each pixel's centre hits (the geometry and its
 //!   transform, before any shader runs). `uv` shows the coordinates the texture of the surface's shader
-//!   looks up, after its scaling ([`Shader::texture`], [`Texture::lookup_uv`]), so that a floor whose u/v
-//!   are scene units shows one ramp per tile of its texture, not a moiré of one ramp per unit; where the
-//!   shader names no texture, the surface's own u/v;
+//!   looks up, after its scaling ([`Shader::texture`], [`Texture::lookup_uv`]; a layered shader's is its
+//!   layers' texture, else its blend texture's), so that a floor whose u/v are scene units shows one ramp
+//!   per tile of its texture, not a moiré of one ramp per unit; where the shader names no texture, the
+//!   surface's own u/v;
 //! - `rays`, `shadow-rays`, `depth-reached`: what rendering the pixel cost, counted exactly as the real
 //!   render traces it (same samples, same random streams): a heat map of the rays per pixel shows where
 //!   the time goes, and what adaptive depth control (`--exhaustive` turns it off) and layer skipping

@@ -11,13 +11,27 @@
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`]);
 //!
 //! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
+//!
+//! One mistake no ray shows: a shader whose colour depends on the ray's wavelength must say so
+//! ([`Shader::is_dispersive`]), or the renderer traces its scene in white light (every ray's `wavelength`
+//! is `None`) and never splits a path where it is hit. The renderer cannot see a shader read
+//! `ray.wavelength`, and trying a shader at a few points cannot prove that it never does, so what it is
+//! told is what it traces. After a render, [`undeclared_dispersion`] checks each shader that says "not
+//! dispersive" at one point of its node: it traces the node alone, in white light and at both ends of the
+//! visible spectrum, and a shader that gives them different colours is named in the report.
 
+use crate::lesson::camera::CameraFrame;
+use crate::lesson::color::Color;
 use crate::lesson::node::Node;
-use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene};
-use std::collections::BTreeMap;
+use crate::lesson::ray::Ray;
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
+use crate::lesson::spectral::{LAMBDA_MAX, LAMBDA_MIN};
+use std::collections::{BTreeMap, BTreeSet, HashSet};
+use std::sync::Arc;
 
 #[cfg(doc)]
-use crate::lesson::scene::TraceContext;
+use crate::lesson::shader::Shader;
 
 /// Where a NaN or infinite colour came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -37,6 +51,9 @@ pub struct Problems {
     pub self_hits: BTreeMap<usize, u64>,
     /// Hits whose normal, as the geometry returned it, is not of unit length (or is NaN), by node.
     pub bad_normals: BTreeMap<usize, u64>,
+    /// The nodes whose shader gave rays of different wavelengths different colours though it says it does not
+    /// depend on them ([`undeclared_dispersion`], after the render).
+    pub undeclared_dispersion: BTreeSet<usize>,
 }
 
 impl Problems {
@@ -53,6 +70,7 @@ impl Problems {
         merge(&mut self.non_finite, &other.non_finite);
         merge(&mut self.self_hits, &other.self_hits);
         merge(&mut self.bad_normals, &other.bad_normals);
+        self.undeclared_dispersion.extend(&other.undeclared_dispersion);
     }
 
     /// Counts one more of `what` for `node`.
@@ -93,6 +111,16 @@ impl Problems {
                 listed(&problems.bad_normals, |&i| node(i))
             ));
         }
+        if !problems.undeclared_dispersion.is_empty() {
+            let nodes: Vec<String> = problems.undeclared_dispersion.iter().map(|&i| node(i)).collect();
+            lines.push(format!(
+                "a shader gives rays of different wavelengths different colours, but its is_dispersive() says it \
+                 does not depend on them, so this scene was traced in white light (ray.wavelength None) and no path \
+                 was split there: return true from Shader::is_dispersive (a Layered shader asks its layers, and \
+                 the texture a shader names asks Texture::is_dispersive): {}",
+                nodes.join(", ")
+            ));
+        }
         if counters.capped_rays > 0 {
             lines.push(format!(
                 "{} ray(s) bounced past the safety cap of {RECURSION_SAFETY_CAP} and returned black: without a depth \
@@ -103,6 +131,56 @@ impl Problems {
         }
         lines
     }
+}
+
+/// How many probe rays across, and how many down, [`undeclared_dispersion`] aims over the picture.
+const PROBE_RAYS: u32 = 16;
+
+/// The random stream of [`undeclared_dispersion`]'s probes, the same for each of their wavelengths.
+const PROBE_KEY: u64 = 0x5052_4f42_4500_0000;
+
+/// The nodes of `scene`, seen through `camera` in a picture of `width` x `height`, whose shader says it does
+/// not depend on the wavelength ([`Shader::is_dispersive`]) but gives rays of different wavelengths different
+/// colours. Each such shader is tried once, at the first of its nodes that one of a grid of
+/// [`PROBE_RAYS`]² camera rays over the picture hits: that ray is traced into the node alone (so that
+/// nothing else it sees can bring a wavelength's colour), in white light and at [`LAMBDA_MIN`] and
+/// [`LAMBDA_MAX`], with the same random numbers. A node none of the rays hits is not tried, nor a point of
+/// a shader other than the one tried, and a shader that gives the same colour in every wavelength there
+/// (black, where no light reaches it) is not caught: the check finds the mistake, it cannot prove its
+/// absence.
+pub fn undeclared_dispersion(scene: &Scene, camera: &CameraFrame, width: u32, height: u32) -> BTreeSet<usize> {
+    let step = |size: u32, i: u32| (i as f32 + 0.5) * size as f32 / PROBE_RAYS as f32;
+    let rays: Vec<Ray> = (0..PROBE_RAYS)
+        .flat_map(|y| (0..PROBE_RAYS).map(move |x| (x, y)))
+        .map(|(x, y)| camera.get_screen_ray(step(width, x), step(height, y)))
+        .collect();
+    let mut tried = HashSet::new();
+    let mut found = BTreeSet::new();
+    for (i, node) in scene.nodes.iter().enumerate() {
+        let shader = Arc::as_ptr(&node.shader) as *const () as usize;
+        if node.shader.is_dispersive() || tried.contains(&shader) {
+            continue;
+        }
+        let alone = scene.around(vec![node.clone()]);
+        let Some(ray) = rays.iter().find(|ray| alone.intersects(ray, f32::INFINITY)) else {
+            continue;
+        };
+        tried.insert(shader);
+        let colour = |wavelength: Option<f32>| {
+            let mut ctx = TraceContext::new(&alone, Rng::for_keys(&[PROBE_KEY]));
+            ctx.raytrace(&Ray { wavelength, ..*ray })
+        };
+        let white = colour(None);
+        if [LAMBDA_MIN, LAMBDA_MAX].into_iter().any(|lambda| differs(colour(Some(lambda)), white)) {
+            found.insert(i);
+        }
+    }
+    found
+}
+
+/// Whether two colours differ, both being numbers (a NaN colour is the NaN check's business).
+fn differs(a: Color, b: Color) -> bool {
+    a != b && a.is_finite() && b.is_finite()
 }
 
 /// "A (12), B (3)": the entries of `counts`, most frequent first, each named by `name`.

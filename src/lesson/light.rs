@@ -4,7 +4,7 @@
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
-use crate::lesson::observer::Light;
+use crate::lesson::observer::LightTerm;
 use crate::lesson::scene::TraceContext;
 
 /// A point light (lectures 2-3): light from one point, falling off with the square of the distance.
@@ -64,7 +64,7 @@ pub fn light_loop(
     let mut irradiance = scene.ambient;
     let mut highlights = Color::BLACK;
     if !scene.ambient.is_black() {
-        ctx.observe(|o| o.light_found(Light::Ambient, scene.ambient));
+        ctx.observe(|o| o.light_found(LightTerm::Ambient, scene.ambient));
     }
     for (index, light) in scene.lights.iter().enumerate() {
         let to_light = light.position - info.ip;
@@ -74,7 +74,7 @@ pub fn light_loop(
             continue;
         }
         let visible = ctx.visible(info, light.position);
-        let shadow_ray = Light::Lamp { index, from: info.ip, dir: l, visible };
+        let shadow_ray = LightTerm::Lamp { index, from: info.ip, dir: l, visible };
         if visible {
             let lamp = light.color * (light.intensity / dist2);
             let direct = lamp * n.dot(l);
@@ -84,7 +84,7 @@ pub fn light_loop(
             ctx.observe(|o| {
                 o.light_found(shadow_ray, direct);
                 if !highlight.is_black() {
-                    o.light_found(Light::Highlight { index }, highlight);
+                    o.light_found(LightTerm::Highlight { index }, highlight);
                 }
             });
         } else {
@@ -94,7 +94,7 @@ pub fn light_loop(
     if let Some(map) = &scene.photon_map {
         let caustic = map.irradiance(info.ip, n);
         irradiance += caustic;
-        ctx.observe(|o| o.light_found(Light::Photons, caustic));
+        ctx.observe(|o| o.light_found(LightTerm::Photons, caustic));
     }
     Lighting { irradiance, highlights }
 }

@@ -51,9 +51,11 @@ impl std::fmt::Display for Stop {
     }
 }
 
-/// Light the light loop found at the surface point being shaded, without tracing a ray for it.
+/// A term of the light loop's sum at the surface point being shaded, found without tracing a ray for it:
+/// the ambient light, a lamp (with its shadow ray), the photon map's caustic light, or a shader's highlight.
+/// Not a light of the scene: those are [`crate::lesson::light::PointLight`]s.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Light {
+pub enum LightTerm {
     /// The scene's ambient light (irradiance).
     Ambient,
     /// Lamp `index`, asked by a shadow ray that starts at `from` towards the lamp (`dir`); `visible` says
@@ -78,10 +80,16 @@ pub enum Light {
     },
 }
 
-impl Light {
+/// The old name of [`LightTerm`], which read as one of the scene's lights.
+#[deprecated(
+    note = "renamed `LightTerm`: a term of the light loop's sum, not one of the scene's lights (`PointLight`)"
+)]
+pub type Light = LightTerm;
+
+impl LightTerm {
     /// Whether this light is an irradiance, which the shader multiplies by its colour (all but highlights).
     pub fn is_irradiance(&self) -> bool {
-        !matches!(self, Light::Highlight { .. })
+        !matches!(self, LightTerm::Highlight { .. })
     }
 }
 
@@ -92,8 +100,8 @@ pub trait Observer {
     fn ray_begins(&mut self, _ray: &Ray) {}
     /// The ray being traced hit `node` of `scene`, as `info` describes; its shader is about to run.
     fn ray_hits(&mut self, _scene: &Scene, _node: &Node, _info: &IntersectionInfo) {}
-    /// The light loop found `light` of colour `color` at the point being shaded.
-    fn light_found(&mut self, _light: Light, _color: Color) {}
+    /// The light loop found the term `light`, of colour `color`, at the point being shaded.
+    fn light_found(&mut self, _light: LightTerm, _color: Color) {}
     /// A `Layered` shader starts shading `layer` at the point being shaded.
     fn layer_begins(&mut self, _layer: &Layer) {}
     /// ... and is done with it: the layer's shader returned `color`, which counts `weight` times.

@@ -21,7 +21,7 @@
 use crate::lesson::adaptive_aa;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
-use crate::lesson::diagnostics::Problems;
+use crate::lesson::diagnostics::{Problems, undeclared_dispersion};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::observer::Observer;
@@ -333,7 +333,11 @@ impl<'a> RenderJob<'a> {
     }
 
     /// What a render of this job that took `elapsed` on `threads` workers and traced `counters` reports.
-    pub fn stats(&self, elapsed: Duration, threads: usize, counters: Counters) -> RenderStats {
+    /// The end-of-run report includes the check for shaders that read the wavelength without saying so
+    /// ([`undeclared_dispersion`]).
+    pub fn stats(&self, elapsed: Duration, threads: usize, mut counters: Counters) -> RenderStats {
+        let (w, h) = (self.settings.width, self.settings.height);
+        counters.problems.undeclared_dispersion = undeclared_dispersion(&self.scene, &self.camera, w, h);
         RenderStats {
             elapsed,
             threads,

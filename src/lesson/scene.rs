@@ -83,6 +83,9 @@ pub struct Scene {
     pub photon_map: Option<Arc<PhotonMap>>,
     /// What the renderer works out once from the nodes ([`Scene::prepared`]); `None` until then.
     preparation: Option<Arc<Preparation>>,
+    /// Where the origin of the coordinates the renderer computes with lies in the world the scene was built
+    /// in: zero, or the camera's first position once [`Scene::relative_to_camera`] moved the scene.
+    world_origin: Vector,
 }
 
 impl Scene {
@@ -101,6 +104,7 @@ impl Scene {
             illuminant: Illuminant::default(),
             photon_map: None,
             preparation: None,
+            world_origin: Vector::ZERO,
         }
     }
 
@@ -118,6 +122,10 @@ impl Scene {
     /// of one near it (pbrt-v4's "camera-world" space). A scene around the origin is left as it is, and
     /// costs nothing. Environments depend on directions only and are unaffected. The examples do this
     /// before building the photon map and rendering.
+    ///
+    /// What a shader sees then is camera-relative too: `info.ip`, `ray.start` and the lights' positions.
+    /// Directions and distances are the same as in the world; a shader or texture that needs where a point
+    /// is in the world the scene was built in (bands at fixed heights) asks [`Scene::world_position`].
     ///
     /// Deviation from the slides: the course always renders in world coordinates; in f32, a scene moved
     /// 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
@@ -141,6 +149,16 @@ impl Scene {
             light.position -= camera;
         }
         self.camera.position = Vector::ZERO;
+        self.world_origin += camera;
+    }
+
+    /// Where `point`, in the coordinates the renderer computes with (a hit's `info.ip`), lies in the world the
+    /// scene was built in: the same point, unless [`Scene::relative_to_camera`] moved the scene to the
+    /// camera. A shader asks it as `ctx.scene.world_position(info.ip)`. Its precision is that of the world's
+    /// coordinates (f32 rounds a point 1e4 from the origin to about 0.001), which is what a pattern fixed
+    /// in the world needs; the renderer's own work stays camera-relative.
+    pub fn world_position(&self, point: Vector) -> Vector {
+        point + self.world_origin
     }
 
     /// Checks what can only be checked once the scene is complete: every node's transform is invertible.
@@ -148,15 +166,44 @@ impl Scene {
         self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
     }
 
-    /// Whether a photon map can add light to this scene: some node is a mirror or glass that casts caustics
-    /// ([`crate::lesson::shader::Shader::caustic_caster`]) and some light shines on it.
-    pub fn casts_caustics(&self) -> bool {
+    /// Whether a photon map can add light to this scene: some node is a caustic caster (a mirror or glass,
+    /// [`crate::lesson::shader::is_caustic_caster`]) and some light shines on it. A question about the
+    /// scene's nodes and lights, not a setting: `photons.count` says whether the map is made.
+    pub fn can_have_caustics(&self) -> bool {
         crate::lesson::photon_map::Emitter::new(self, 1, 0).is_some()
     }
 
-    /// Whether some node's shader depends on the wavelength: only then does the renderer trace wavelengths.
+    /// The old name of [`Scene::can_have_caustics`].
+    #[deprecated(note = "renamed `can_have_caustics`: whether a photon map can add light to the scene (a shader's \
+                         own question is `shader::is_caustic_caster`)")]
+    pub fn casts_caustics(&self) -> bool {
+        self.can_have_caustics()
+    }
+
+    /// Whether some node's shader depends on the wavelength ([`crate::lesson::shader::Shader::is_dispersive`]):
+    /// only then does the renderer trace wavelengths. A shader that reads `ray.wavelength` without saying so
+    /// is traced in white light; the end-of-run report names it ([`crate::lesson::diagnostics`]).
     pub fn is_dispersive(&self) -> bool {
         self.nodes.iter().any(|n| n.shader.is_dispersive())
+    }
+
+    /// This scene's camera, lights, environment and settings around `nodes` instead of its own, not
+    /// prepared and without a photon map.
+    pub(crate) fn around(&self, nodes: Vec<Node>) -> Scene {
+        Scene {
+            camera: self.camera,
+            nodes,
+            lights: self.lights.clone(),
+            environment: self.environment.clone(),
+            ambient: self.ambient,
+            max_depth: self.max_depth,
+            min_ray_weight: self.min_ray_weight,
+            photons: self.photons,
+            illuminant: self.illuminant,
+            photon_map: None,
+            preparation: None,
+            world_origin: self.world_origin,
+        }
     }
 
     /// The scene ready to be traced: itself if it was prepared already and its nodes have not changed since,

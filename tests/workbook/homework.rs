@@ -6,6 +6,8 @@
 use crate::common;
 
 use common::{example_binary, root};
+use lecture6::lesson::frame::Frame;
+use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::prelude::*;
 use std::process::Command;
 
@@ -110,8 +112,8 @@ fn a_shader_with_only_shade_renders_in_a_scene_with_a_photon_map() {
     let mut scene = caustic_scene(Chalk);
     scene.photon_map = lecture6::lesson::photon_map::PhotonMap::build(&scene, 1).unwrap().map(Arc::new);
     assert!(scene.photon_map.as_ref().is_some_and(|m| !m.photons().is_empty()), "photons landed on the chalk");
-    let settings = lecture6::lesson::render::RenderSettings { width: 64, height: 48, ..Default::default() };
-    let (frame, stats) = lecture6::lesson::render::render(&scene, &settings).unwrap();
+    let settings = RenderSettings { width: 64, height: 48, ..Default::default() };
+    let (frame, stats) = render(&scene, &settings).unwrap();
     assert_eq!(stats.counters.non_finite_samples, 0);
     // The caustic under the ball is brighter than the floor beside the ball's shadow.
     let brightest = frame.pixels.iter().map(|c| c.max_channel()).fold(0.0, f32::max);
@@ -142,8 +144,36 @@ fn look_at_points_the_centre_of_the_picture_at_the_target() {
 #[allow(dead_code)] // its `main`, which `cargo run --example` calls
 pub(crate) mod homework_scene;
 
+/// The band of the API page's `Bands` shader each pixel of `frame` (a render of `scene` at `settings`) shows:
+/// `Some(true)` for its colour `a`, `Some(false)` for `b`, `None` where the pixel's centre does not see the
+/// bands ball. Fails on a pixel of the ball that is neither band, lit (`band * grey`: its channels over the
+/// band's are equal).
+fn bands_seen(scene: &Scene, settings: &RenderSettings, frame: &Frame) -> Vec<Option<bool>> {
+    let camera = scene.camera.frame(settings.width, settings.height);
+    let bands = scene.nodes.iter().position(|n| n.name.as_deref() == Some("bands")).unwrap();
+    let (a, b) = (Color::new(0.9, 0.5, 0.1), Color::new(0.1, 0.3, 0.8));
+    let is_lit = |c: Color, band: Color| {
+        let r = c.0 / band.0;
+        r.min_element() > 0.0 && r.max_element() - r.min_element() <= 1e-4 * r.max_element()
+    };
+    let pixels = (0..settings.height).flat_map(|y| (0..settings.width).map(move |x| (x, y)));
+    pixels
+        .map(|(x, y)| match scene.closest_hit(&camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5)) {
+            Some((_, node)) if std::ptr::eq(node, &scene.nodes[bands]) => {
+                let c = frame.get(x, y);
+                match (is_lit(c, a), is_lit(c, b)) {
+                    (true, _) => Some(true),
+                    (_, true) => Some(false),
+                    _ => panic!("pixel ({x}, {y}) of the bands ball is {c:?}, neither band lit"),
+                }
+            }
+            _ => None,
+        })
+        .collect()
+}
+
 /// The API page's homework is the file as it is, it renders without NaN, and its own shader shows exactly
-/// its two band colours, lit (each pixel of the ball is one of them times the light, a grey).
+/// its two band colours, lit.
 #[test]
 fn the_api_pages_homework_renders_and_its_own_shader_shows_its_bands() {
     let page = std::fs::read_to_string(root().join("docs/homework-api.md")).unwrap();
@@ -153,36 +183,62 @@ fn the_api_pages_homework_renders_and_its_own_shader_shows_its_bands() {
     );
     let cli = common::parse::<homework_scene::Options>(&["--width", "160", "--height", "120", "--spp", "1"]);
     let (scene, settings) = cli.prepare().unwrap();
-    let (frame, stats) = lecture6::lesson::render::render(&scene, &settings).unwrap();
+    let (frame, stats) = render(&scene, &settings).unwrap();
     assert_eq!(stats.counters.non_finite_samples, 0);
-    let camera = scene.camera.frame(settings.width, settings.height);
-    let bands = scene.nodes.iter().position(|n| n.name.as_deref() == Some("bands")).unwrap();
-    let (a, b) = (Color::new(0.9, 0.5, 0.1), Color::new(0.1, 0.3, 0.8));
-    // The pixel is `band * grey`: its channels over the band's are equal.
-    let is_lit = |c: Color, band: Color| {
-        let r = c.0 / band.0;
-        r.min_element() > 0.0 && r.max_element() - r.min_element() <= 1e-4 * r.max_element()
-    };
-    let (mut seen_a, mut seen_b) = (0, 0);
-    for y in 0..settings.height {
-        for x in 0..settings.width {
-            let ray = camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5);
-            match scene.closest_hit(&ray) {
-                Some((_, node)) if std::ptr::eq(node, &scene.nodes[bands]) => {
-                    let c = frame.get(x, y);
-                    if is_lit(c, a) {
-                        seen_a += 1;
-                    } else if is_lit(c, b) {
-                        seen_b += 1;
-                    } else {
-                        panic!("pixel ({x}, {y}) of the bands ball is {c:?}, neither band lit");
-                    }
-                }
-                _ => {}
-            }
-        }
+    let seen = bands_seen(&scene, &settings, &frame);
+    let count = |band| seen.iter().filter(|&&s| s == Some(band)).count();
+    assert!(count(true) > 20 && count(false) > 20, "the ball shows {} and {} pixels", count(true), count(false));
+}
+
+/// The homework's scene with everything in it moved by `offset` (the camera, the nodes and the lights): the
+/// same homework built elsewhere in the world.
+fn moved_homework(offset: Vector) -> Scene {
+    let mut scene = homework_scene::Options {}.scene().unwrap();
+    scene.camera.position += offset;
+    scene.nodes = scene.nodes.into_iter().map(|node| node.translate(offset)).collect();
+    for light in &mut scene.lights {
+        light.position += offset;
     }
-    assert!(seen_a > 20 && seen_b > 20, "the ball shows {seen_a} pixels of one band and {seen_b} of the other");
+    scene
+}
+
+/// The page's `Bands`, a pattern fixed in the world (bands of world height), shows the same bands when the
+/// whole homework is built 1e4 units from the origin: the renderer then works relative to the camera
+/// (`Scene::relative_to_camera`), and the shader asks `world_position` for the height. The bands may differ
+/// only on a pixel next to a band boundary (f32 rounds a point 1e4 from the origin to 0.001 units, a pixel of
+/// the ball here is about half a unit); a shader reading the camera-relative `info.ip.y` shifts them by the
+/// camera's height, 45 units, a quarter of the bands' period past a whole number of periods.
+#[test]
+fn the_api_pages_bands_stay_in_place_in_a_scene_far_from_the_origin() {
+    let settings = RenderSettings { width: 160, height: 120, spp: 1, ..Default::default() };
+    let bands_at = |offset: Vector| {
+        let mut scene = moved_homework(offset);
+        scene.relative_to_camera();
+        let (frame, _) = render(&scene, &settings).unwrap();
+        (bands_seen(&scene, &settings, &frame), scene)
+    };
+    let (near, near_scene) = bands_at(Vector::ZERO);
+    let offset = Vector::splat(1e4);
+    let (far, far_scene) = bands_at(offset);
+    assert_eq!(near_scene.world_position(Vector::ZERO), Vector::ZERO, "the homework near the origin stays in place");
+    assert_eq!(far_scene.camera.position, Vector::ZERO, "the far homework is rendered relative to its camera");
+    let camera = moved_homework(offset).camera.position;
+    assert_eq!(far_scene.world_position(Vector::ZERO), camera, "the camera-relative origin is the camera");
+    let w = settings.width as usize;
+    let at_boundary = |i: usize| {
+        let neighbours = [i.checked_sub(1), Some(i + 1), i.checked_sub(w), Some(i + w)];
+        neighbours.into_iter().flatten().any(|j| near.get(j).is_some_and(|&n| n.is_some() && n != near[i]))
+    };
+    let both: Vec<usize> = (0..near.len()).filter(|&i| near[i].is_some() && far[i].is_some()).collect();
+    assert!(both.len() > 200, "the ball fills {} pixels in both", both.len());
+    let moved: Vec<usize> = both.iter().copied().filter(|&i| near[i] != far[i] && !at_boundary(i)).collect();
+    assert!(
+        moved.is_empty(),
+        "{} of {} pixels show the other band far from the origin, e.g. {:?}",
+        moved.len(),
+        both.len(),
+        moved.first().map(|i| (i % w, i / w))
+    );
 }
 
 /// The API page shows its geometry and its glossy shader as the files the tests compile and render
@@ -196,4 +252,26 @@ fn the_api_pages_geometry_and_shader_are_the_files_the_tests_render() {
     ] {
         assert!(page.contains(&format!("```rust\n{text}```")), "the page shows {file} as it is");
     }
+}
+
+/// The public names renamed for what they are still compile, deprecated, and mean what they meant, so that
+/// a student's code written against them keeps working.
+#[test]
+#[allow(deprecated)]
+fn the_old_names_still_work_and_mean_the_same() {
+    use lecture6::lesson::observer::{Light, LightTerm};
+    use lecture6::lesson::shader::{casts_caustics, is_caustic_caster};
+    for scene in [caustic_scene(Chalk), Scene::new(Camera::default())] {
+        assert_eq!(scene.casts_caustics(), scene.can_have_caustics());
+    }
+    assert!(caustic_scene(Chalk).casts_caustics());
+    let glass = fresnel_glass(1.5, FresnelMode::Schlick, 1.0);
+    for shader in [&glass as &dyn Shader, &Chalk] {
+        assert_eq!(casts_caustics(shader), is_caustic_caster(shader));
+    }
+    assert!(casts_caustics(&glass) && !casts_caustics(&Chalk));
+    let light: Light = Light::Highlight { index: 0 };
+    assert!(matches!(light, LightTerm::Highlight { index: 0 }) && !light.is_irradiance());
+    let bitmap = Arc::new(Bitmap::from_pixels(1, 1, vec![Color::WHITE]));
+    assert_eq!(BitmapTexture::new(bitmap).with_scaling(40.0).tile_size, 40.0);
 }

@@ -8,7 +8,7 @@ use lecture6::app::cli::Example;
 use lecture6::instruments::debug_view::{DebugImage, DebugView, heat, render_view};
 use lecture6::instruments::ray_tree::{self, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
 use lecture6::instruments::side_by_side::{Panel, compose};
-use lecture6::lesson::observer::{Light, Stop};
+use lecture6::lesson::observer::{LightTerm, Stop};
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::lesson::shader::IntoShader;
 use lecture6::prelude::*;
@@ -72,7 +72,7 @@ fn kinds(tree: &RayTree) -> Vec<RayKind> {
     tree.rays.iter().map(|r| r.kind).collect()
 }
 
-fn lights(tree: &RayTree) -> Vec<Light> {
+fn lights(tree: &RayTree) -> Vec<LightTerm> {
     tree.rays
         .iter()
         .flat_map(|r| &r.terms)
@@ -117,7 +117,7 @@ fn trees_add_up_with_glossy_samples_lamps_and_depth_limits() {
     let samples = |t: &RayTree| kinds(t).iter().filter(|&&k| k == RayKind::Reflection).count();
     assert!(trees.iter().any(|t| samples(t) > 1), "no glossy samples traced");
     assert!(trees.iter().any(|t| t.to_text(0).contains("reflection 2 of ")), "glossy samples are numbered");
-    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, Light::Lamp { .. }))));
+    assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, LightTerm::Lamp { .. }))));
     assert_eq!(own_colours(&trees), 0);
     let trees = check_trees::<reflect_v02::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 30)]);
     assert!(trees.iter().any(|t| t.rays.iter().any(|r| r.stop == Some(Stop::DepthLimit))), "no ray at the depth limit");
@@ -130,7 +130,7 @@ fn trees_add_up_through_layers_and_the_photon_map() {
     let args = ["--width", "80", "--height", "60", "--photons", "20000"];
     let pixels: Vec<(u32, u32)> = (0..8).map(|i| (10 * i, 50)).collect();
     let trees = check_trees::<photon_map::Options>(&args, &pixels);
-    assert!(trees.iter().any(|t| lights(t).contains(&Light::Photons)), "no photon estimate in the trees");
+    assert!(trees.iter().any(|t| lights(t).contains(&LightTerm::Photons)), "no photon estimate in the trees");
     assert_eq!(own_colours(&trees), 0);
 }
 
@@ -309,36 +309,49 @@ impl Shader for Flat {
     }
 }
 
-/// The scaling of the bitmap on the floor in [`the_uv_view_shows_the_coordinates_the_texture_looks_up`].
+/// The tile size of the bitmap on the floor in [`the_uv_view_shows_the_coordinates_the_texture_looks_up`].
 const TILE: f32 = 7.0;
 /// The checker's squares per unit there.
 const SQUARES: f32 = 0.25;
 
 /// `--view uv` shows the coordinates the floor's texture looks up, after its scaling: a bitmap's u/v divided
-/// by its scaling (also under a layer, the slides' floor), a checker's times its scaling; a texture or a
-/// shader of a student's own that says nothing gets the surface's own u/v. The scale text names which.
+/// by its tile size (also under a layer, the slides' floor), a checker's times its scaling, also when the
+/// checker is a layer's blend texture (a painted pattern); a texture or a shader of a student's own that says
+/// nothing, or a glass whose only texture is the Fresnel blend (which reads no u/v), gets the surface's own
+/// u/v. The scale text names which.
 #[test]
 fn the_uv_view_shows_the_coordinates_the_texture_looks_up() {
     let bitmap = Arc::new(Bitmap::from_pixels(2, 2, vec![Color::BLACK, Color::WHITE, Color::WHITE, Color::BLACK]));
-    let tiles = || BitmapTexture::new(bitmap.clone()).with_scaling(TILE);
+    let tiles = || BitmapTexture::new(bitmap.clone()).with_tile_size(TILE);
     let mut layered = Layered::new();
     layered.add_layer(Lambert::new(tiles()), Color::WHITE, None);
     layered.add_layer(Reflection::new(0.9), Color::gray(0.02), None);
     let checker = CheckerTexture { color1: Color::BLACK, color2: Color::WHITE, scaling: SQUARES };
+    let mut painted = Layered::new();
+    painted.add_layer(Lambert::new(Color::gray(0.2)), Color::WHITE, None);
+    painted.add_layer(Lambert::new(Color::gray(0.8)), Color::WHITE, Some(Arc::new(checker)));
     type Mapping = fn((f32, f32)) -> (f32, f32);
-    let cases: [(&str, Arc<dyn Shader>, Mapping, &str); 5] = [
-        ("bitmap", Arc::new(Lambert::new(tiles())), |(u, v)| (u / TILE, v / TILE), "(BitmapTexture)"),
-        ("layered", Arc::new(layered), |(u, v)| (u / TILE, v / TILE), "(BitmapTexture)"),
-        ("checker", Arc::new(Phong::new(checker, 0.2, 20.0)), |(u, v)| (u * SQUARES, v * SQUARES), "(CheckerTexture)"),
-        ("own texture", Arc::new(Lambert::new(Stripes)), |uv| uv, "(Stripes)"),
-        ("own shader", Arc::new(Flat), |uv| uv, "elsewhere (Flat)"),
+    let cases: [(&str, Arc<dyn Shader>, Option<Mapping>, &str); 7] = [
+        ("bitmap", Arc::new(Lambert::new(tiles())), Some(|(u, v)| (u / TILE, v / TILE)), "(BitmapTexture)"),
+        ("layered", Arc::new(layered), Some(|(u, v)| (u / TILE, v / TILE)), "(BitmapTexture)"),
+        (
+            "checker",
+            Arc::new(Phong::new(checker, 0.2, 20.0)),
+            Some(|(u, v)| (u * SQUARES, v * SQUARES)),
+            "(CheckerTexture)",
+        ),
+        ("blend texture", Arc::new(painted), Some(|(u, v)| (u * SQUARES, v * SQUARES)), "(CheckerTexture)"),
+        ("Fresnel blend", Arc::new(fresnel_glass(1.5, FresnelMode::Schlick, 1.0)), None, "elsewhere (Layered)"),
+        ("own texture", Arc::new(Lambert::new(Stripes)), None, "(Stripes)"),
+        ("own shader", Arc::new(Flat), None, "elsewhere (Flat)"),
     ];
     for (case, shader, mapping, named) in cases {
         let (view, seen) = floor_uv_view(shader);
         for &(uv, colour) in &seen {
-            assert!(within(colour, uv_colour(mapping(uv)), 1), "{case}: {colour:?} at u/v {uv:?}");
+            let looked_up = mapping.map_or(uv, |m| m(uv));
+            assert!(within(colour, uv_colour(looked_up), 1), "{case}: {colour:?} at u/v {uv:?}");
         }
-        if !case.starts_with("own") {
+        if mapping.is_some() {
             let unscaled = seen.iter().filter(|&&(uv, colour)| !within(colour, uv_colour(uv), 8)).count();
             assert!(unscaled > seen.len() / 2, "{case}: the view shows the unscaled u/v ({unscaled} pixels differ)");
         }

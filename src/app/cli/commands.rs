@@ -104,7 +104,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     // size than A is refused before either is rendered.
     let mut b_settings = b.settings();
     b_settings.check()?;
-    b.scene_and_settings(&mut b_settings)?;
+    b.scene_with_common_options(&mut b_settings)?;
     let b_size = (b_settings.width, b_settings.height);
     let words = |args: &[OsString]| args.iter().map(|a| a.to_string_lossy()).collect::<Vec<_>>().join(" ");
     let base_text = if base.is_empty() { "(its defaults)".to_string() } else { words(&base) };

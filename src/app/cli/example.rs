@@ -151,7 +151,7 @@ impl<E: Example> Cli<E> {
         self.film().check()?;
         self.check_slide()?;
         // Prepared once, for the photon tracer and the renderer alike.
-        let mut scene = self.scene_and_settings(&mut settings)?.prepared().into_owned();
+        let mut scene = self.scene_with_common_options(&mut settings)?.prepared().into_owned();
         settings.check()?;
         check(&scene, &settings)?;
         if !self.common.slide {
@@ -160,9 +160,9 @@ impl<E: Example> Cli<E> {
         Ok((scene, settings))
     }
 
-    /// The example's scene with the common options applied and checked, and the settings it decides; the
-    /// photon map is not built yet.
-    pub(super) fn scene_and_settings(&self, settings: &mut RenderSettings) -> Result<Scene> {
+    /// The example's scene and the settings it decides ([`Example::scene_and_settings`]), with the common
+    /// options applied to the scene and checked; the photon map is not built yet.
+    pub(super) fn scene_with_common_options(&self, settings: &mut RenderSettings) -> Result<Scene> {
         let common = &self.common;
         let mut scene = self.example.scene_and_settings(common, settings)?;
         if let Some(depth) = common.max_depth {
@@ -267,7 +267,7 @@ impl<E: Example> Cli<E> {
             ("--radius", p.radius.is_some()),
             ("--show-photons", p.show_photons),
         ]);
-        if !photon_options.is_empty() && !scene.casts_caustics() {
+        if !photon_options.is_empty() && !scene.can_have_caustics() {
             notes.push(no_effect(&photon_options, "no mirror or glass in this scene casts caustics from a light"));
         } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
             notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());

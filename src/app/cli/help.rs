@@ -12,7 +12,7 @@ pub(super) fn help_command<E: Example>(name: &str) -> clap::Command {
     let Ok(defaults) = Cli::<E>::parse_args(name, std::iter::empty::<std::ffi::OsString>()) else {
         return command;
     };
-    let Ok(scene) = defaults.scene_and_settings(&mut defaults.settings()) else {
+    let Ok(scene) = defaults.scene_with_common_options(&mut defaults.settings()) else {
         return command;
     };
     let with_default = |value: String| {
@@ -26,7 +26,7 @@ pub(super) fn help_command<E: Example>(name: &str) -> clap::Command {
         Some(r) => r.to_string(),
         None => format!("{:.3}, 1/100 of the scene's size", crate::lesson::photon_map::default_radius(&scene, &[])),
     };
-    let caustics = if !scene.casts_caustics() {
+    let caustics = if !scene.can_have_caustics() {
         "Caustics (photon mapping): no effect here, no mirror or glass in this scene casts caustics"
     } else if photons.count == 0 {
         "Caustics (photon mapping): off in this scene unless --photons N"

@@ -167,6 +167,7 @@ impl Loader<'_> {
             "BitmapTexture" => {
                 let p = r.raw("file").ok_or_else(|| self.required(r.block, "file"))?;
                 let path = self.file(p)?;
+                // The course's `scaling` of a bitmap is its tile size, the workbook's name for the same number.
                 let scaling = r.float(self, "scaling", 1.0, -1e120, 1e120)?;
                 if scaling == 0.0 {
                     return Err(self.error(r.line_of("scaling"), "BitmapTexture `scaling` must not be 0"));
@@ -174,7 +175,7 @@ impl Loader<'_> {
                 let gamma = r.float(self, "assumedGamma", 1.0, -1e17, 1e17)? as f32;
                 let texture = BitmapTexture::load(&path).map_err(|e| self.file_error(p, e))?;
                 let bitmap = with_assumed_gamma(&texture.bitmap, &path, gamma);
-                Arc::new(BitmapTexture::new(Arc::new(bitmap)).with_scaling(scaling as f32))
+                Arc::new(BitmapTexture::new(Arc::new(bitmap)).with_tile_size(scaling as f32))
             }
             _ => {
                 let ior = r.float(self, "ior", 1.33, 1e-6, 10.0)?;

@@ -33,7 +33,7 @@ use crate::lesson::error::Result;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
-use crate::lesson::observer::{Light, Observer, Stop};
+use crate::lesson::observer::{LightTerm, Observer, Stop};
 use crate::lesson::ray::Ray;
 use crate::lesson::render::{RenderSettings, render_pixel};
 use crate::lesson::scene::{Counters, Scene};
@@ -81,7 +81,7 @@ pub enum TermKind {
     /// Light the light loop found.
     Light {
         /// Which light: ambient, a lamp, the photon map's caustic light, or a highlight.
-        kind: Light,
+        kind: LightTerm,
         /// What was found: an irradiance (the shader multiplies it by its colour) or, for a highlight, light
         /// added as it is.
         color: Color,
@@ -297,7 +297,7 @@ impl Observer for RayTree {
         }
     }
 
-    fn light_found(&mut self, light: Light, color: Color) {
+    fn light_found(&mut self, light: LightTerm, color: Color) {
         self.push_term(TermKind::Light { kind: light, color }, !light.is_irradiance());
     }
 

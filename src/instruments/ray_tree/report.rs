@@ -4,7 +4,7 @@ use super::{PixelPos, RayTree, TermKind, TraceFormat, TracedPixel};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::math::Vector;
-use crate::lesson::observer::Light;
+use crate::lesson::observer::LightTerm;
 use std::fmt::Write;
 
 impl RayTree {
@@ -204,17 +204,17 @@ pub fn describe(
 }
 
 /// How the tree names light found at a surface.
-fn light_text(light: Light) -> String {
+fn light_text(light: LightTerm) -> String {
     match light {
-        Light::Ambient => "ambient light".to_string(),
-        Light::Lamp { index, from, dir, visible } => format!(
+        LightTerm::Ambient => "ambient light".to_string(),
+        LightTerm::Lamp { index, from, dir, visible } => format!(
             "shadow ray to light {index} from {} dir {}: {}",
             vec3(from),
             vec3(dir),
             if visible { "reaches it" } else { "blocked" }
         ),
-        Light::Photons => "photon estimate (caustic light)".to_string(),
-        Light::Highlight { index } => format!("highlight of light {index}"),
+        LightTerm::Photons => "photon estimate (caustic light)".to_string(),
+        LightTerm::Highlight { index } => format!("highlight of light {index}"),
     }
 }
 

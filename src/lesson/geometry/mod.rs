@@ -33,7 +33,12 @@ use std::any::Any;
 /// are worth computing only when read). Shaders and textures read u/v with [`IntersectionInfo::uv`].
 #[derive(Clone, Copy, Debug)]
 pub struct IntersectionInfo {
-    /// The hit point.
+    /// The hit point, in the coordinates the renderer computes with: in a scene far from the origin, which
+    /// the examples move to the camera
+    /// ([`Scene::relative_to_camera`](crate::lesson::scene::Scene::relative_to_camera)), relative to the
+    /// camera's position. A shader that needs the point in the world the scene was built in (a pattern fixed
+    /// in the world) asks `ctx.scene.world_position(info.ip)`
+    /// ([`Scene::world_position`](crate::lesson::scene::Scene::world_position)).
     pub ip: Vector,
     /// The unit shading normal, pointing out of the object (not face-forwarded).
     pub normal: Vector,

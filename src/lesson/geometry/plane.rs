@@ -1,6 +1,6 @@
 //! The course's `Plane`: the horizontal plane y = `y`, limited to |x|, |z| < `limit`, with u = x and v = z
-//! (a texture's `scaling` turns these world units into texture repeats). Tilt or move it with a node
-//! transform; its u/v stay attached to it.
+//! (a bitmap's tile size or a checker's scaling turns these world units into texture repeats). Tilt or move
+//! it with a node transform; its u/v stay attached to it.
 
 use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::lesson::math::Vector;

@@ -8,7 +8,7 @@ use crate::lesson::math::{OrthonormalBasis, Vector};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{RECURSION_SAFETY_CAP, Scene};
-use crate::lesson::shader::{PhotonScatter, casts_caustics, scatter_photon};
+use crate::lesson::shader::{PhotonScatter, is_caustic_caster, scatter_photon};
 use crate::lesson::spectral::{Band, bands};
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -101,7 +101,7 @@ impl Emitter {
         let spheres: Vec<Option<(Vector, f32)>> = scene
             .nodes
             .iter()
-            .filter(|node| casts_caustics(&*node.shader))
+            .filter(|node| is_caustic_caster(&*node.shader))
             .map(|node| node.bounds().map(|b| (b.center(), 0.5 * (b.max - b.min).length())))
             .collect();
         let mut cones = Vec::new();

@@ -19,7 +19,7 @@
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
-use super::{CausticCaster, IntoShader, PhotonScatter, Shader, casts_caustics, scatter_photon};
+use super::{CausticCaster, IntoShader, PhotonScatter, Shader, is_caustic_caster, scatter_photon};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::photon_map::strength;
@@ -198,15 +198,17 @@ impl Shader for Layered {
 
     /// A caustic caster when one of its layers is.
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        self.layers.iter().any(|layer| casts_caustics(&*layer.shader)).then_some(self as &dyn CausticCaster)
+        self.layers.iter().any(|layer| is_caustic_caster(&*layer.shader)).then_some(self as &dyn CausticCaster)
     }
 
     /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a
-    /// textured Lambert under a faint reflection, the floor's texture. A layer's blend texture is not
-    /// considered: it says how much of the layer shows (a Fresnel blend reads no u/v at all), not what
-    /// colour the surface has.
+    /// textured Lambert under a faint reflection, the floor's texture. Where no layer's shader reads a
+    /// texture, the first blend texture, from the bottom up, that reads u/v ([`Texture::reads_uv`]): a
+    /// pattern painted with a checker as a layer's blend shows the checker's coordinates, and a glass
+    /// blended by the Fresnel texture, which reads no u/v, names none.
     fn texture(&self) -> Option<&dyn Texture> {
-        self.layers.iter().find_map(|layer| layer.shader.texture())
+        let blend = || self.layers.iter().filter_map(|layer| layer.blend_tex.as_deref()).find(|t| t.reads_uv());
+        self.layers.iter().find_map(|layer| layer.shader.texture()).or_else(blend)
     }
 }
 

@@ -64,8 +64,11 @@ pub enum PhotonScatter {
 ///   (where a photon goes next, as `shade` sends its rays) and returns itself from
 ///   [`Shader::caustic_caster`], so that the lights aim photons at it. Every other surface keeps the
 ///   default, `None`: photons land on it, and a diffuse shader finds them in its light loop;
-/// - a shader whose colour depends on the ray's wavelength (a dispersive refraction, or a layer holding one)
-///   returns `true` from [`Shader::is_dispersive`], so that the renderer traces wavelengths for its scene;
+/// - **a shader that reads `ray.wavelength` must return `true` from [`Shader::is_dispersive`]** (a dispersive
+///   refraction, or a layer holding one): only then does the renderer trace wavelengths for its scene.
+///   Otherwise every ray's wavelength is `None` and the shader renders as in white light; the end-of-run
+///   report names a shader it catches at this ([`crate::lesson::diagnostics`]). A shader whose texture
+///   ([`Shader::texture`]) depends on the wavelength is dispersive by default;
 /// - a shader whose colour comes from a texture returns it from [`Shader::texture`], so that `--view uv`
 ///   shows the coordinates that texture looks up; the default, `None`, shows the surface's own u/v;
 /// - [`Shader::name`] names it in the ray tree, its type's name by default.
@@ -80,10 +83,17 @@ pub trait Shader: Any + Send + Sync {
         None
     }
 
-    /// Whether the result depends on the ray's wavelength (a dispersive refraction, or a layer holding one).
-    /// The renderer traces wavelengths separately only for scenes where some shader says so.
+    /// Whether the result depends on the ray's wavelength, `ray.wavelength` (a dispersive refraction, a layer
+    /// holding one). The renderer traces wavelengths only for scenes where some shader says so, and splits a
+    /// hero-wavelength path only where it hits one: **a shader that reads `ray.wavelength` must return
+    /// `true`**, or it is traced in white light (`ray.wavelength` is `None`) and shows nothing of the
+    /// spectrum. The renderer cannot see the read: after a render it tries each shader that says `false` at
+    /// one point of its node, in white light and at two wavelengths, and the end-of-run report names one that
+    /// gives them different colours ([`crate::lesson::diagnostics::undeclared_dispersion`]). By default,
+    /// whether the texture this shader names ([`Shader::texture`]) depends on the wavelength
+    /// ([`Texture::is_dispersive`]).
     fn is_dispersive(&self) -> bool {
-        false
+        self.texture().is_some_and(|t| t.is_dispersive())
     }
 
     /// The texture this shader reads its colour from at the hit's u/v, if any. `--view uv` shows the
@@ -108,9 +118,17 @@ pub trait CausticCaster {
     fn scatter_photon(&self, ray: &Ray, info: &IntersectionInfo, rng: &mut Rng) -> PhotonScatter;
 }
 
-/// Whether `shader` makes its object a caustic caster, which the lights aim photons at.
-pub fn casts_caustics(shader: &dyn Shader) -> bool {
+/// Whether `shader` makes its object a caustic caster, which the lights aim photons at (whether a scene has
+/// one that a light shines on is [`crate::lesson::scene::Scene::can_have_caustics`]).
+pub fn is_caustic_caster(shader: &dyn Shader) -> bool {
     shader.caustic_caster().is_some()
+}
+
+/// The old name of [`is_caustic_caster`].
+#[deprecated(note = "renamed `is_caustic_caster`: whether the shader's surface sends photons on (a scene's question \
+                     is `Scene::can_have_caustics`)")]
+pub fn casts_caustics(shader: &dyn Shader) -> bool {
+    is_caustic_caster(shader)
 }
 
 /// What a photon does where it hits a surface with `shader`: what its caustic caster says, or, on a surface

@@ -1,5 +1,6 @@
 //! Bitmap textures as the course's program reads them (slide "Bitmap текстури"): the hit's u/v, divided
-//! by the texture's `scaling`, pick one texel of the image: no filtering between texels.
+//! by the texture's tile size (the course's `scaling`), pick one texel of the image: no filtering between
+//! texels.
 
 use crate::lesson::bitmap::{Bitmap, Wrap};
 use crate::lesson::color::Color;
@@ -24,7 +25,7 @@ pub fn texture_color(texture: &dyn Texture, ray: &Ray, info: &IntersectionInfo) 
     match (texture as &dyn Any).downcast_ref::<BitmapTexture>() {
         Some(bitmap) => {
             let (u, v) = info.uv();
-            texel(&bitmap.bitmap, u / bitmap.scaling, v / bitmap.scaling, bitmap.wrap)
+            texel(&bitmap.bitmap, u / bitmap.tile_size, v / bitmap.tile_size, bitmap.wrap)
         }
         None => texture.get_tex_color(ray, info),
     }

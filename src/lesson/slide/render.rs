@@ -12,7 +12,7 @@ use super::{Slides, raytrace};
 use crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
-use crate::lesson::diagnostics::Problems;
+use crate::lesson::diagnostics::{Problems, undeclared_dispersion};
 use crate::lesson::error::Result;
 use crate::lesson::frame::Frame;
 use crate::lesson::ray::Ray;
@@ -50,8 +50,10 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
         }
         counters.add(&pass_counters);
     }
+    let elapsed = start.elapsed();
+    counters.problems.undeclared_dispersion = undeclared_dispersion(scene, &camera, settings.width, settings.height);
     let stats = RenderStats {
-        elapsed: start.elapsed(),
+        elapsed,
         threads: pool.current_num_threads(),
         warnings: Problems::report(&counters, scene),
         counters,

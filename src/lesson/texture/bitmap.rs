@@ -1,7 +1,11 @@
 //! `BitmapTexture` (slide "Bitmap текстури"): a diffuse texture read from an image file. The hit's u/v are
-//! divided by `scaling` (the course's convention: one copy of the image per `scaling` units of u/v, so a
-//! plane whose u/v are world coordinates gets one tile per `scaling` world units), then wrapped in each
-//! direction and filtered.
+//! divided by `tile_size` (one copy of the image per `tile_size` units of u/v, so a plane whose u/v are
+//! world coordinates gets one tile per `tile_size` world units), then wrapped in each direction and
+//! filtered.
+//!
+//! Deviation from the course: its program and its scene files call the tile size `scaling`. The workbook
+//! names it for what it is, because a checker's `scaling` ([`super::CheckerTexture`]) multiplies u/v
+//! instead; a scene file's `scaling` is read as the tile size, unchanged.
 
 use super::Texture;
 use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
@@ -12,14 +16,14 @@ use crate::lesson::ray::Ray;
 use std::path::Path;
 use std::sync::Arc;
 
-/// A diffuse texture read from an image (slide "Bitmap текстури"): the hit's u/v, divided by `scaling`, pick
-/// its colour.
+/// A diffuse texture read from an image (slide "Bitmap текстури"): the hit's u/v, divided by `tile_size`,
+/// pick its colour.
 #[derive(Clone, Debug)]
 pub struct BitmapTexture {
     /// The image, in an `Arc` so that several textures can share it.
     pub bitmap: Arc<Bitmap>,
-    /// Texture units per copy of the image.
-    pub scaling: f32,
+    /// Units of u/v per copy of the image (the course's `scaling`): larger values make the image larger.
+    pub tile_size: f32,
     /// How a colour is read between texel centres: nearest or bilinear.
     pub filter: Filter,
     /// Wrapping of u and of v.
@@ -29,15 +33,22 @@ pub struct BitmapTexture {
 impl BitmapTexture {
     /// A bilinear, repeating texture of the image, one copy per unit of u/v.
     pub fn new(bitmap: Arc<Bitmap>) -> BitmapTexture {
-        BitmapTexture { bitmap, scaling: 1.0, filter: Filter::Bilinear, wrap: (Wrap::Repeat, Wrap::Repeat) }
+        BitmapTexture { bitmap, tile_size: 1.0, filter: Filter::Bilinear, wrap: (Wrap::Repeat, Wrap::Repeat) }
     }
     /// Loads the image at `path`.
     pub fn load(path: &Path) -> Result<BitmapTexture> {
         Ok(BitmapTexture::new(Arc::new(Bitmap::load(path)?)))
     }
-    /// The same texture with one copy of the image per `scaling` units of u/v (larger values make it larger).
+    /// The same texture with one copy of the image per `tile_size` units of u/v (larger values make it
+    /// larger).
+    pub fn with_tile_size(self, tile_size: f32) -> BitmapTexture {
+        BitmapTexture { tile_size, ..self }
+    }
+    /// The old name of [`BitmapTexture::with_tile_size`] (the course's `scaling`), the same number.
+    #[deprecated(note = "renamed `with_tile_size`, the same number: units of u/v per copy of the image (a checker's \
+                         `scaling` multiplies u/v instead)")]
     pub fn with_scaling(self, scaling: f32) -> BitmapTexture {
-        BitmapTexture { scaling, ..self }
+        self.with_tile_size(scaling)
     }
     /// The same texture read with `filter`.
     pub fn with_filter(self, filter: Filter) -> BitmapTexture {
@@ -56,9 +67,9 @@ impl Texture for BitmapTexture {
         self.bitmap.sample(u, v, self.filter, self.wrap)
     }
 
-    /// The surface's u/v divided by `scaling`: one copy of the image per unit.
+    /// The surface's u/v divided by `tile_size`: one copy of the image per unit.
     #[inline]
     fn lookup_uv(&self, (u, v): (f32, f32)) -> (f32, f32) {
-        (u / self.scaling, v / self.scaling)
+        (u / self.tile_size, v / self.tile_size)
     }
 }

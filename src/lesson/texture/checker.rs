@@ -1,5 +1,6 @@
 //! `CheckerTexture`: two colours alternating in squares of 1 / `scaling` texture units (the course's first
-//! procedural texture, kept for comparison with bitmaps).
+//! procedural texture, kept for comparison with bitmaps). Its `scaling` multiplies u/v, as "scaling" does
+//! everywhere in the workbook; a bitmap's tile size divides them ([`super::BitmapTexture::tile_size`]).
 
 use super::Texture;
 use crate::lesson::color::Color;
@@ -14,7 +15,8 @@ pub struct CheckerTexture {
     pub color1: Color,
     /// The colour of the other squares (linear RGB).
     pub color2: Color,
-    /// Squares per texture unit.
+    /// Squares per unit of u/v: what u/v are multiplied by (on a plane, `1.0 / 20.0` gives squares of 20
+    /// units). A scene file's `scaling` is 5 times this (its squares are 5 / `scaling` units wide).
     pub scaling: f32,
 }
 

@@ -68,4 +68,9 @@ impl Texture for Fresnel {
     fn is_dispersive(&self) -> bool {
         self.ior.is_dispersive()
     }
+
+    /// The reflectance depends on the angle alone.
+    fn reads_uv(&self) -> bool {
+        false
+    }
 }

@@ -28,8 +28,17 @@ pub trait Texture: Any + Send + Sync {
         uv
     }
 
+    /// Whether the colour depends on the surface's u/v at all: `true` by default; `false` for a texture of
+    /// the angle alone (the Fresnel texture), which `--view uv` then does not name as the source of a
+    /// layered surface's coordinates.
+    fn reads_uv(&self) -> bool {
+        true
+    }
+
     /// Whether the colour depends on the ray's wavelength (a dispersive Fresnel texture), so that the
-    /// renderer must trace wavelengths separately.
+    /// renderer must trace wavelengths separately: **a texture that reads `ray.wavelength` must return
+    /// `true`**, as a shader must ([`crate::lesson::shader::Shader::is_dispersive`], which asks the texture
+    /// the shader names; a `Layered` shader asks its blend textures).
     fn is_dispersive(&self) -> bool {
         false
     }
