@@ -134,7 +134,7 @@ impl Problems {
 }
 
 /// How many probe rays across, and how many down, [`undeclared_dispersion`] aims over the picture.
-const PROBE_RAYS: u32 = 16;
+pub const PROBE_RAYS: u32 = 16;
 
 /// The random stream of [`undeclared_dispersion`]'s probes, the same for each of their wavelengths.
 const PROBE_KEY: u64 = 0x5052_4f42_4500_0000;

@@ -331,7 +331,8 @@ fn the_uv_view_shows_the_coordinates_the_texture_looks_up() {
     painted.add_layer(Lambert::new(Color::gray(0.2)), Color::WHITE, None);
     painted.add_layer(Lambert::new(Color::gray(0.8)), Color::WHITE, Some(Arc::new(checker)));
     type Mapping = fn((f32, f32)) -> (f32, f32);
-    /// A case's name, its shader, the uv the view should show (from the hit's), and the texture it names.
+    // A case: its name, the floor's shader, how its texture maps u/v (`None`: it shows the surface's own),
+    // and the words of the scale text that name where the view's u/v come from.
     type Case = (&'static str, Arc<dyn Shader>, Option<Mapping>, &'static str);
     let cases: [Case; 7] = [
         ("bitmap", Arc::new(Lambert::new(tiles())), Some(|(u, v)| (u / TILE, v / TILE)), "(BitmapTexture)"),
