@@ -1,6 +1,6 @@
 //! The grader: each exercise's facts (see [`facts`]), then the picture of the workbook's example that uses
-//! it, and a verdict per exercise. Shared by the report (`tests/grade.rs`) and the grader's own tests
-//! (`tests/grader.rs`), which hand it wrong or blank functions and pretend pictures.
+//! it, and a verdict per exercise. Shared by the report (`exercises/tests/grade.rs`) and the grader's own tests
+//! (`exercises/tests/grader.rs`), which hand it wrong or blank functions and pretend pictures.
 
 #![allow(dead_code)] // each test binary uses its own part of this module
 
