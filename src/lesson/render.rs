@@ -337,7 +337,9 @@ impl<'a> RenderJob<'a> {
     /// ([`undeclared_dispersion`]).
     pub fn stats(&self, elapsed: Duration, threads: usize, mut counters: Counters) -> RenderStats {
         let (w, h) = (self.settings.width, self.settings.height);
-        counters.problems.undeclared_dispersion = undeclared_dispersion(&self.scene, &self.camera, w, h);
+        let hits = |scene: &Scene, ray: &Ray| scene.intersects(ray, f32::INFINITY);
+        let trace = |scene: &Scene, rng, ray: &Ray| TraceContext::new(scene, rng).raytrace(ray);
+        counters.problems.undeclared_dispersion = undeclared_dispersion(&self.scene, &self.camera, w, h, hits, trace);
         RenderStats {
             elapsed,
             threads,

@@ -8,7 +8,7 @@
 
 use super::dispersion::{self, Pass};
 use super::photon_mapping::PhotonMap;
-use super::{Slides, raytrace};
+use super::{Slides, model_transform, raytrace};
 use crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
@@ -51,7 +51,14 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
         counters.add(&pass_counters);
     }
     let elapsed = start.elapsed();
-    counters.problems.undeclared_dispersion = undeclared_dispersion(scene, &camera, settings.width, settings.height);
+    let (w, h) = (settings.width, settings.height);
+    let hits = |scene: &Scene, ray: &Ray| model_transform::closest_hit(&scene.nodes, ray).is_some();
+    let trace = |scene: &Scene, rng, ray: &Ray| {
+        let mut ctx = TraceContext::new(scene, rng);
+        ctx.slides = Some(&slides);
+        raytrace(&mut ctx, ray)
+    };
+    counters.problems.undeclared_dispersion = undeclared_dispersion(scene, &camera, w, h, hits, trace);
     let stats = RenderStats {
         elapsed,
         threads: pool.current_num_threads(),
