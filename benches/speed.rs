@@ -18,7 +18,7 @@
 //!   with other work slows both builds alike. Each figure is the median over the rounds.
 //! - CPU time is that of the child process (`getrusage(RUSAGE_CHILDREN)`, user plus system), wall time is
 //!   the clock around it, and rays are read from the example's summary line
-//!   (`NAME: WxH, S spp, T s, N threads, R M rays, X Mrays/s -> PATH`), the only output this relies on.
+//!   (`NAME: WxH, S spp, T s, N thread(s), R M rays, X Mrays/s -> PATH`), the only output this relies on.
 //!   Rays per CPU second compare the builds even where one traces more rays than the other.
 //! - With `--instructions WxH`, every example of both builds is also run once under `valgrind
 //!   --tool=callgrind` at that size on one thread, and the instructions of the whole process (loading,

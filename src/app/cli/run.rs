@@ -182,7 +182,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             plan => format!(" ({plan})"),
         };
         println!(
-            "{}: {}x{}, {} spp{}{}, {:.3} s, {} threads, {:.2} M rays, {:.2} Mrays/s -> {}",
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays, {:.2} Mrays/s -> {}",
             name,
             settings.width,
             settings.height,
@@ -191,6 +191,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             spectral,
             secs,
             stats.threads,
+            if stats.threads == 1 { "" } else { "s" },
             rays as f64 * 1e-6,
             rays as f64 * 1e-6 / secs.max(1e-9),
             output.display()
