@@ -33,6 +33,12 @@
 //! picture is the same bit for bit and `--exhaustive` still traces every one of their rays. A student's
 //! N-ray shader traces N rays at the camera ray's hit, 2 per shading point down to the split depth and 1
 //! below it: at most `N * 2^(SPLIT_DEPTH - 1)` rays per depth, a ray count linear in the depth limit.
+//!
+//! Nor does it cost the workbook's own nodes anything: where the renderer knows a node's shape and every
+//! shader of it ([`crate::lesson::dispatch`]), the point needs no budget (those shaders stay within theirs)
+//! and no check for rays that find their own surface (those shapes describe their hits exactly and those
+//! shaders spawn their rays with [`Ray::spawn`]), so `raytrace` keeps no shading point for it: its rays
+//! skip the bookkeeping, and only what they bring back NaN or infinite is noted ([`Shading`]).
 
 use crate::lesson::color::Color;
 use crate::lesson::diagnostics::{Problems, Source};
@@ -73,8 +79,23 @@ const SQRT_EPSILON: f32 = 3.452_669_8e-4;
 /// twice that is allowed, so that such a split is never taken for an average.
 const ROUNDING: f32 = 1.0 + 4.0 * f32::EPSILON;
 
-/// The shading point whose shader is running: its rays ([`Siblings`]) and where it is ([`Origin`]).
-/// `raytrace` keeps the one of the ray it shades, and gives it back when the shader is done.
+/// What `raytrace` keeps of the shaders running, innermost first: the shading point whose rays share a
+/// budget, whether the innermost shader is the workbook's own, and whether a ray came back NaN or infinite.
+#[derive(Clone, Copy)]
+pub(crate) struct Shading<'a> {
+    /// The innermost shading point whose rays are bounded: a student's shader's, a glossy mirror's, any
+    /// shader's on a shape the renderer does not know.
+    point: ShadingPoint<'a>,
+    /// Whether the innermost running shader is the workbook's own on one of its shapes (or the camera):
+    /// its rays skip the budget and the check for rays that find their own surface.
+    workbook: bool,
+    /// Whether a ray traced since the innermost shading point began came back NaN or infinite (then that
+    /// point did not make the first such colour).
+    non_finite_below: bool,
+}
+
+/// The shading point of a shader that may branch past its budget: its rays ([`Siblings`]) and where it is
+/// ([`Origin`]).
 #[derive(Clone, Copy)]
 pub(crate) struct ShadingPoint<'a> {
     siblings: Siblings,
@@ -91,8 +112,6 @@ pub(crate) struct Siblings {
     remaining: f32,
     /// How many were traced.
     traced: u32,
-    /// Whether one of them came back NaN or infinite (then this point did not make the first such colour).
-    non_finite: bool,
 }
 
 /// Where a shading point is, for the end-of-run check of rays that hit the surface they left.
@@ -111,16 +130,63 @@ impl Siblings {
     /// The rays of the shading point of a ray at `depth` with weight `weight`.
     #[inline(always)]
     fn new(depth: u32, weight: f32) -> Siblings {
-        Siblings { sum: Color::BLACK, remaining: split_factor(depth) * ROUNDING * weight, traced: 0, non_finite: false }
+        Siblings { sum: Color::BLACK, remaining: split_factor(depth) * ROUNDING * weight, traced: 0 }
+    }
+}
+
+impl<'a> Shading<'a> {
+    /// The camera's: its rays are never shared and start from no surface.
+    pub(crate) fn camera() -> Shading<'a> {
+        Shading {
+            point: ShadingPoint {
+                siblings: Siblings::new(0, 1.0),
+                origin: Origin { node: None, near: 0.0, normal: Vector::ZERO },
+            },
+            workbook: true,
+            non_finite_below: false,
+        }
+    }
+
+    /// A ray of the innermost shader with weight `weight` is about to be traced: `None` if it is to be, or
+    /// the mean of its traced siblings' colours if it is over its shading point's budget.
+    #[inline(always)]
+    pub(crate) fn share(&mut self, weight: f32) -> Option<Color> {
+        if self.workbook {
+            return None;
+        }
+        let s = &mut self.point.siblings;
+        s.remaining -= weight;
+        if s.traced == 0 || s.remaining >= 0.0 {
+            return None;
+        }
+        Some(s.sum / s.traced as f32)
+    }
+
+    /// A ray of the innermost shader was traced and brought back `color`.
+    #[inline(always)]
+    pub(crate) fn traced(&mut self, color: Color) {
+        if !self.workbook {
+            let s = &mut self.point.siblings;
+            s.traced += 1;
+            s.sum += color;
+        }
+        if !color.is_finite() {
+            self.non_finite_below = true;
+        }
+    }
+
+    /// One layer of the innermost shading point, seen by `ray`, begins: its rays get a budget of their own
+    /// and share no colour with the rays of the layers before it (a `Layered` shader traces no rays of its
+    /// own, so the point's own are not kept for after the layer).
+    #[inline(always)]
+    pub(crate) fn begin_layer(&mut self, ray: &Ray) {
+        if !self.workbook {
+            self.point.siblings = Siblings::new(ray.depth, ray.weight);
+        }
     }
 }
 
 impl<'a> ShadingPoint<'a> {
-    /// The camera: its rays are never shared.
-    pub(crate) fn camera() -> ShadingPoint<'a> {
-        ShadingPoint { siblings: Siblings::new(0, 1.0), origin: Origin { node: None, near: 0.0, normal: Vector::ZERO } }
-    }
-
     /// The hit `info` on `node` of `ray`.
     #[inline(always)]
     fn new(node: &'a Node, ray: &Ray, info: &IntersectionInfo) -> ShadingPoint<'a> {
@@ -132,35 +198,6 @@ impl<'a> ShadingPoint<'a> {
                 normal: info.geometric_normal,
             },
         }
-    }
-
-    /// A ray of this point with weight `weight` is about to be traced: `None` if it is to be, or the mean of
-    /// its traced siblings' colours if it is over the budget.
-    #[inline(always)]
-    pub(crate) fn share(&mut self, weight: f32) -> Option<Color> {
-        let s = &mut self.siblings;
-        s.remaining -= weight;
-        if s.traced == 0 || s.remaining >= 0.0 {
-            return None;
-        }
-        Some(s.sum / s.traced as f32)
-    }
-
-    /// A ray of this point was traced and brought back `color`.
-    #[inline(always)]
-    pub(crate) fn traced(&mut self, color: Color) {
-        let s = &mut self.siblings;
-        s.traced += 1;
-        s.sum += color;
-        s.non_finite |= !color.is_finite();
-    }
-
-    /// One layer of this point, seen by `ray`, begins: its rays get a budget of their own and share no
-    /// colour with the rays of the layers before it (a `Layered` shader traces no rays of its own, so the
-    /// point's own are not kept for after the layer).
-    #[inline(always)]
-    pub(crate) fn begin_layer(&mut self, ray: &Ray) {
-        self.siblings = Siblings { non_finite: self.siblings.non_finite, ..Siblings::new(ray.depth, ray.weight) };
     }
 
     /// Whether a ray of this point, `ray`, that hit `node` at `hit` found the surface it left again: the same
@@ -185,7 +222,8 @@ impl<'a> TraceContext<'a> {
     /// The colour the shader of `node` gives the hit `info` of `ray`, shaded as a shading point of its own
     /// (its rays bounded by its budget), and what went wrong there counted for the end-of-run report: a
     /// normal that was not of unit length as the geometry returned it (`unit_normal` false), a ray that
-    /// found the surface it left, a NaN or infinite colour made here.
+    /// found the surface it left, a NaN or infinite colour made here. A node of the workbook's own shape and
+    /// shaders, unwatched, is shaded through its prepared material and keeps no shading point.
     #[inline(always)]
     pub(crate) fn shade_hit<const WATCHED: bool>(
         &mut self,
@@ -195,23 +233,41 @@ impl<'a> TraceContext<'a> {
         unit_normal: bool,
     ) -> Color {
         let scene = self.scene;
+        if !WATCHED && let Some(prepared) = scene.preparation().filter(|p| p.is_workbook_node(i)) {
+            let outer = (self.shading.workbook, self.shading.non_finite_below);
+            (self.shading.workbook, self.shading.non_finite_below) = (true, false);
+            let color = prepared.shade(i, ray, info, self);
+            self.note_non_finite(i, color);
+            (self.shading.workbook, self.shading.non_finite_below) = outer;
+            return color;
+        }
         let node = &scene.nodes[i];
         if !unit_normal {
             self.note(i, |p| &mut p.bad_normals);
         }
-        if self.shading.finds_its_own_surface(node, ray, info) {
+        if !self.shading.workbook && self.shading.point.finds_its_own_surface(node, ray, info) {
             self.note(i, |p| &mut p.self_hits);
         }
-        let outer = std::mem::replace(&mut self.shading, ShadingPoint::new(node, ray, info));
+        let outer = std::mem::replace(
+            &mut self.shading,
+            Shading { point: ShadingPoint::new(node, ray, info), workbook: false, non_finite_below: false },
+        );
         let color = match scene.preparation() {
             Some(prepared) if !WATCHED => prepared.shade(i, ray, info, self),
             _ => node.shader.shade(ray, info, self),
         };
-        let point = std::mem::replace(&mut self.shading, outer);
-        if !color.is_finite() && !point.siblings.non_finite {
+        self.note_non_finite(i, color);
+        self.shading = outer;
+        color
+    }
+
+    /// The shader of node `i` gave `color`: a NaN or infinite colour is counted against the node if no ray
+    /// it traced brought one back.
+    #[inline(always)]
+    fn note_non_finite(&mut self, i: usize, color: Color) {
+        if !color.is_finite() && !self.shading.non_finite_below {
             Problems::count(&mut self.counters.problems.non_finite, Source::Node(i));
         }
-        color
     }
 
     /// Counts one more problem of the kind `what` picks for `node` (kept out of `raytrace`'s code: it is

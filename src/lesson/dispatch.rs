@@ -50,6 +50,11 @@ impl Shape {
         }
     }
 
+    /// Whether this is one of the workbook's own shapes.
+    pub(crate) fn is_workbook(&self) -> bool {
+        !matches!(self, Shape::Dyn)
+    }
+
     /// [`Node::hit`] of `node`, whose shape this is.
     #[inline(always)]
     pub(crate) fn hit(&self, node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {
@@ -70,7 +75,9 @@ impl Shape {
         }
     }
 
-    /// The surface of `node` at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length.
+    /// The surface of `node` at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length:
+    /// the workbook's sphere and plane describe theirs so by construction (a normalised offset from the
+    /// centre, the plane's axis), so only another shape's is checked.
     #[inline(always)]
     pub(crate) fn surface(&self, node: &Node, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
         let info = match self {
@@ -78,7 +85,7 @@ impl Shape {
             Shape::Plane(plane) => plane.surface(ray, hit),
             Shape::Dyn => return node.checked_surface(ray, hit),
         };
-        info.map(|info| (info, Node::is_unit_normal(&info)))
+        info.map(|info| (info, true))
     }
 }
 
@@ -138,22 +145,31 @@ impl Tex {
     }
 }
 
-/// A node's shader: one of the workbook's, or any other through its trait object.
+/// A node's shader: one of the workbook's single shaders, one of its `Layered` shaders made of them, or
+/// any other through its trait object.
 #[derive(Clone)]
 pub(crate) enum Material {
+    Single(Surface),
+    Layered(Box<[MaterialLayer]>, bool),
+}
+
+/// A shader that is not made of layers: one of the workbook's, or any other (a glossy mirror, a `Layered`
+/// inside a layer, a student's) through its trait object. A `Layered` material's layers are these, so that
+/// the whole Layered loop is one piece of code, with no call back into the enum for each layer.
+#[derive(Clone)]
+pub(crate) enum Surface {
     Lambert(Lambert, Tex),
     Phong(Phong, Tex),
     /// A perfect mirror (a glossy one is `Dyn`: its many rays cost far more than the call).
     Mirror(Reflection, Tex),
     Refraction(Refraction),
-    Layered(Box<[MaterialLayer]>, bool),
     Dyn(Arc<dyn Shader>),
 }
 
-/// One layer of a [`Material::Layered`]: its material and how opaque it is.
+/// One layer of a [`Material::Layered`]: its shader and how opaque it is.
 #[derive(Clone)]
 pub(crate) struct MaterialLayer {
-    material: Material,
+    surface: Surface,
     blend: Color,
     blend_tex: Option<Tex>,
 }
@@ -161,33 +177,59 @@ pub(crate) struct MaterialLayer {
 impl Material {
     /// The material of `shader`.
     pub(crate) fn of(shader: &Arc<dyn Shader>) -> Material {
-        let any = &**shader as &dyn Any;
-        if let Some(lambert) = any.downcast_ref::<Lambert>() {
-            Material::Lambert(lambert.clone(), Tex::of(&lambert.color))
-        } else if let Some(phong) = any.downcast_ref::<Phong>() {
-            Material::Phong(phong.clone(), Tex::of(&phong.color))
-        } else if let Some(mirror) = any.downcast_ref::<Reflection>().filter(|m| m.glossiness >= 1.0) {
-            Material::Mirror(mirror.clone(), Tex::of(&mirror.multiplier))
-        } else if let Some(refraction) = any.downcast_ref::<Refraction>() {
-            Material::Refraction(*refraction)
-        } else if let Some(layered) = any.downcast_ref::<Layered>() {
-            let layers = layered.layers().iter().map(MaterialLayer::of).collect();
-            Material::Layered(layers, layered.shades_every_layer())
-        } else {
-            Material::Dyn(shader.clone())
+        match (&**shader as &dyn Any).downcast_ref::<Layered>() {
+            Some(layered) => {
+                let layers = layered.layers().iter().map(MaterialLayer::of).collect();
+                Material::Layered(layers, layered.shades_every_layer())
+            }
+            None => Material::Single(Surface::of(shader)),
+        }
+    }
+
+    /// Whether every shader of it is one of the workbook's own (its textures may be a student's).
+    pub(crate) fn is_workbook(&self) -> bool {
+        match self {
+            Material::Single(surface) => !matches!(surface, Surface::Dyn(_)),
+            Material::Layered(layers, _) => layers.iter().all(|l| !matches!(l.surface, Surface::Dyn(_))),
         }
     }
 
     /// The colour the shader gives the hit, as its [`Shader::shade`] would.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
-            Material::Lambert(lambert, color) => lambert.shade_with(color.get(ray, info), ray, info, ctx),
-            Material::Phong(phong, color) => phong.shade_with(color.get(ray, info), ray, info, ctx),
-            Material::Mirror(mirror, multiplier) => mirror.shade_with(multiplier.get(ray, info), ray, info, ctx),
-            Material::Refraction(refraction) => refraction.shade(ray, info, ctx),
+            Material::Single(surface) => surface.shade(ray, info, ctx),
             Material::Layered(layers, every_layer) => shade_layers(layers, *every_layer, ray, info, ctx),
-            Material::Dyn(shader) => shader.shade(ray, info, ctx),
+        }
+    }
+}
+
+impl Surface {
+    /// The surface shader of `shader`: one of the workbook's, or its trait object.
+    fn of(shader: &Arc<dyn Shader>) -> Surface {
+        let any = &**shader as &dyn Any;
+        if let Some(lambert) = any.downcast_ref::<Lambert>() {
+            Surface::Lambert(lambert.clone(), Tex::of(&lambert.color))
+        } else if let Some(phong) = any.downcast_ref::<Phong>() {
+            Surface::Phong(phong.clone(), Tex::of(&phong.color))
+        } else if let Some(mirror) = any.downcast_ref::<Reflection>().filter(|m| m.glossiness >= 1.0) {
+            Surface::Mirror(mirror.clone(), Tex::of(&mirror.multiplier))
+        } else if let Some(refraction) = any.downcast_ref::<Refraction>() {
+            Surface::Refraction(*refraction)
+        } else {
+            Surface::Dyn(shader.clone())
+        }
+    }
+
+    /// The colour the shader gives the hit, as its [`Shader::shade`] would.
+    #[inline(always)]
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        match self {
+            Surface::Lambert(lambert, color) => lambert.shade_with(color.get(ray, info), ray, info, ctx),
+            Surface::Phong(phong, color) => phong.shade_with(color.get(ray, info), ray, info, ctx),
+            Surface::Mirror(mirror, multiplier) => mirror.shade_perfect(multiplier.get(ray, info), ray, info, ctx),
+            Surface::Refraction(refraction) => refraction.shade(ray, info, ctx),
+            Surface::Dyn(shader) => shader.shade(ray, info, ctx),
         }
     }
 }
@@ -195,7 +237,7 @@ impl Material {
 impl MaterialLayer {
     fn of(layer: &Layer) -> MaterialLayer {
         MaterialLayer {
-            material: Material::of(&layer.shader),
+            surface: Surface::of(&layer.shader),
             blend: layer.blend,
             blend_tex: layer.blend_tex.as_ref().map(Tex::of_texture),
         }
@@ -213,7 +255,7 @@ impl LayerShading for MaterialLayer {
     #[inline(always)]
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color {
         ctx.begin_layer(ray);
-        self.material.shade(ray, info, ctx) * weight
+        self.surface.shade(ray, info, ctx) * weight
     }
 }
 

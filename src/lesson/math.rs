@@ -13,7 +13,7 @@ pub type Vector = Vec3A;
 /// Returns `n` or `-n`, whichever faces the incoming direction `i`, so that `dot(i, faceforward(n, i)) <= 0`
 /// (slide "Ориентация на повърхнините"). Used by Lambert, Phong and Reflection, **not** by Refraction, which
 /// must know whether the ray is entering or leaving.
-#[inline]
+#[inline(always)]
 pub fn faceforward(n: Vector, i: Vector) -> Vector {
     exercise!(faceforward(n, i));
     if n.dot(i) > 0.0 { -n } else { n }
@@ -21,7 +21,7 @@ pub fn faceforward(n: Vector, i: Vector) -> Vector {
 
 /// Mirror reflection of the incoming direction `i` about the normal `n` (slide "Reflect"):
 /// `i + 2 * dot(-i, n) * n`. Works whichever side `n` faces; keeps the length of `i`.
-#[inline]
+#[inline(always)]
 pub fn reflect(i: Vector, n: Vector) -> Vector {
     i + 2.0 * (-i).dot(n) * n
 }
@@ -34,7 +34,7 @@ pub fn reflect(i: Vector, n: Vector) -> Vector {
 /// Deviation from the slide: the slide's comment says `ior = eta2 / eta1` but its formula (and its caller,
 /// which passes `1 / ior` when entering) uses the incoming-over-outgoing ratio; the name here says what the
 /// formula needs.
-#[inline]
+#[inline(always)]
 pub fn refract(i: Vector, n: Vector, eta1_over_eta2: f32) -> Option<Vector> {
     exercise!(refract(i, n, eta1_over_eta2));
     let eta = eta1_over_eta2;
@@ -51,7 +51,7 @@ pub fn refract(i: Vector, n: Vector, eta1_over_eta2: f32) -> Option<Vector> {
 /// `1 / ior` when the ray enters the object). Under total internal reflection it returns 1, which the
 /// slide's formula does not: there, the cosine of the *transmitted* angle is used when leaving the denser
 /// medium, as Schlick prescribes, so a Fresnel glass never loses energy.
-#[inline]
+#[inline(always)]
 pub fn fresnel(i: Vector, n: Vector, eta1_over_eta2: f32) -> f32 {
     exercise!(fresnel(i, n, eta1_over_eta2));
     let eta = eta1_over_eta2;
@@ -158,7 +158,7 @@ pub fn max_abs(v: Vector) -> f32 {
 /// the floats around `q` (multiplying by a power of two is exact), the smallest positive float is that
 /// spacing for zero and subnormal coordinates, and adding at least one spacing moves a float by at least one
 /// representable value whichever way it rounds.
-#[inline]
+#[inline(always)]
 pub fn offset_ray_origin(p: Vector, n: Vector, error: f32) -> Vector {
     let d = n.abs().element_sum() * error;
     let q = p + d * n;

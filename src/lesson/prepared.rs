@@ -31,6 +31,9 @@ pub(crate) struct Preparation {
     materials: Vec<Material>,
     /// Whether each node's shader is dispersive ([`Shader::is_dispersive`]), asked once.
     dispersive: Vec<bool>,
+    /// Whether each node is the workbook's own shape under the workbook's own shaders
+    /// ([`Preparation::is_workbook_node`]).
+    workbook: Vec<bool>,
     /// Which nodes it was made from.
     made_from: Vec<NodeIdentity>,
 }
@@ -57,10 +60,13 @@ impl NodeIdentity {
 impl Preparation {
     /// Prepares `nodes` for tracing.
     pub(crate) fn new(nodes: &[Node]) -> Preparation {
+        let shapes: Vec<Shape> = nodes.iter().map(Shape::of).collect();
+        let materials: Vec<Material> = nodes.iter().map(|n| Material::of(&n.shader)).collect();
         Preparation {
             node_tree: NodeTree::build(nodes),
-            shapes: nodes.iter().map(Shape::of).collect(),
-            materials: nodes.iter().map(|n| Material::of(&n.shader)).collect(),
+            workbook: shapes.iter().zip(&materials).map(|(s, m)| s.is_workbook() && m.is_workbook()).collect(),
+            shapes,
+            materials,
             dispersive: nodes.iter().map(|n| n.shader.is_dispersive()).collect(),
             made_from: nodes.iter().map(NodeIdentity::of).collect(),
         }
@@ -75,6 +81,15 @@ impl Preparation {
             Some(tree) => tree.nearest_of(&shapes, ray),
             None => nearest_of(&shapes, ray),
         }
+    }
+
+    /// Whether node `i` is one of the workbook's own shapes under the workbook's own shaders (a texture of
+    /// a student's may colour it): its hits are described exactly, with unit normals, and its shaders spawn
+    /// their rays with [`crate::lesson::ray::Ray::spawn`] within their budget, so `raytrace` shades it
+    /// without the bookkeeping of [`crate::lesson::branching`].
+    #[inline(always)]
+    pub(crate) fn is_workbook_node(&self, i: usize) -> bool {
+        self.workbook[i]
     }
 
     /// Whether node `i`'s shader is dispersive.

@@ -44,7 +44,7 @@ impl Ray {
     /// rays and darken the picture the more rays are averaged). It starts at the hit point
     /// moved off the surface, to the side `dir` goes to, by the hit's error bound. This replaces the slides'
     /// `info.ip + 1e-6 * n`, which fails for scenes much larger or smaller than the course's.
-    #[inline]
+    #[inline(always)]
     pub fn spawn(&self, info: &IntersectionInfo, dir: Vector, attenuation: f32) -> Ray {
         Ray {
             start: spawn_point(info.ip, info.geometric_normal, info.error, dir),
@@ -58,7 +58,7 @@ impl Ray {
 
 /// Where a ray leaving the surface point `p` (normal `n`, error bound `error`) in direction `dir` starts:
 /// `p` moved off the surface, to the side `dir` goes to, by the error bound.
-#[inline]
+#[inline(always)]
 pub fn spawn_point(p: Vector, n: Vector, error: f32, dir: Vector) -> Vector {
     offset_ray_origin(p, if dir.dot(n) >= 0.0 { n } else { -n }, error)
 }

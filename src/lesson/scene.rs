@@ -12,7 +12,7 @@
 //! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
 //! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
 
-use crate::lesson::branching::ShadingPoint;
+use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::diagnostics::{Problems, Source};
@@ -371,8 +371,8 @@ pub struct TraceContext<'a> {
     /// Set when the slides' reading renders (`--slide`, [`crate::lesson::slide`]): `raytrace`, `visible` and
     /// the light loop then run the slides' own versions, for the workbook's shaders and a student's alike.
     pub(crate) slides: Option<&'a Slides>,
-    /// The shading point whose shader is running, which bounds its rays ([`crate::lesson::branching`]).
-    pub(crate) shading: ShadingPoint<'a>,
+    /// What `raytrace` keeps of the shaders running, which bounds their rays ([`crate::lesson::branching`]).
+    pub(crate) shading: Shading<'a>,
 }
 
 impl<'a> TraceContext<'a> {
@@ -386,14 +386,14 @@ impl<'a> TraceContext<'a> {
             observer: None,
             met_dispersion: false,
             slides: None,
-            shading: ShadingPoint::camera(),
+            shading: Shading::camera(),
         }
     }
 
     /// Makes the context ready for the camera rays of another pixel (the renderer keeps one context for a
     /// row of pixels, each with its own random stream): their shading point starts afresh.
     pub(crate) fn restart_pixel(&mut self) {
-        self.shading = ShadingPoint::camera();
+        self.shading = Shading::camera();
     }
 
     /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the

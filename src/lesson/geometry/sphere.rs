@@ -60,7 +60,7 @@ impl Sphere {
 
 impl Sphere {
     /// The surface at the hit at ray parameter `t`.
-    #[inline]
+    #[inline(always)]
     fn info(&self, ray: &Ray, t: f32) -> IntersectionInfo {
         // Re-project the hit onto the sphere: the error is then that of the projection, not of t.
         let d = ray.at(t) - self.center;

@@ -26,7 +26,7 @@ impl Lambert {
 
     /// The surface's colour at the hit when its diffuse colour there is `diffuse`: `diffuse` times the light
     /// the point receives.
-    #[inline]
+    #[inline(always)]
     pub fn shade_with(&self, diffuse: Color, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let n = faceforward(info.normal, ray.dir);
         diffuse * diffuse_light(ctx, info, n)

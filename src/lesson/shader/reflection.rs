@@ -113,10 +113,24 @@ impl Reflection {
 
     /// The perfect mirror ray (the slide's Reflection v0.2): one ray in the mirror direction, one level
     /// deeper, and what it brings back times the mirror's colour `m`.
-    #[inline]
+    #[inline(always)]
     fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
         let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
         ctx.raytrace(&new_ray) * m
+    }
+
+    /// A perfect mirror's colour at the hit (its glossiness 1) when its colour there is `multiplier`:
+    /// [`Reflection::shade_with`] without the glossy cone, for the renderer's static dispatch.
+    #[inline(always)]
+    pub(crate) fn shade_perfect(
+        &self,
+        multiplier: Color,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        ctx: &mut TraceContext,
+    ) -> Color {
+        let n = faceforward(info.normal, ray.dir);
+        self.trace_mirror(ray, info, n, ctx, multiplier)
     }
 
     /// The mirror's colour at the hit when its colour there is `multiplier` (what [`Shader::shade`]

@@ -44,7 +44,7 @@ impl Refraction {
 
     /// The unit direction of the refracted ray (for the ray's wavelength), or `None` under total internal
     /// reflection.
-    #[inline]
+    #[inline(always)]
     fn refracted(&self, ray: &Ray, info: &IntersectionInfo) -> Option<Vector> {
         let entering = info.normal.dot(ray.dir) < 0.0;
         let ior = self.ior.at(ray.wavelength);
@@ -55,7 +55,7 @@ impl Refraction {
 }
 
 impl Shader for Refraction {
-    #[inline]
+    #[inline(always)]
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         let Some(dir) = self.refracted(ray, info) else {
             return Color::BLACK; // total internal reflection

@@ -96,6 +96,7 @@ impl Ior {
     }
 
     /// The index at `wavelength` (nanometres); rays without a wavelength (white light) see n_d.
+    #[inline(always)]
     pub fn at(&self, wavelength: Option<f32>) -> f32 {
         let um = wavelength.unwrap_or(LAMBDA_D) * 1e-3;
         match *self {

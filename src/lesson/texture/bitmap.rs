@@ -61,7 +61,7 @@ impl BitmapTexture {
 }
 
 impl Texture for BitmapTexture {
-    #[inline]
+    #[inline(always)]
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
         let (u, v) = self.lookup_uv(info.uv());
         self.bitmap.sample(u, v, self.filter, self.wrap)

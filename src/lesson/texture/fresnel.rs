@@ -43,7 +43,7 @@ impl Fresnel {
         Fresnel { ior, mode }
     }
     /// The reflectance for this ray and hit (the slide's `getTexColor`, as a number).
-    #[inline]
+    #[inline(always)]
     pub fn reflectance(&self, ray: &Ray, info: &IntersectionInfo) -> f32 {
         // Entering, light goes from air (1) into the object (ior); leaving, the other way round: the slide's
         // "eta flipped when inside". The test is the one `Refraction` makes, so the two always agree on which
