@@ -45,6 +45,7 @@ use crate::lesson::diagnostics::{Problems, Source};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::Node;
+use crate::lesson::prepared::Preparation;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 use std::collections::BTreeMap;
@@ -233,14 +234,6 @@ impl<'a> TraceContext<'a> {
         unit_normal: bool,
     ) -> Color {
         let scene = self.scene;
-        if !WATCHED && let Some(prepared) = scene.preparation().filter(|p| p.is_workbook_node(i)) {
-            let outer = (self.shading.workbook, self.shading.non_finite_below);
-            (self.shading.workbook, self.shading.non_finite_below) = (true, false);
-            let color = prepared.shade(i, ray, info, self);
-            self.note_non_finite(i, color);
-            (self.shading.workbook, self.shading.non_finite_below) = outer;
-            return color;
-        }
         let node = &scene.nodes[i];
         if !unit_normal {
             self.note(i, |p| &mut p.bad_normals);
@@ -258,6 +251,26 @@ impl<'a> TraceContext<'a> {
         };
         self.note_non_finite(i, color);
         self.shading = outer;
+        color
+    }
+
+    /// The colour of the hit `info` of `ray` on node `i`, one of the workbook's own shapes under the
+    /// workbook's own shaders ([`Preparation::workbook_surface`]): shaded through its prepared material,
+    /// with no shading point of its own; a NaN or infinite colour it makes is counted against it.
+    #[inline(always)]
+    pub(crate) fn shade_workbook_hit(
+        &mut self,
+        prepared: &Preparation,
+        i: usize,
+        ray: &Ray,
+        info: &IntersectionInfo,
+    ) -> Color {
+        self.met_dispersion |= ray.wavelength.is_some() && prepared.is_dispersive(i);
+        let outer = (self.shading.workbook, self.shading.non_finite_below);
+        (self.shading.workbook, self.shading.non_finite_below) = (true, false);
+        let color = prepared.shade(i, ray, info, self);
+        self.note_non_finite(i, color);
+        (self.shading.workbook, self.shading.non_finite_below) = outer;
         color
     }
 

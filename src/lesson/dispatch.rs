@@ -89,6 +89,19 @@ impl Shape {
     }
 }
 
+impl Shape {
+    /// The surface at `hit` if this is one of the workbook's own shapes (which find theirs always); `None`
+    /// for another.
+    #[inline(always)]
+    pub(crate) fn workbook_surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        match self {
+            Shape::Sphere(sphere) => sphere.surface(ray, hit),
+            Shape::Plane(plane) => plane.surface(ray, hit),
+            Shape::Dyn => None,
+        }
+    }
+}
+
 /// [`Node::hit`], kept out of the loop over the workbook's own shapes.
 #[inline(never)]
 fn node_hit(node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {

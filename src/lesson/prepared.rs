@@ -83,13 +83,17 @@ impl Preparation {
         }
     }
 
-    /// Whether node `i` is one of the workbook's own shapes under the workbook's own shaders (a texture of
-    /// a student's may colour it): its hits are described exactly, with unit normals, and its shaders spawn
-    /// their rays with [`crate::lesson::ray::Ray::spawn`] within their budget, so `raytrace` shades it
-    /// without the bookkeeping of [`crate::lesson::branching`].
+    /// The surface of node `i` at `hit` if it is one of the workbook's own shapes under the workbook's own
+    /// shaders (a texture of a student's may colour it): its hits are described exactly, with unit normals,
+    /// and its shaders spawn their rays with [`crate::lesson::ray::Ray::spawn`] within their budget, so
+    /// `raytrace` shades it without the bookkeeping of [`crate::lesson::branching`]. `None` for any other
+    /// node.
     #[inline(always)]
-    pub(crate) fn is_workbook_node(&self, i: usize) -> bool {
-        self.workbook[i]
+    pub(crate) fn workbook_surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
+        if !self.workbook[i] {
+            return None;
+        }
+        self.shapes[i].workbook_surface(ray, hit)
     }
 
     /// Whether node `i`'s shader is dispersive.

@@ -446,16 +446,14 @@ impl<'a> TraceContext<'a> {
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
         let scene = self.scene;
-        let (color, stop) = match scene.nearest_hit_index(ray).and_then(|(hit, i)| scene.surface(i, ray, &hit)) {
-            Some((info, i, unit_normal)) => {
-                let node = &scene.nodes[i];
-                if WATCHED {
-                    self.observe(|o| o.ray_hits(scene, node, &info));
-                }
-                self.met_dispersion |= ray.wavelength.is_some()
-                    && scene.preparation().map_or_else(|| node.shader.is_dispersive(), |p| p.is_dispersive(i));
-                (self.shade_hit::<WATCHED>(i, ray, &info, unit_normal), None)
-            }
+        let (color, stop) = match scene.nearest_hit_index(ray) {
+            Some((hit, i)) => match scene.preparation() {
+                Some(prepared) if !WATCHED => match prepared.workbook_surface(i, ray, &hit) {
+                    Some(info) => (self.shade_workbook_hit(prepared, i, ray, &info), None),
+                    None => self.shade_any_hit::<WATCHED>(i, ray, &hit),
+                },
+                _ => self.shade_any_hit::<WATCHED>(i, ray, &hit),
+            },
             None => (self.environment(ray), Some(Stop::Missed)),
         };
         self.shading.traced(color);
@@ -463,6 +461,25 @@ impl<'a> TraceContext<'a> {
             self.observe(|o| o.ray_ends(color, stop));
         }
         color
+    }
+
+    /// The colour of the hit `hit` of `ray` on node `i`, any node, with its surface described as its shape
+    /// does ([`Scene::surface`]), told to the observer when `WATCHED`: what the shader makes of it, or what
+    /// the environment shows if the shape cannot find the hit again. Kept out of the unwatched `raytrace`,
+    /// whose usual case is a node of the workbook's own.
+    #[inline(never)]
+    fn shade_any_hit<const WATCHED: bool>(&mut self, i: usize, ray: &Ray, hit: &Hit) -> (Color, Option<Stop>) {
+        let scene = self.scene;
+        let Some((info, i, unit_normal)) = scene.surface(i, ray, hit) else {
+            return (self.environment(ray), Some(Stop::Missed));
+        };
+        let node = &scene.nodes[i];
+        if WATCHED {
+            self.observe(|o| o.ray_hits(scene, node, &info));
+        }
+        self.met_dispersion |= ray.wavelength.is_some()
+            && scene.preparation().map_or_else(|| node.shader.is_dispersive(), |p| p.is_dispersive(i));
+        (self.shade_hit::<WATCHED>(i, ray, &info, unit_normal), None)
     }
 
     /// What a ray that hit nothing sees: the environment, or black.
