@@ -30,12 +30,12 @@ use std::sync::Arc;
 
 /// A node's geometry: one of the workbook's shapes without a transform, or anything else (another shape,
 /// or any shape under a transform) through the node itself.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub(crate) enum Shape {
     Sphere(Sphere),
     Plane(Plane),
     /// The node's own [`Node::hit`] and the like: its geometry's trait object, through its transform.
-    Dyn,
+    Dyn(Box<Node>),
 }
 
 impl Shape {
@@ -43,53 +43,51 @@ impl Shape {
     pub(crate) fn of(node: &Node) -> Shape {
         let any = &*node.geometry as &dyn Any;
         match (any.downcast_ref::<Sphere>(), any.downcast_ref::<Plane>()) {
-            _ if node.transform.is_some() => Shape::Dyn,
+            _ if node.transform.is_some() => Shape::Dyn(Box::new(node.clone())),
             (Some(sphere), _) => Shape::Sphere(*sphere),
             (_, Some(plane)) => Shape::Plane(*plane),
-            _ => Shape::Dyn,
+            _ => Shape::Dyn(Box::new(node.clone())),
         }
     }
 
     /// Whether this is one of the workbook's own shapes.
     pub(crate) fn is_workbook(&self) -> bool {
-        !matches!(self, Shape::Dyn)
+        !matches!(self, Shape::Dyn(_))
     }
 
-    /// [`Node::hit`] of `node`, whose shape this is.
+    /// [`Node::hit`] of the node whose shape this is.
     #[inline(always)]
-    pub(crate) fn hit(&self, node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {
+    pub(crate) fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         match self {
             Shape::Sphere(sphere) => sphere.hit(ray, t_max),
             Shape::Plane(plane) => plane.hit(ray, t_max),
-            Shape::Dyn => node_hit(node, ray, t_max),
+            Shape::Dyn(node) => node_hit(node, ray, t_max),
         }
     }
 
-    /// [`Node::intersects`] of `node`, whose shape this is.
+    /// [`Node::intersects`] of the node whose shape this is.
     #[inline(always)]
-    pub(crate) fn intersects(&self, node: &Node, ray: &Ray, t_max: f32) -> bool {
+    pub(crate) fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         match self {
             Shape::Sphere(sphere) => sphere.intersects(ray, t_max),
             Shape::Plane(plane) => plane.intersects(ray, t_max),
-            Shape::Dyn => node_intersects(node, ray, t_max),
+            Shape::Dyn(node) => node_intersects(node, ray, t_max),
         }
     }
 
-    /// The surface of `node` at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length:
-    /// the workbook's sphere and plane describe theirs so by construction (a normalised offset from the
-    /// centre, the plane's axis), so only another shape's is checked.
+    /// The surface at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length: the
+    /// workbook's sphere and plane describe theirs so by construction (a normalised offset from the centre,
+    /// the plane's axis), so only another shape's is checked.
     #[inline(always)]
-    pub(crate) fn surface(&self, node: &Node, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
+    pub(crate) fn surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
         let info = match self {
             Shape::Sphere(sphere) => sphere.surface(ray, hit),
             Shape::Plane(plane) => plane.surface(ray, hit),
-            Shape::Dyn => return node.checked_surface(ray, hit),
+            Shape::Dyn(node) => return node.checked_surface(ray, hit),
         };
         info.map(|info| (info, true))
     }
-}
 
-impl Shape {
     /// The surface at `hit` if this is one of the workbook's own shapes (which find theirs always); `None`
     /// for another.
     #[inline(always)]
@@ -97,7 +95,7 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.surface(ray, hit),
             Shape::Plane(plane) => plane.surface(ray, hit),
-            Shape::Dyn => None,
+            Shape::Dyn(_) => None,
         }
     }
 }

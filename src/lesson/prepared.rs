@@ -25,17 +25,23 @@ use crate::lesson::{scene::Scene, shader::Shader};
 pub(crate) struct Preparation {
     /// The BVH over the nodes, if there are enough of them for one to pay.
     pub(crate) node_tree: Option<NodeTree>,
-    /// Each node's shape, in the order of the nodes.
-    shapes: Vec<Shape>,
-    /// Each node's shader, in the order of the nodes.
-    materials: Vec<Material>,
-    /// Whether each node's shader is dispersive ([`Shader::is_dispersive`]), asked once.
-    dispersive: Vec<bool>,
-    /// Whether each node is the workbook's own shape under the workbook's own shaders
-    /// ([`Preparation::is_workbook_node`]).
-    workbook: Vec<bool>,
+    /// Each node as the renderer traces it, in the order of the nodes.
+    nodes: Vec<PreparedNode>,
     /// Which nodes it was made from.
     made_from: Vec<NodeIdentity>,
+}
+
+/// One node as the renderer traces it.
+struct PreparedNode {
+    /// Its shape.
+    shape: Shape,
+    /// Its shader.
+    material: Material,
+    /// Whether its shader is dispersive ([`Shader::is_dispersive`]), asked once.
+    dispersive: bool,
+    /// Whether it is the workbook's own shape under the workbook's own shaders
+    /// ([`Preparation::workbook_surface`]).
+    workbook: bool,
 }
 
 /// A node as a preparation knows it: the addresses of its geometry and shader (only compared, never
@@ -60,26 +66,26 @@ impl NodeIdentity {
 impl Preparation {
     /// Prepares `nodes` for tracing.
     pub(crate) fn new(nodes: &[Node]) -> Preparation {
-        let shapes: Vec<Shape> = nodes.iter().map(Shape::of).collect();
-        let materials: Vec<Material> = nodes.iter().map(|n| Material::of(&n.shader)).collect();
+        let prepare = |node: &Node| {
+            let (shape, material) = (Shape::of(node), Material::of(&node.shader));
+            let workbook = shape.is_workbook() && material.is_workbook();
+            PreparedNode { shape, material, dispersive: node.shader.is_dispersive(), workbook }
+        };
         Preparation {
             node_tree: NodeTree::build(nodes),
-            workbook: shapes.iter().zip(&materials).map(|(s, m)| s.is_workbook() && m.is_workbook()).collect(),
-            shapes,
-            materials,
-            dispersive: nodes.iter().map(|n| n.shader.is_dispersive()).collect(),
+            nodes: nodes.iter().map(prepare).collect(),
             made_from: nodes.iter().map(NodeIdentity::of).collect(),
         }
     }
 
-    /// The nearest of `nodes` (the ones it was made from) hit by the ray: where, and the node's index.
+    /// The nearest of the nodes hit by the ray: where, and the node's index.
     #[inline(always)]
-    pub(crate) fn nearest_hit(&self, nodes: &[Node], ray: &Ray) -> Option<(Hit, usize)> {
+    pub(crate) fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, usize)> {
         beyond!(StaticDispatch);
-        let shapes = PreparedNodes { shapes: &self.shapes, nodes, ray };
+        let nodes = PreparedNodes { nodes: &self.nodes, ray };
         match &self.node_tree {
-            Some(tree) => tree.nearest_of(&shapes, ray),
-            None => nearest_of(&shapes, ray),
+            Some(tree) => tree.nearest_of(&nodes, ray),
+            None => nearest_of(&nodes, ray),
         }
     }
 
@@ -90,32 +96,33 @@ impl Preparation {
     /// node.
     #[inline(always)]
     pub(crate) fn workbook_surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        if !self.workbook[i] {
+        let node = &self.nodes[i];
+        if !node.workbook {
             return None;
         }
-        self.shapes[i].workbook_surface(ray, hit)
+        node.shape.workbook_surface(ray, hit)
     }
 
     /// Whether node `i`'s shader is dispersive.
     #[inline(always)]
     pub(crate) fn is_dispersive(&self, i: usize) -> bool {
-        self.dispersive[i]
+        self.nodes[i].dispersive
     }
 
-    /// The surface of node `i` of `nodes` at `hit`, and whether its normal is of unit length.
+    /// The surface of node `i` at `hit`, and whether its normal is of unit length.
     #[inline(always)]
-    pub(crate) fn surface(&self, nodes: &[Node], i: usize, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
-        self.shapes[i].surface(&nodes[i], ray, hit)
+    pub(crate) fn surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
+        self.nodes[i].shape.surface(ray, hit)
     }
 
-    /// Whether any of `nodes` is hit by the ray before `t_max`.
+    /// Whether any of the nodes is hit by the ray before `t_max`.
     #[inline(always)]
-    pub(crate) fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
+    pub(crate) fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         beyond!(StaticDispatch);
-        let shapes = PreparedNodes { shapes: &self.shapes, nodes, ray };
+        let nodes = PreparedNodes { nodes: &self.nodes, ray };
         match &self.node_tree {
-            Some(tree) => tree.any_of(&shapes, ray, t_max),
-            None => any_of(&shapes, t_max),
+            Some(tree) => tree.any_of(&nodes, ray, t_max),
+            None => any_of(&nodes, t_max),
         }
     }
 
@@ -123,7 +130,7 @@ impl Preparation {
     #[inline(always)]
     pub(crate) fn shade(&self, i: usize, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         beyond!(StaticDispatch);
-        self.materials[i].shade(ray, info, ctx)
+        self.nodes[i].material.shade(ray, info, ctx)
     }
 
     /// Whether this preparation was made from exactly `nodes`.
@@ -133,23 +140,22 @@ impl Preparation {
     }
 }
 
-/// The prepared shapes of a scene's nodes, tested for one ray.
+/// The prepared nodes of a scene, tested for one ray.
 struct PreparedNodes<'a> {
-    shapes: &'a [Shape],
-    nodes: &'a [Node],
+    nodes: &'a [PreparedNode],
     ray: &'a Ray,
 }
 
 impl NodeHits for PreparedNodes<'_> {
     fn count(&self) -> usize {
-        self.shapes.len()
+        self.nodes.len()
     }
     #[inline(always)]
     fn hit(&self, i: usize, t_max: f32) -> Option<Hit> {
-        self.shapes[i].hit(&self.nodes[i], self.ray, t_max)
+        self.nodes[i].shape.hit(self.ray, t_max)
     }
     #[inline(always)]
     fn intersects(&self, i: usize, t_max: f32) -> bool {
-        self.shapes[i].intersects(&self.nodes[i], self.ray, t_max)
+        self.nodes[i].shape.intersects(self.ray, t_max)
     }
 }

@@ -251,7 +251,7 @@ impl Scene {
     fn nearest_hit_index(&self, ray: &Ray) -> Option<(Hit, usize)> {
         beyond!(TwoPhaseHit);
         match &self.preparation {
-            Some(p) => p.nearest_hit(&self.nodes, ray),
+            Some(p) => p.nearest_hit(ray),
             None => nearest_of(&(&self.nodes[..], ray), ray),
         }
     }
@@ -277,7 +277,7 @@ impl Scene {
     #[inline(always)]
     fn surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, usize, bool)> {
         let (info, unit_normal) = match &self.preparation {
-            Some(p) => p.surface(&self.nodes, i, ray, hit)?,
+            Some(p) => p.surface(i, ray, hit)?,
             None => self.nodes[i].checked_surface(ray, hit)?,
         };
         Some((info, i, unit_normal))
@@ -287,7 +287,7 @@ impl Scene {
     #[inline(always)]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         match &self.preparation {
-            Some(p) => p.intersects(&self.nodes, ray, t_max),
+            Some(p) => p.intersects(ray, t_max),
             None => self.nodes.iter().any(|node| node.intersects(ray, t_max)),
         }
     }
