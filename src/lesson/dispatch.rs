@@ -16,7 +16,9 @@
 //! the one Layered loop, [`shade_layers`](crate::lesson::shader::Layered)), so a picture is the same bit for bit either way.
 
 use crate::lesson::color::Color;
+use crate::lesson::environment::{ConstantEnvironment, CubemapEnvironment, Environment, SphericalEnvironment};
 use crate::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo, Plane, Sphere};
+use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::{Scene, TraceContext};
@@ -110,6 +112,48 @@ fn node_hit(node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {
 #[inline(never)]
 fn node_intersects(node: &Node, ray: &Ray, t_max: f32) -> bool {
     node.intersects(ray, t_max)
+}
+
+/// What a ray that hits nothing sees: one of the workbook's environments, black, or any other through its
+/// trait object.
+#[derive(Clone)]
+pub(crate) enum Sky {
+    Black,
+    Constant(ConstantEnvironment),
+    Cubemap(CubemapEnvironment),
+    Spherical(SphericalEnvironment),
+    Dyn(Arc<dyn Environment>),
+}
+
+impl Sky {
+    /// The sky of a scene whose environment is `environment`.
+    pub(crate) fn of(environment: &Option<Arc<dyn Environment>>) -> Sky {
+        let Some(environment) = environment else {
+            return Sky::Black;
+        };
+        let any = &**environment as &dyn Any;
+        if let Some(constant) = any.downcast_ref::<ConstantEnvironment>() {
+            Sky::Constant(*constant)
+        } else if let Some(cubemap) = any.downcast_ref::<CubemapEnvironment>() {
+            Sky::Cubemap(cubemap.clone())
+        } else if let Some(spherical) = any.downcast_ref::<SphericalEnvironment>() {
+            Sky::Spherical(spherical.clone())
+        } else {
+            Sky::Dyn(environment.clone())
+        }
+    }
+
+    /// The colour seen in the direction `dir`, as the environment's [`Environment::get`] gives it.
+    #[inline(always)]
+    pub(crate) fn get(&self, dir: Vector) -> Color {
+        match self {
+            Sky::Black => Color::BLACK,
+            Sky::Constant(constant) => constant.get(dir),
+            Sky::Cubemap(cubemap) => cubemap.get(dir),
+            Sky::Spherical(spherical) => spherical.get(dir),
+            Sky::Dyn(environment) => environment.get(dir),
+        }
+    }
 }
 
 /// A texture, or the constant colour a shader has instead of one.

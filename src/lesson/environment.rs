@@ -67,6 +67,7 @@ pub trait Environment: Any + Send + Sync {
 pub struct ConstantEnvironment(pub Color);
 
 impl Environment for ConstantEnvironment {
+    #[inline(always)]
     fn get(&self, _dir: Vector) -> Color {
         self.0
     }
@@ -138,6 +139,7 @@ impl SphericalEnvironment {
 }
 
 impl Environment for SphericalEnvironment {
+    #[inline(always)]
     fn get(&self, dir: Vector) -> Color {
         let (u, v) = equirect_uv(dir);
         // Longitude goes round (repeat); latitude stops at the poles (clamp).
@@ -187,6 +189,7 @@ impl CubeFace {
 }
 
 /// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
+#[inline(always)]
 pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
     exercise!(cube_face_uv(dir));
     use CubeFace::*;
@@ -313,6 +316,7 @@ impl CubemapEnvironment {
 }
 
 impl Environment for CubemapEnvironment {
+    #[inline(always)]
     fn get(&self, dir: Vector) -> Color {
         let (face, u, v) = cube_face_uv(dir);
         // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.

@@ -50,7 +50,7 @@ pub struct Lighting {
 /// direction to the lamp and its irradiance before the cosine, and adds what it returns to the
 /// [`Lighting::highlights`]: the light that depends on where the lamp is (Phong's highlight). A shader that
 /// takes its light from here gets caustics without asking.
-#[inline]
+#[inline(always)]
 pub fn light_loop(
     ctx: &mut TraceContext,
     info: &IntersectionInfo,

@@ -293,7 +293,12 @@ pub(crate) fn nearest_of(nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize
 /// Whether any of `nodes` is hit before `t_max`, testing them in turn.
 #[inline(always)]
 pub(crate) fn any_of(nodes: &impl NodeHits, t_max: f32) -> bool {
-    (0..nodes.count()).any(|i| nodes.intersects(i, t_max))
+    for i in 0..nodes.count() {
+        if nodes.intersects(i, t_max) {
+            return true;
+        }
+    }
+    false
 }
 
 impl NodeTree {
@@ -325,7 +330,8 @@ impl NodeTree {
     }
 
     /// [`NodeTree::nearest_hit`] over `nodes`, tested for `ray`: where the nearest is hit, and its index.
-    #[inline]
+    /// Kept out of line: the loop over a few nodes, inlined into `raytrace`, stays small.
+    #[inline(never)]
     pub(crate) fn nearest_of(&self, nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize)> {
         beyond!(NodeTree);
         let mut closest = Closest::new(ray);
@@ -347,8 +353,9 @@ impl NodeTree {
         self.any_of(&(nodes, ray), ray, t_max)
     }
 
-    /// [`NodeTree::intersects`] over `nodes`, tested for `ray`.
-    #[inline]
+    /// [`NodeTree::intersects`] over `nodes`, tested for `ray`. Kept out of line, as
+    /// [`NodeTree::nearest_of`].
+    #[inline(never)]
     pub(crate) fn any_of(&self, nodes: &impl NodeHits, ray: &Ray, t_max: f32) -> bool {
         beyond!(NodeTree);
         if self.unbounded.iter().any(|&i| nodes.intersects(i as usize, t_max)) {

@@ -10,8 +10,10 @@
 //! same transform), so a scene changed after it was prepared is prepared again rather than traced wrongly.
 
 use crate::lesson::color::Color;
-use crate::lesson::dispatch::{Material, Shape};
+use crate::lesson::dispatch::{Material, Shape, Sky};
+use crate::lesson::environment::Environment;
 use crate::lesson::geometry::{Hit, IntersectionInfo};
+use crate::lesson::math::Vector;
 use crate::lesson::node::{Node, NodeHits, NodeTree, any_of, nearest_of};
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
@@ -27,8 +29,12 @@ pub(crate) struct Preparation {
     pub(crate) node_tree: Option<NodeTree>,
     /// Each node as the renderer traces it, in the order of the nodes.
     nodes: Vec<PreparedNode>,
+    /// What rays that hit nothing see.
+    sky: Sky,
     /// Which nodes it was made from.
     made_from: Vec<NodeIdentity>,
+    /// Which environment it was made from (its address, only compared, never followed).
+    made_with: Option<usize>,
 }
 
 /// One node as the renderer traces it.
@@ -64,8 +70,8 @@ impl NodeIdentity {
 }
 
 impl Preparation {
-    /// Prepares `nodes` for tracing.
-    pub(crate) fn new(nodes: &[Node]) -> Preparation {
+    /// Prepares `nodes` and `environment` for tracing.
+    pub(crate) fn new(nodes: &[Node], environment: &Option<Arc<dyn Environment>>) -> Preparation {
         let prepare = |node: &Node| {
             let (shape, material) = (Shape::of(node), Material::of(&node.shader));
             let workbook = shape.is_workbook() && material.is_workbook();
@@ -74,8 +80,17 @@ impl Preparation {
         Preparation {
             node_tree: NodeTree::build(nodes),
             nodes: nodes.iter().map(prepare).collect(),
+            sky: Sky::of(environment),
             made_from: nodes.iter().map(NodeIdentity::of).collect(),
+            made_with: environment_identity(environment),
         }
+    }
+
+    /// What a ray that hits nothing sees in the direction `dir`.
+    #[inline(always)]
+    pub(crate) fn sky(&self, dir: Vector) -> Color {
+        beyond!(StaticDispatch);
+        self.sky.get(dir)
     }
 
     /// The nearest of the nodes hit by the ray: where, and the node's index.
@@ -133,11 +148,17 @@ impl Preparation {
         self.nodes[i].material.shade(ray, info, ctx)
     }
 
-    /// Whether this preparation was made from exactly `nodes`.
-    pub(crate) fn describes(&self, nodes: &[Node]) -> bool {
+    /// Whether this preparation was made from exactly `nodes` and `environment`.
+    pub(crate) fn describes(&self, nodes: &[Node], environment: &Option<Arc<dyn Environment>>) -> bool {
         self.made_from.len() == nodes.len()
             && self.made_from.iter().zip(nodes).all(|(id, n)| *id == NodeIdentity::of(n))
+            && self.made_with == environment_identity(environment)
     }
+}
+
+/// An environment as a preparation knows it: its address, only compared, never followed.
+fn environment_identity(environment: &Option<Arc<dyn Environment>>) -> Option<usize> {
+    environment.as_ref().map(|e| Arc::as_ptr(e) as *const () as usize)
 }
 
 /// The prepared nodes of a scene, tested for one ray.

@@ -212,8 +212,11 @@ impl Scene {
     /// before both saves the second preparation.
     pub fn prepared(&self) -> Cow<'_, Scene> {
         match &self.preparation {
-            Some(p) if p.describes(&self.nodes) => Cow::Borrowed(self),
-            _ => Cow::Owned(Scene { preparation: Some(Arc::new(Preparation::new(&self.nodes))), ..self.clone() }),
+            Some(p) if p.describes(&self.nodes, &self.environment) => Cow::Borrowed(self),
+            _ => {
+                let preparation = Preparation::new(&self.nodes, &self.environment);
+                Cow::Owned(Scene { preparation: Some(Arc::new(preparation)), ..self.clone() })
+            }
         }
     }
 
@@ -483,12 +486,24 @@ impl<'a> TraceContext<'a> {
     }
 
     /// What a ray that hit nothing sees: the environment, or black.
+    #[inline(always)]
     fn environment(&mut self, ray: &Ray) -> Color {
-        let color = self.scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir));
+        let scene = self.scene;
+        let color = match scene.preparation() {
+            Some(prepared) => prepared.sky(ray.dir),
+            None => scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)),
+        };
         if !color.is_finite() {
-            Problems::count(&mut self.counters.problems.non_finite, Source::Environment);
+            self.note_environment_non_finite();
         }
         color
+    }
+
+    /// Counts an environment colour that was NaN or infinite (the rare path, out of line).
+    #[cold]
+    #[inline(never)]
+    fn note_environment_non_finite(&mut self) {
+        Problems::count(&mut self.counters.problems.non_finite, Source::Environment);
     }
 
     /// A ray not traced, for the reason `stop`: black.
@@ -520,7 +535,7 @@ impl<'a> TraceContext<'a> {
     }
 
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
-    #[inline]
+    #[inline(always)]
     pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
         if self.slides.is_some() {
             return slide::visible(self, from, to);

@@ -28,7 +28,7 @@ impl Geometry for Plane {
     }
 
     /// The ray parameter and the hit's x and z (its u/v); the rest is known from them.
-    #[inline]
+    #[inline(always)]
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         // A ray parallel to the plane (dir.y == 0) gives t = +-inf or NaN, and both fail this test.
         let t = (self.y - ray.start.y) / ray.dir.y;
@@ -42,7 +42,7 @@ impl Geometry for Plane {
         Some(Hit { distance: t, part: 0, coords: [ip.x, ip.z, 0.0] })
     }
 
-    #[inline]
+    #[inline(always)]
     fn surface(&self, _ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
         // The hit lies on the plane by definition: its y is the plane's, so only x and z carry rounding error.
         let [x, z, _] = hit.coords;
@@ -50,7 +50,7 @@ impl Geometry for Plane {
     }
 
     /// The first phase alone: a shadow ray needs no surface.
-    #[inline]
+    #[inline(always)]
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         self.hit(ray, t_max).is_some()
     }

@@ -30,7 +30,7 @@ impl Sphere {
     /// The discriminant is computed as r^2 - |f|^2 with f the offset from the centre to the ray's closest
     /// point (pbrt-v4, section 6.8.4), and the roots by the cancellation-free form, so that rays starting
     /// far away or right on the surface still get accurate parameters.
-    #[inline]
+    #[inline(always)]
     fn roots(&self, ray: &Ray) -> Option<(f32, f32)> {
         let oc = ray.start - self.center;
         let b = oc.dot(ray.dir);
@@ -88,19 +88,19 @@ impl Geometry for Sphere {
     }
 
     /// Only the ray parameter: the normal waits for the winner, and its u/v for a shader that reads them.
-    #[inline]
+    #[inline(always)]
     fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let (t0, t1) = self.roots(ray)?;
         let t = if t0 > 0.0 { t0 } else { t1 };
         (t > 0.0 && t < t_max).then_some(Hit::at(t))
     }
 
-    #[inline]
+    #[inline(always)]
     fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
         Some(self.info(ray, hit.distance))
     }
 
-    #[inline]
+    #[inline(always)]
     fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         self.roots(ray).is_some_and(|(t0, t1)| (t0 > 0.0 && t0 < t_max) || (t1 > 0.0 && t1 < t_max))
     }
