@@ -138,6 +138,7 @@ impl Bitmap {
 
     /// The colour at texture coordinates (u, v): u runs left to right and v top to bottom across the image,
     /// one image per unit; outside [0, 1) the `wrap` mode decides.
+    #[inline(always)]
     pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
         beyond!(TexelFilter);
         // The storage is chosen once per look-up, not once per texel.
@@ -158,9 +159,8 @@ impl Bitmap {
         texels: &[T],
         linear: impl Fn(T) -> Color,
     ) -> Color {
-        // NaN coordinates (a degenerate hit) read the first texel rather than index out of range.
-        let x = if u.is_finite() { u * self.size.0 } else { 0.0 };
-        let y = if v.is_finite() { v * self.size.1 } else { 0.0 };
+        // NaN coordinates (a degenerate hit) are read as the first texel's (see `Wrap::neighbours`).
+        let (x, y) = (u * self.size.0, v * self.size.1);
         let at = |i: usize, j: usize| linear(texels[j * self.width + i]);
         match filter {
             Filter::Nearest => {
@@ -183,11 +183,13 @@ impl Wrap {
     ///
     /// The usual case, two texels side by side inside the image, costs one comparison; `Repeat` wraps the
     /// first with one remainder; the rest is kept out of the look-up ([`Wrap::wrapped_pair`]). Coordinates
-    /// beyond 2^30 texels (where a float cannot tell neighbouring texels apart anyway) count as 2^30.
+    /// beyond 2^30 texels (where a float cannot tell neighbouring texels apart anyway) count as 2^30, and a
+    /// NaN (a degenerate hit) as -2^30, which every wrap takes to the first texel.
     #[inline(always)]
     fn neighbours(self, f: f32, n: usize) -> (usize, usize, f32) {
         const LIMIT: f32 = (1u32 << 30) as f32;
-        let f = f.clamp(-LIMIT, LIMIT);
+        // `max` and `min` return the other operand for a NaN: no NaN gets past them.
+        let f = f.max(-LIMIT).min(LIMIT);
         // `f as i32` rounds towards zero: one step down where that rounded up gives the floor.
         let i = f as i32;
         let i = i - ((i as f32) > f) as i32;
@@ -197,7 +199,9 @@ impl Wrap {
             return (i as usize, i as usize + 1, past);
         }
         if self == Wrap::Repeat {
-            let first = i.rem_euclid(n as i32) as u32;
+            // `i.rem_euclid(n)`, written out: the library's is not inlined here.
+            let r = i % n as i32;
+            let first = if r < 0 { r + n as i32 } else { r } as u32;
             return (first as usize, if first < last { first as usize + 1 } else { 0 }, past);
         }
         let (first, second) = self.wrapped_pair(i, n);
