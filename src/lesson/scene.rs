@@ -403,6 +403,7 @@ impl<'a> TraceContext<'a> {
     /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
     /// environment when nothing is hit; otherwise whatever the hit node's shader says. A ray over its shading
     /// point's budget is not traced and brings back its siblings' mean colour ([`crate::lesson::branching`]).
+    #[inline(always)]
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
         if self.slides.is_some() {
             return slide::raytrace(self, ray);
@@ -410,11 +411,16 @@ impl<'a> TraceContext<'a> {
         if self.observer.is_some() {
             return self.raytrace_watched(ray);
         }
+        self.raytrace_unwatched(ray)
+    }
+
+    /// `raytrace` of the default reading, with no observer: what every render but one pixel's runs.
+    #[inline(never)]
+    fn raytrace_unwatched(&mut self, ray: &Ray) -> Color {
         self.trace::<false>(ray)
     }
 
-    /// `raytrace` with an observer to tell: kept out of the unwatched one, which every render but one
-    /// pixel's runs.
+    /// `raytrace` with an observer to tell: kept out of the unwatched one.
     #[inline(never)]
     fn raytrace_watched(&mut self, ray: &Ray) -> Color {
         self.trace::<true>(ray)
