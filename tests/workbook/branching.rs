@@ -78,10 +78,10 @@ fn a_full_weight_average_traces_rays_linear_in_the_depth() {
     let (_, stats) = rendered(&student(false), 1);
     let c = &stats.counters;
     let camera_rays = c.rays_by_depth[0];
-    // N rays at the camera ray's hit, SECONDARY_SPLIT per shading point down to the split depth, one below
-    // it: no depth holds more than N * SECONDARY_SPLIT^(SPLIT_DEPTH - 1) rays per camera ray, and every
+    // N rays at the camera ray's hit, SECONDARY_SPLIT per shading point of a ray down to the split depth,
+    // one below it: no depth holds more than N * SECONDARY_SPLIT^SPLIT_DEPTH rays per camera ray, and every
     // depth below the split depth holds no more rays than the one above it.
-    let widest = (N * SECONDARY_SPLIT.pow(SPLIT_DEPTH - 1)) as u64;
+    let widest = (N * SECONDARY_SPLIT.pow(SPLIT_DEPTH)) as u64;
     for depth in 1..=DEPTH as usize {
         assert!(c.rays_by_depth[depth] <= widest * camera_rays, "depth {depth}: {:?}", c.rays_by_depth);
     }
@@ -166,4 +166,43 @@ fn a_split_of_the_weight_is_traced_at_every_depth() {
     let (_, stats) = rendered(&scene, 1);
     assert_eq!(stats.counters.shared_rays, 0, "{:?}", stats.counters);
     assert!(stats.counters.rays_by_depth[8] > 0);
+}
+
+/// A floor and a ceiling 20 apart, each the workbook's own plane, untransformed, coloured by `shader`: the
+/// renderer knows the shape, and takes the workbook's shortcut for its own shaders on it only when every
+/// shader of the node is its own.
+fn floor_and_ceiling(shader: impl Fn() -> Arc<dyn Shader>) -> Scene {
+    let mut scene = Scene::new(Camera::look_at(Vector::ZERO, Vector::new(3.0, -4.0, 10.0), 70.0));
+    for y in [-10.0, 10.0] {
+        scene.add(Node::new(Plane::new(y, 1000.0), shader()));
+    }
+    scene.environment = Some(Arc::new(Stripes));
+    scene.max_depth = DEPTH;
+    scene
+}
+
+#[test]
+fn a_students_average_on_the_workbooks_own_shape_is_bounded_too() {
+    let glossy = || TintedGlossy { tint: TINT, glossiness: GLOSSINESS, n: N };
+    let layered = || {
+        let mut layered = Layered::new();
+        layered.add_layer(glossy(), Color::WHITE, None);
+        Arc::new(layered) as Arc<dyn Shader>
+    };
+    let widest = (N * SECONDARY_SPLIT.pow(SPLIT_DEPTH)) as u64;
+    for (what, scene) in [
+        ("alone", floor_and_ceiling(|| Arc::new(glossy()))),
+        ("as a layer of the workbook's Layered", floor_and_ceiling(layered)),
+    ] {
+        let (_, stats) = rendered(&scene, 1);
+        let c = &stats.counters;
+        assert!(c.shared_rays > 0, "{what}: the student's shader was never bounded: {c:?}");
+        for depth in 1..=DEPTH as usize {
+            assert!(c.rays_by_depth[depth] <= widest * c.rays_by_depth[0], "{what}, depth {depth}: {c:?}");
+        }
+        // Floor and ceiling lose few rays: the widest depth comes within a quarter of the bound (unbounded,
+        // it would hold N * 16^(DEPTH - 1) rays per camera ray).
+        let most = c.rays_by_depth[1..=DEPTH as usize].iter().max().unwrap();
+        assert!(4 * most >= 3 * widest * c.rays_by_depth[0], "{what}: {c:?}");
+    }
 }

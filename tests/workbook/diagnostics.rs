@@ -112,6 +112,29 @@ fn a_nan_colour_is_counted_and_named_where_it_was_made() {
     assert!(line.contains("made by the shader of pillar (Broken)") && !line.contains("Sphere"), "{line}");
 }
 
+/// A texture that gives NaN, as `0.0 / 0.0` in a student's formula would.
+struct BrokenTexture;
+
+impl Texture for BrokenTexture {
+    fn get_tex_color(&self, _: &Ray, _: &IntersectionInfo) -> Color {
+        Color::gray(f32::NAN)
+    }
+}
+
+#[test]
+fn a_nan_made_on_the_workbooks_own_sphere_is_named_there() {
+    // A Lambert sphere coloured by a student's texture is one of the workbook's own nodes (its shape and
+    // shader are the workbook's), which the renderer shades without a shading point of its own: the NaN
+    // it makes is still counted against it, and not against the mirror ball that sees it.
+    let mut scene = scene(Cylinder, Reflection::new(0.9));
+    scene.nodes[0] =
+        Node::new(Sphere::new(Vector::new(-25.0, 0.0, 0.0), 8.0), Lambert::new(BrokenTexture)).named("ball");
+    scene.lights.push(PointLight::new(Vector::new(0.0, 100.0, -100.0), Color::WHITE, 20000.0));
+    let stats = rendered(&scene);
+    let line = line(&stats, "NaN or infinite");
+    assert!(line.contains("made by the shader of ball (Lambert)") && !line.contains("Sphere"), "{line}");
+}
+
 /// The colour of a ray's wavelength as a student's shader or texture might make it: blue at the short end of
 /// the visible spectrum, red at the long end, white in white light.
 fn spectrum(ray: &Ray) -> Color {
