@@ -188,7 +188,9 @@ impl Wrap {
     #[inline(always)]
     fn neighbours(self, f: f32, n: usize) -> (usize, usize, f32) {
         const LIMIT: f32 = (1u32 << 30) as f32;
-        // `max` and `min` return the other operand for a NaN: no NaN gets past them.
+        // `max` and `min` return the other operand for a NaN: no NaN gets past them (`clamp` would pass it
+        // on, and the conversion below would then have to test for it).
+        #[allow(clippy::manual_clamp)]
         let f = f.max(-LIMIT).min(LIMIT);
         // `f as i32` rounds towards zero: one step down where that rounded up gives the floor.
         let i = f as i32;

@@ -38,7 +38,7 @@
 //! shader of it ([`crate::lesson::dispatch`]), the point needs no budget (those shaders stay within theirs)
 //! and no check for rays that find their own surface (those shapes describe their hits exactly and those
 //! shaders spawn their rays with [`Ray::spawn`]), so `raytrace` keeps no shading point for it: its rays
-//! skip the bookkeeping, and only what they bring back NaN or infinite is noted ([`Shading`]).
+//! skip the bookkeeping, and only what they bring back NaN or infinite is noted (`Shading`).
 
 use crate::lesson::color::Color;
 use crate::lesson::diagnostics::{Problems, Source};

@@ -1,15 +1,22 @@
-//! Static dispatch of the workbook's own shapes, shaders and textures (beyond the slides).
+//! Static dispatch of the workbook's own shapes, shaders, textures and environments (beyond the slides).
 //!
-//! The slides call a node's geometry, shader and texture through their interfaces (virtual calls in the
-//! course's C++, trait objects here): every hit costs a few indirect calls, and none of them can be
-//! inlined into its caller, so the sphere test, the Layered loop and the texel look-up each run as a
-//! separate function with its own set-up. When a scene is prepared ([`Scene::prepared`]), each node's
-//! shape and shader are looked at once: the workbook's own types (`Sphere`, `Plane`; `Lambert`, `Phong`,
-//! a perfect `Reflection`, `Refraction`, `Layered` of these; `BitmapTexture`, `CheckerTexture`, `Fresnel`)
-//! become the cases of an enum, which `raytrace` matches on, so the compiler sees the whole shading of a
-//! hit as one piece of code. Anything else (a student's own shape, shader or texture, a glossy mirror,
-//! a mesh) is one more case, `Dyn`, called through its trait object as before: a new type works the moment
-//! it compiles. pbrt-v4 dispatches its closed set of shapes and materials the same way.
+//! The slides call a node's geometry, shader and texture, and the environment, through their interfaces
+//! (virtual calls in the course's C++, trait objects here): every hit costs a few indirect calls, and none
+//! of them can be inlined into its caller, so the sphere test, the Layered loop and the texel look-up each
+//! run as a separate function with its own set-up. When a scene is prepared ([`Scene::prepared`]), each
+//! node's shape and shader, and the environment, are looked at once: the workbook's own types (`Sphere`,
+//! `Plane`; `Lambert`, `Phong`, a perfect `Reflection`, `Refraction`, a `Layered` of these;
+//! `BitmapTexture`, `CheckerTexture`, `Fresnel`; the cube map, spherical and constant environments) become
+//! the cases of an enum, which `raytrace` matches on, so the compiler sees the whole shading of a hit as
+//! one piece of code. Anything else (a student's own shape, shader, texture or environment, a glossy mirror,
+//! a mesh, a transformed node) is one more case, `Dyn`, called through its trait object as before: a new
+//! type works the moment it compiles. pbrt-v4 dispatches its closed set of shapes and materials the same
+//! way.
+//!
+//! Knowing a node's types buys one more thing: a node of the workbook's own shape under the workbook's own
+//! shaders needs none of the bookkeeping that `raytrace` keeps for a student's shader (its branching
+//! budget, the check for rays that find their own surface; [`crate::lesson::branching`]), since those
+//! shaders stay within their budget and those shapes describe their hits exactly.
 //!
 //! Nothing is computed differently: each case calls the same function of its type that the trait object
 //! would (`Lambert::shade_with` with the colour of its texture, `Sphere::hit`, `BitmapTexture::get_tex_color`,
@@ -314,15 +321,17 @@ impl LayerShading for MaterialLayer {
     }
 }
 
-/// The scene with every node's geometry and shader hidden behind a type this module does not know, so that
-/// it is traced as a student's own types are, through their trait objects. The picture is the same bit for
-/// bit; the ledger (docs/beyond-the-slides.md) measures what the enum buys against it.
+/// The scene with every node's geometry and shader, and the environment, hidden behind a type this module
+/// does not know, so that it is traced as a student's own types are, through their trait objects. The
+/// picture is the same bit for bit; the ledger (docs/beyond-the-slides.md) measures what the enum buys
+/// against it.
 pub fn through_trait_objects(scene: &Scene) -> Scene {
     let mut hidden = scene.clone();
     for node in &mut hidden.nodes {
         node.geometry = Arc::new(Hidden(node.geometry.clone()));
         node.shader = Arc::new(Hidden(node.shader.clone()));
     }
+    hidden.environment = scene.environment.clone().map(|e| Arc::new(Hidden(e)) as Arc<dyn Environment>);
     hidden
 }
 
@@ -347,6 +356,12 @@ impl Geometry for Hidden<dyn Geometry> {
     }
     fn name(&self) -> &'static str {
         self.0.name()
+    }
+}
+
+impl Environment for Hidden<dyn Environment> {
+    fn get(&self, dir: Vector) -> Color {
+        self.0.get(dir)
     }
 }
 
