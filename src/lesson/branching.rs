@@ -31,8 +31,9 @@
 //! What it costs. Nothing changes for the workbook's shaders: each stays within its budget (the glossy
 //! mirror caps itself first, and does not even draw the directions it would not trace), so every default
 //! picture is the same bit for bit and `--exhaustive` still traces every one of their rays. A student's
-//! N-ray shader traces N rays at the camera ray's hit, 2 per shading point down to the split depth and 1
-//! below it: at most `N * 2^(SPLIT_DEPTH - 1)` rays per depth, a ray count linear in the depth limit.
+//! N-ray shader traces N rays at the camera ray's hit, 2 per shading point of a ray down to the split depth
+//! and 1 below it: at most `N * 2^SPLIT_DEPTH` rays per camera ray at any depth (at depth `SPLIT_DEPTH + 1`
+//! and below), a ray count linear in the depth limit.
 //!
 //! Nor does it cost the workbook's own nodes anything: where the renderer knows a node's shape and every
 //! shader of it ([`crate::lesson::dispatch`]), the point needs no budget (those shaders stay within theirs)

@@ -89,12 +89,10 @@ impl Shape {
     /// the plane's axis), so only another shape's is checked.
     #[inline(always)]
     pub(crate) fn surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
-        let info = match self {
-            Shape::Sphere(sphere) => sphere.surface(ray, hit),
-            Shape::Plane(plane) => plane.surface(ray, hit),
-            Shape::Dyn(node) => return node.checked_surface(ray, hit),
-        };
-        info.map(|info| (info, true))
+        match self {
+            Shape::Dyn(node) => node.checked_surface(ray, hit),
+            _ => self.workbook_surface(ray, hit).map(|info| (info, true)),
+        }
     }
 
     /// The surface at `hit` if this is one of the workbook's own shapes (which find theirs always); `None`
