@@ -699,12 +699,13 @@ fn node_bvh(plan: &Plan, rows: &mut Vec<Row>, details: &mut String) {
         let tree = NodeTree::build(&scene.nodes).expect("more nodes than the loop takes");
         let rays = camera_rays(&scene, 160, 120);
         let nodes = &scene.nodes;
+        let slide_nodes = slide::model_transform::slide_nodes(nodes);
         let by_tree = |ray: &Ray| {
             tree.nearest_hit(nodes, ray)
                 .and_then(|(hit, node)| node.surface(ray, &hit).map(|i| (i.distance, node as *const Node)))
         };
         let by_loop = |ray: &Ray| {
-            slide::model_transform::closest_hit(nodes, ray).map(|(i, node)| (i.distance, node as *const Node))
+            slide::model_transform::closest_hit(&slide_nodes, ray).map(|(i, node)| (i.distance, node as *const Node))
         };
         let same = rays.iter().filter(|r| same_hit(by_tree(r), by_loop(r))).count();
         let repeat = (20_000 / n).clamp(1, 20);
@@ -766,9 +767,10 @@ fn two_phase_nearest_hit(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: 
             continue; // a mesh's triangle loop is step 4's
         }
         let rays = camera_rays(&scene, 320, 240);
+        let slide_nodes = slide::model_transform::slide_nodes(&scene.nodes);
         let two_phase = |ray: &Ray| scene.closest_hit(ray).map(|(i, node)| (i.distance, node as *const Node));
         let slides = |ray: &Ray| {
-            slide::model_transform::closest_hit(&scene.nodes, ray).map(|(i, node)| (i.distance, node as *const Node))
+            slide::model_transform::closest_hit(&slide_nodes, ray).map(|(i, node)| (i.distance, node as *const Node))
         };
         let same = rays.iter().filter(|r| same_hit(two_phase(r), slides(r))).count();
         let t = per_ray(plan, &rays, 10, &[&|r| two_phase(r).is_some() as u64, &|r| slides(r).is_some() as u64]);
@@ -818,6 +820,10 @@ fn mesh_bvh(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>) {
         .map(|n| (&*n.geometry as &dyn Any).downcast_ref::<Mesh>().expect("a mesh").triangle_count())
         .sum();
     let rays = camera_rays(&scene, 160, 120);
+    let slide_meshes: Vec<_> = slide::model_transform::slide_nodes(&scene.nodes)
+        .into_iter()
+        .filter(|n| (&*n.node.geometry as &dyn Any).is::<Mesh>())
+        .collect();
     let by_bvh = |ray: &Ray| {
         meshes
             .iter()
@@ -825,10 +831,10 @@ fn mesh_bvh(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>) {
             .min_by(|a, b| a.0.total_cmp(&b.0))
     };
     let by_loop = |ray: &Ray| {
-        meshes
+        slide_meshes
             .iter()
             .filter_map(|n| {
-                slide::model_transform::intersect(n, ray, f32::INFINITY).map(|i| (i.distance, *n as *const Node))
+                slide::model_transform::intersect(n, ray, f32::INFINITY).map(|i| (i.distance, n.node as *const Node))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0))
     };

@@ -373,7 +373,7 @@ pub struct TraceContext<'a> {
     pub met_dispersion: bool,
     /// Set when the slides' reading renders (`--slide`, [`crate::lesson::slide`]): `raytrace`, `visible` and
     /// the light loop then run the slides' own versions, for the workbook's shaders and a student's alike.
-    pub(crate) slides: Option<&'a Slides>,
+    pub(crate) slides: Option<&'a Slides<'a>>,
     /// What `raytrace` keeps of the shaders running, which bounds their rays ([`crate::lesson::branching`]).
     pub(crate) shading: Shading<'a>,
 }

@@ -55,13 +55,14 @@ fn crowded_scene() -> Scene {
 #[test]
 fn the_node_tree_and_two_phase_hit_find_the_slides_closest_hit() {
     let scene = crowded_scene().prepared().into_owned();
+    let slide_nodes = slide::model_transform::slide_nodes(&scene.nodes);
     let mut rng = Rng::for_keys(&[8]);
     let (mut hits, mut same) = (0, 0);
     for _ in 0..20_000 {
         let start = random_unit(&mut rng) * 80.0;
         let target = (Vector::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - 0.5) * 60.0;
         let ray = Ray::new(start, (target - start).normalize());
-        let slide = slide::model_transform::closest_hit(&scene.nodes, &ray);
+        let slide = slide::model_transform::closest_hit(&slide_nodes, &ray);
         let default = scene.closest_hit(&ray);
         match (slide, default) {
             (None, None) => {}

@@ -48,32 +48,45 @@ use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::shader::{Lambert, Layered, Phong, Reflection, Shader};
-use std::any::Any;
+use std::any::{Any, TypeId};
 
-/// What the slides' reading keeps beside the scene while it renders: its own photon map.
-#[derive(Debug, Default)]
-pub struct Slides {
+/// What the slides' reading keeps beside the scene while it renders: the scene's nodes as its loop meets
+/// them, and its own photon map.
+pub struct Slides<'a> {
+    /// The scene's nodes, each with its geometry's kind ([`model_transform::slide_nodes`]).
+    pub nodes: Vec<model_transform::SlideNode<'a>>,
     /// The caustic photon map of the slides' reading, if the scene asks for one.
-    pub photon_map: Option<photon_mapping::PhotonMap>,
+    pub photon_map: Option<&'a photon_mapping::PhotonMap>,
 }
 
 /// The colour a shader gives a hit, in the slides' reading: the workbook's shaders that read a texture or
 /// go beyond their slide by default are shaded as their slide writes them; every other shader, a student's
 /// included, by its own [`Shader::shade`].
 pub fn shade(shader: &dyn Shader, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+    // The shader's type is asked once (a call through its trait object) and compared with each of the
+    // workbook's; only the one it is is then looked at as that type.
     let any = shader as &dyn Any;
-    if let Some(lambert) = any.downcast_ref::<Lambert>() {
+    let kind = any.type_id();
+    if kind == TypeId::of::<Lambert>()
+        && let Some(lambert) = any.downcast_ref::<Lambert>()
+    {
         let diffuse = bitmap_textures::color_of(&lambert.color, ray, info);
         return lambert.shade_with(diffuse, ray, info, ctx);
     }
-    if let Some(phong) = any.downcast_ref::<Phong>() {
+    if kind == TypeId::of::<Phong>()
+        && let Some(phong) = any.downcast_ref::<Phong>()
+    {
         let diffuse = bitmap_textures::color_of(&phong.color, ray, info);
         return phong.shade_with(diffuse, ray, info, ctx);
     }
-    if let Some(mirror) = any.downcast_ref::<Reflection>() {
+    if kind == TypeId::of::<Reflection>()
+        && let Some(mirror) = any.downcast_ref::<Reflection>()
+    {
         return reflection::shade(mirror, ray, info, ctx);
     }
-    if let Some(layered) = any.downcast_ref::<Layered>() {
+    if kind == TypeId::of::<Layered>()
+        && let Some(layered) = any.downcast_ref::<Layered>()
+    {
         return layered::shade(layered, ray, info, ctx);
     }
     shader.shade(ray, info, ctx)

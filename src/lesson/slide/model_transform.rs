@@ -11,7 +11,8 @@
 //!
 //! A mesh (the slides' teapot) is tested triangle by triangle, after one test against its bounding box, as
 //! the course's program does at this lecture; every other shape by its own
-//! [`Geometry::intersect`].
+//! [`Geometry::intersect`]. Which nodes are meshes is asked once, when the render starts
+//! ([`slide_nodes`]): asking it of every node for every ray cost a tenth of the reading's instructions.
 
 use crate::lesson::geometry::{Aabb, Geometry, IntersectionInfo, Mesh};
 use crate::lesson::math::Vector;
@@ -19,13 +20,28 @@ use crate::lesson::node::Node;
 use crate::lesson::ray::Ray;
 use std::any::Any;
 
+/// A node of the scene as the slides' loop meets it: the node, and whether its geometry is a mesh (which is
+/// tested triangle by triangle), asked once when the render starts rather than by every ray at every node.
+#[derive(Clone, Copy)]
+pub struct SlideNode<'a> {
+    /// The scene's node.
+    pub node: &'a Node,
+    /// The node's geometry, if it is a mesh.
+    mesh: Option<&'a Mesh>,
+}
+
+/// The scene's nodes as the slides' loop meets them, in the scene's order.
+pub fn slide_nodes(nodes: &[Node]) -> Vec<SlideNode<'_>> {
+    nodes.iter().map(|node| SlideNode { node, mesh: (&*node.geometry as &dyn Any).downcast_ref() }).collect()
+}
+
 /// The slide's `Node::intersect`: the closest hit of the ray on the node with ray parameter in (0, `t_max`).
-pub fn intersect(node: &Node, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-    match &node.transform {
-        None => intersect_geometry(&*node.geometry, ray, t_max),
+pub fn intersect(node: &SlideNode, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+    match &node.node.transform {
+        None => intersect_geometry(node, ray, t_max),
         Some(t) => {
             let t_ray = t.ray_to_canonical(ray);
-            let info = intersect_geometry(&*node.geometry, &t_ray, t_max)?;
+            let info = intersect_geometry(node, &t_ray, t_max)?;
             Some(t.info_to_world(&info))
         }
     }
@@ -33,27 +49,29 @@ pub fn intersect(node: &Node, ray: &Ray, t_max: f32) -> Option<IntersectionInfo>
 
 /// The closest node hit by the ray, and where: every node in turn, each searched up to the closest hit so
 /// far (so a node added earlier keeps a tie).
-pub fn closest_hit<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
+pub fn closest_hit<'a>(nodes: &[SlideNode<'a>], ray: &Ray) -> Option<(IntersectionInfo, &'a Node)> {
     let mut closest = None;
     let mut t_max = f32::INFINITY;
     for node in nodes {
         if let Some(info) = intersect(node, ray, t_max) {
             t_max = info.distance;
-            closest = Some((info, node));
+            closest = Some((info, node.node));
         }
     }
     closest
 }
 
-/// A geometry's closest hit in its canonical space.
-fn intersect_geometry(geometry: &dyn Geometry, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-    match (geometry as &dyn Any).downcast_ref::<Mesh>() {
+/// The node's geometry's closest hit in its canonical space: a mesh's triangle by triangle, any other
+/// shape's by its own [`Geometry::intersect`].
+fn intersect_geometry(node: &SlideNode, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+    match node.mesh {
         Some(mesh) => intersect_mesh(mesh, ray, t_max),
-        None => geometry.intersect(ray, t_max),
+        None => node.node.geometry.intersect(ray, t_max),
     }
 }
 
 /// A mesh's closest hit: its bounding box first, then every triangle.
+#[inline(never)]
 fn intersect_mesh(mesh: &Mesh, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
     if !mesh.bounds().is_some_and(|b| hits_box(&b, ray, t_max)) {
         return None;

@@ -17,7 +17,7 @@
 //! how many it took.
 
 use super::kd_tree::KdTree;
-use super::model_transform::closest_hit;
+use super::model_transform::{SlideNode, closest_hit, slide_nodes};
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::math::Vector;
@@ -64,12 +64,13 @@ impl PhotonMap {
             return Ok(None);
         }
         let start = Instant::now();
+        let nodes = slide_nodes(&scene.nodes);
         let wanted = settings.count as usize;
         let mut photons = Vec::new();
         let mut shot = 0u64;
         for _ in 0..MAX_BATCHES {
             let batch = shot..shot + settings.count as u64;
-            photons.par_extend(batch.into_par_iter().filter_map(|i| shoot(scene, seed, i)));
+            photons.par_extend(batch.into_par_iter().filter_map(|i| shoot(scene, &nodes, seed, i)));
             shot += settings.count as u64;
             if photons.len() >= wanted {
                 break;
@@ -121,7 +122,7 @@ impl PhotonMap {
 /// Shoots photon number `index`: from lamp `index % lamps`, in a random direction, carrying 4π times the
 /// lamp's intensity times the number of lamps (divided by the photons shot once they are all shot). The
 /// photon as stored, if it lands on a diffuse surface after a reflection or refraction.
-fn shoot(scene: &Scene, seed: u64, index: u64) -> Option<StoredPhoton> {
+fn shoot(scene: &Scene, nodes: &[SlideNode], seed: u64, index: u64) -> Option<StoredPhoton> {
     let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, index]);
     let light = &scene.lights[(index % scene.lights.len() as u64) as usize];
     let mut power = light.color * (light.intensity * 4.0 * PI * scene.lights.len() as f32);
@@ -135,7 +136,7 @@ fn shoot(scene: &Scene, seed: u64, index: u64) -> Option<StoredPhoton> {
         if ray.depth > scene.max_depth.min(RECURSION_SAFETY_CAP) {
             return None;
         }
-        let (info, node) = closest_hit(&scene.nodes, &ray)?;
+        let (info, node) = closest_hit(nodes, &ray)?;
         match scatter_photon(&*node.shader, &ray, &info, &mut rng) {
             PhotonScatter::Land { scale } => {
                 return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });

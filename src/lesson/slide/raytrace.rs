@@ -5,13 +5,15 @@
 //! Deviation from the slides: past [`RECURSION_SAFETY_CAP`] a ray returns black whatever `MAX_RAY_DEPTH`
 //! says, so that Reflection v0.1's facing mirrors end instead of overflowing the stack.
 
-use super::{environment, model_transform, shade};
+use super::model_transform::{SlideNode, closest_hit, intersect, slide_nodes};
+use super::{environment, shade};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::Lighting;
 use crate::lesson::math::Vector;
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::scene::{RECURSION_SAFETY_CAP, TraceContext};
+use std::borrow::Cow;
 
 /// The slides' `raytrace(ray)`: the colour seen along the ray.
 pub fn raytrace(ctx: &mut TraceContext, ray: &Ray) -> Color {
@@ -24,7 +26,7 @@ pub fn raytrace(ctx: &mut TraceContext, ray: &Ray) -> Color {
     }
     ctx.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
     let scene = ctx.scene;
-    match model_transform::closest_hit(&scene.nodes, ray) {
+    match closest_hit(&nodes(ctx), ray) {
         Some((info, node)) => shade(&*node.shader, ray, &info, ctx),
         None => scene.environment.as_ref().map_or(Color::BLACK, |env| environment::get(&**env, ray.dir)),
     }
@@ -37,7 +39,16 @@ pub fn visible(ctx: &mut TraceContext, from: &IntersectionInfo, to: Vector) -> b
     let to_light = to - start;
     let distance = to_light.length();
     let ray = Ray::new(start, to_light / distance);
-    !ctx.scene.nodes.iter().any(|node| model_transform::intersect(node, &ray, distance).is_some())
+    !nodes(ctx).iter().any(|node| intersect(node, &ray, distance).is_some())
+}
+
+/// The scene's nodes as the slides' loop meets them: those the render prepared, or, in a context that is
+/// not the slides' render's, the scene's own looked at now.
+fn nodes<'a>(ctx: &TraceContext<'a>) -> Cow<'a, [SlideNode<'a>]> {
+    match ctx.slides {
+        Some(slides) => Cow::Borrowed(&slides.nodes),
+        None => Cow::Owned(slide_nodes(&ctx.scene.nodes)),
+    }
 }
 
 /// The light loop of the diffuse shaders (see [`crate::lesson::light::light_loop`], whose contract it
@@ -61,7 +72,7 @@ pub fn light_loop(
             lighting.highlights += each_lamp(l, lamp);
         }
     }
-    if let Some(map) = ctx.slides.and_then(|slides| slides.photon_map.as_ref()) {
+    if let Some(map) = ctx.slides.and_then(|slides| slides.photon_map) {
         lighting.irradiance += map.irradiance(info.ip, n);
     }
     lighting

@@ -7,8 +7,9 @@
 //! (seeded by the seed, the pixel and the pass), so the picture is the same for any number of threads.
 
 use super::dispersion::{self, Pass};
+use super::model_transform::{closest_hit, slide_nodes};
 use super::photon_mapping::PhotonMap;
-use super::{Slides, model_transform, raytrace};
+use super::{Slides, raytrace};
 use crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
@@ -37,7 +38,8 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
         false => *settings,
     };
     let pool = thread_pool(settings.threads)?;
-    let slides = Slides { photon_map: pool.install(|| PhotonMap::build(scene, settings.seed))? };
+    let photon_map = pool.install(|| PhotonMap::build(scene, settings.seed))?;
+    let slides = Slides { nodes: slide_nodes(&scene.nodes), photon_map: photon_map.as_ref() };
     let start = Instant::now();
     let camera = scene.camera.frame(settings.width, settings.height);
     let (passes, bands) = dispersion::passes(scene, settings.wavelengths);
@@ -52,8 +54,9 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
     }
     let elapsed = start.elapsed();
     let (w, h) = (settings.width, settings.height);
-    let hits = |scene: &Scene, ray: &Ray| model_transform::closest_hit(&scene.nodes, ray).is_some();
+    let hits = |scene: &Scene, ray: &Ray| closest_hit(&slide_nodes(&scene.nodes), ray).is_some();
     let trace = |scene: &Scene, rng, ray: &Ray| {
+        let slides = Slides { nodes: slide_nodes(&scene.nodes), ..slides };
         let mut ctx = TraceContext::new(scene, rng);
         ctx.slides = Some(&slides);
         raytrace(&mut ctx, ray)
@@ -65,7 +68,7 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<(Frame, Render
         warnings: Problems::report(&counters, scene),
         counters,
         spectral: bands.map_or(SpectralPlan::White, SpectralPlan::Passes),
-        photons: slides.photon_map.as_ref().map(|map| map.stats),
+        photons: photon_map.as_ref().map(|map| map.stats),
     };
     Ok((frame, stats))
 }
