@@ -88,11 +88,11 @@ fn render_pass(
         .par_chunks_mut(w)
         .enumerate()
         .map(|(y, row)| {
-            let mut counters = Counters::default();
+            // One context for the row, its counters adding up the row's rays; every pixel its own random stream.
+            let mut ctx = TraceContext::new(scene, Rng::for_keys(&[]));
+            ctx.slides = Some(slides);
             for (x, pixel) in row.iter_mut().enumerate() {
-                let keys = [settings.seed, x as u64, y as u64, SLIDE_STREAM, k as u64];
-                let mut ctx = TraceContext::new(scene, Rng::for_keys(&keys));
-                ctx.slides = Some(slides);
+                ctx.rng = Rng::for_keys(&[settings.seed, x as u64, y as u64, SLIDE_STREAM, k as u64]);
                 let mut sum = Color::BLACK;
                 for _ in 0..settings.spp {
                     let (dx, dy) =
@@ -103,9 +103,8 @@ fn render_pass(
                     sum += settings.sample(color, &mut ctx.counters);
                 }
                 *pixel = sum / settings.spp as f32;
-                counters.add(&ctx.counters);
             }
-            counters
+            ctx.counters
         })
         .reduce(Counters::default, |mut a, b| {
             a.add(&b);
