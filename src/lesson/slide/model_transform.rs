@@ -12,7 +12,7 @@
 //! A mesh (the slides' teapot) is tested triangle by triangle, after one test against its bounding box, as
 //! the course's program does at this lecture; every other shape by its own
 //! [`Geometry::intersect`]. Which nodes are meshes is asked once, when the render starts
-//! ([`slide_nodes`]): asking it of every node for every ray cost a tenth of the reading's instructions.
+//! ([`slide_nodes`]), not by every ray at every node.
 
 use crate::lesson::geometry::{Aabb, Geometry, IntersectionInfo, Mesh};
 use crate::lesson::math::Vector;
@@ -71,7 +71,6 @@ fn intersect_geometry(node: &SlideNode, ray: &Ray, t_max: f32) -> Option<Interse
 }
 
 /// A mesh's closest hit: its bounding box first, then every triangle.
-#[inline(never)]
 fn intersect_mesh(mesh: &Mesh, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
     if !mesh.bounds().is_some_and(|b| hits_box(&b, ray, t_max)) {
         return None;
