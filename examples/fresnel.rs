@@ -5,7 +5,10 @@
 //! the steps beyond the slides change (docs/beyond-the-slides.md).
 //!
 //! The course's own lecture-6 scene: a glass sphere (IOR 1.6) over a tiled floor that reflects a little,
-//! so the picture and the time can be compared with the course's C++ program. The glass is a `Layered`
+//! so the picture and the time can be compared with the course's C++ program. Its camera is the course's,
+//! 90 degrees across the diagonal; the lecture-6 program itself shows more than its 90 degrees (it scales
+//! its image plane by 1.5): `--fov 112.62` (2 atan 1.5) frames the scene as that program does, the sphere
+//! smaller and more of the sky, as the speed bench compares them (docs/speed.md). The glass is a `Layered`
 //! shader: a refraction layer under a reflection layer whose blend is the `Fresnel` texture
 //! ([`fresnel_glass`] builds it; read `src/lesson/shader/glass.rs`). Look at:
 //! - the sphere's middle, which faces the camera: mostly refraction (the floor, upside down), reflecting

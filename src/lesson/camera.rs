@@ -15,6 +15,10 @@ use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 use glam::Mat3A;
 
+/// The fields of view, in degrees, that a camera may be given from outside the code (a scene file's `fov`,
+/// `--fov`): wider than a point and short of 180, where the image plane would be infinitely wide.
+pub const FOV_LIMITS: std::ops::RangeInclusive<f64> = 0.0001..=179.0;
+
 /// The pinhole camera: where it stands, where it looks (yaw, pitch, roll) and how much it sees (`fov`).
 #[derive(Clone, Copy, Debug)]
 pub struct Camera {

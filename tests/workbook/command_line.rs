@@ -400,6 +400,37 @@ fn fov_axis_vertical_keeps_the_height_of_the_picture_when_the_aspect_ratio_chang
     }
 }
 
+#[test]
+fn fov_sets_the_angle_from_the_centre_of_the_picture_to_its_corner_or_edge() {
+    // The angle between the ray through the picture's centre and the one through (x, y), at 640 x 480.
+    let off_centre = |args: &[&str], x: f32, y: f32| {
+        let (scene, _) = common::parse::<fresnel::Options>(args).prepare().unwrap();
+        let frame = scene.camera.frame(640, 480);
+        let (a, b) = (frame.get_screen_ray(320.0, 240.0).dir, frame.get_screen_ray(x, y).dir);
+        a.cross(b).length().atan2(a.dot(b)).to_degrees()
+    };
+    // fresnel's own 90 degrees, and the lecture-6 program's wider framing (its camera scales the image
+    // plane by 1.5: 2 atan(1.5) across the diagonal), half of each from the centre to a corner.
+    assert!((off_centre(&[], 0.0, 0.0) - 45.0).abs() < 1e-3);
+    let course = 2.0 * 1.5f32.atan().to_degrees();
+    let wide = off_centre(&["--fov", &course.to_string()], 0.0, 0.0);
+    assert!((wide - course / 2.0).abs() < 1e-3, "{wide}");
+    // With --fov-axis the angle is measured across that extent: from the centre to the top edge.
+    let vertical = off_centre(&["--fov-axis", "vertical", "--fov", "60"], 320.0, 0.0);
+    assert!((vertical - 30.0).abs() < 1e-3, "{vertical}");
+    // The scene's own angle given again changes nothing.
+    let plain = common::render::<fresnel::Options>(&["--width", "64", "--height", "48"]);
+    let again = common::render::<fresnel::Options>(&["--width", "64", "--height", "48", "--fov", "90"]);
+    assert_eq!(plain.to_rgb8().as_raw(), again.to_rgb8().as_raw());
+    // Out of range, as a scene file's `fov`: refused before anything is written.
+    for value in ["0", "179.5", "nan", "-30"] {
+        let output = scratch("fov").join("refused.png");
+        let out = small("fresnel", &["--fov", value, "-o", output.to_str().unwrap()]);
+        assert_refused(&out, &[&format!("'{value}' for '--fov <DEGREES>'"), "from 0.0001 to 179 degrees"]);
+        assert!(!output.exists());
+    }
+}
+
 /// README step 3: comparing another version with a reference, without `-o`, keeps the render a student made
 /// before at `out/EXAMPLE.png`; the compared picture and its heat map get names of their own.
 #[test]

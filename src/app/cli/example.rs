@@ -191,6 +191,9 @@ impl<E: Example> Cli<E> {
             let default = RenderSettings::default();
             scene.camera = scene.camera.with_fov_axis(axis, default.width as f32 / default.height as f32);
         }
+        if let Some(fov) = common.fov {
+            scene.camera.fov = fov;
+        }
         scene.check()?;
         if !common.slide {
             scene.relative_to_camera();

@@ -43,6 +43,7 @@ pub(super) fn help_command<E: Example>(name: &str) -> clap::Command {
         .mut_arg("photons", with_default(photons.count.to_string()))
         .mut_arg("k", with_default(photons.k.to_string()))
         .mut_arg("radius", with_default(radius))
+        .mut_arg("fov", with_default(scene.camera.fov.to_string()))
         .mut_arg("fov_axis", with_default(format!("{:?}", scene.camera.fov_axis).to_lowercase()));
     for id in ["photons", "k", "radius", "show_photons"] {
         command = command.mut_arg(id, |arg| arg.help_heading(caustics));

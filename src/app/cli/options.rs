@@ -3,7 +3,7 @@
 
 use crate::instruments::debug_view::DebugView;
 use crate::instruments::ray_tree::{PixelPos, TraceFormat};
-use crate::lesson::camera::FovAxis;
+use crate::lesson::camera::{FOV_LIMITS, FovAxis};
 use crate::lesson::environment::CubemapLayout;
 use crate::lesson::photon_map::PhotonSettings;
 use crate::lesson::render::{MAX_SPP, MAX_THREADS};
@@ -40,6 +40,19 @@ where
 /// splits a ray in two, so the rays of a sample can double with each level: the fresnel scene at 80 x 60
 /// traces 0.3 M rays at depth 32, 14 M at depth 64, and does not finish in a minute at depth 100.
 pub const MAX_EXHAUSTIVE_DEPTH: u32 = 64;
+
+/// Reads `--fov`: degrees within [`FOV_LIMITS`], as a scene file's `fov`; the refusal names the limits.
+fn field_of_view(text: &str) -> std::result::Result<f32, String> {
+    match text.parse::<f64>() {
+        Ok(fov) if FOV_LIMITS.contains(&fov) => Ok(fov as f32),
+        Ok(_) => Err(format!(
+            "{text} is not a field of view: it must be from {} to {} degrees",
+            FOV_LIMITS.start(),
+            FOV_LIMITS.end()
+        )),
+        Err(e) => Err(e.to_string()),
+    }
+}
 
 /// Reads `--max-depth`: a whole number up to [`RECURSION_SAFETY_CAP`], where every ray stops anyway; the
 /// refusal says so.
@@ -182,6 +195,10 @@ pub struct CommonArgs {
     /// under a bright sun), at the price of bias: the clamped light is lost.
     #[arg(long, value_name = "MAX", help_heading = PICTURE)]
     pub clamp_sample: Option<f32>,
+    /// The camera's field of view in degrees, across the picture's diagonal (the course's convention) or the
+    /// extent that --fov-axis names: smaller zooms in, larger shows more. [default: the scene's own]
+    #[arg(long, value_name = "DEGREES", value_parser = field_of_view, help_heading = PICTURE)]
+    pub fov: Option<f32>,
     /// Which extent of the picture stays when the aspect ratio changes: diagonal (the course's: a wider
     /// picture shows less at the top), vertical or horizontal. The picture at 640 x 480 is the same for all
     /// three. [default: the scene's own]

@@ -6,7 +6,7 @@ use super::parse::{Block, Property};
 use super::reader::{MAX_COORDINATE, Reader, checked_triple};
 use super::values::is_space;
 use super::*;
-use crate::lesson::camera::{Camera, FovAxis};
+use crate::lesson::camera::{Camera, FOV_LIMITS, FovAxis};
 use crate::lesson::color::{Color, linear_to_srgb, srgb_to_linear};
 use crate::lesson::environment::{CubemapEnvironment, CubemapLayout, Environment};
 use crate::lesson::error::Result;
@@ -58,7 +58,7 @@ impl Loader<'_> {
         let yaw = r.float(self, "yaw", 0.0, -1e120, 1e120)?;
         let pitch = r.float(self, "pitch", 0.0, -90.0, 90.0)?;
         let roll = r.float(self, "roll", 0.0, -1e120, 1e120)?;
-        let fov = r.float(self, "fov", 90.0, 0.0001, 179.0)?;
+        let fov = r.float(self, "fov", 90.0, *FOV_LIMITS.start(), *FOV_LIMITS.end())?;
         let aspect = r.float(self, "aspectRatio", 4.0 / 3.0, 1e-6, 1e120)?;
         for (key, what) in [("dof", "depth of field"), ("autofocus", "autofocus")] {
             if r.boolean(self, key, false) {
