@@ -28,15 +28,17 @@
 //!   runs as usual.
 //! - The course's figures (`--course`: only these; `--no-examples` skips them). The course's C++ (its
 //!   lecture-6 program, built headless by `../shared/bench/course-cpp/build.sh REPO OUTDIR`; `--course-cpp
-//!   PATH` or `QD_COURSE_CPP`, else skipped with a line saying so) renders the scene of `fresnel`. In each
-//!   round it runs once in its own folder, and this build's `fresnel` once each by default, with
-//!   `--exhaustive` (every ray traced, as the C++ does) and with `--slide` (the slides' plain code), all on
-//!   one thread at 640x480, 5 spp; the C++ goes first in one round and last in the next. Two ratios per
+//!   PATH` or `QD_COURSE_CPP`, else skipped with a line saying so) renders the scene of `fresnel`, framed
+//!   wider (its camera scales its image plane by 1.5). In each round it runs once in its own folder, and
+//!   this build's `fresnel` once each by default, with `--exhaustive` (every ray traced, as the C++ does) and
+//!   with `--slide` (the slides' plain code), each at the C++'s framing (`--fov 112.62`: the same picture,
+//!   and with `--exhaustive` the same rays) and at its own, all on one thread at 640x480, 5 spp; the C++
+//!   goes first in one round and last in the next. Two ratios per
 //!   way: whole-process CPU (getrusage of each; the C++'s includes starting SDL and reading its textures,
 //!   the workbook's reading its textures and writing the PNG) and render only, wall against wall (the
 //!   C++'s own clock around render(), the workbook's summary-line time; on one thread on an idle core
 //!   these equal CPU time, on a loaded one they include waiting for a core, alike for both). The C++
-//!   prints no ray count; its 15.72 M rays were counted once with a copy of it that counts them. Then
+//!   prints no ray count; its 8.03 M rays were counted once with a copy of it that counts them. Then
 //!   `fresnel` at 1280x960 on 1 thread and on 2, interleaved: wall time at 1 over wall time at 2.
 //! - The object-count curve renders, in this process, N small spheres on a plane (the final scene of "Ray
 //!   Tracing in One Weekend" has about 500) on one thread, with the scene's BVH over its nodes (`render`) and
@@ -349,14 +351,45 @@ fn instruction_table(
     }
 }
 
-/// Rays the course's C++ traces at 640x480, 5 spp: it prints no count; this one was counted once, with a
-/// copy of it that counts its rays.
-const COURSE_CPP_RAYS: f64 = 15.72e6;
+/// Rays the course's C++ traces at 640x480, 5 spp, counted as the workbook counts its own
+/// (`Counters::total`): it prints no count, so this was counted once with a copy of it that counts every
+/// `raytrace()` past its depth test (6,555,602) and every `visibilityCheck()`, its shadow rays (1,470,873).
+/// `fresnel --exhaustive` at the C++'s framing ([`course_fov`]) traces the same number.
+const COURSE_CPP_RAYS: f64 = 8_026_475.0;
 
-/// `fresnel` the three ways the course's C++ is compared with: the default, every ray traced as the C++
-/// does, and the slides' plain code.
-const FRESNEL_WAYS: [(&str, &[&str]); 3] =
-    [("fresnel", &[]), ("fresnel --exhaustive", &["--exhaustive"]), ("fresnel --slide", &["--slide"])];
+/// The lecture-6 program's field of view across the diagonal, in degrees. Its camera is given the 90
+/// degrees `fresnel`'s is, but scales its image plane by 1.5, so it shows 2 atan(1.5 tan 45) = 2 atan 1.5
+/// degrees: `fresnel --fov` this frames the scene as that program does, the sphere smaller.
+fn course_fov() -> f64 {
+    (2.0 * 1.5f64.atan()).to_degrees()
+}
+
+/// One way `fresnel` runs beside the course's C++: its name in the tables and its options.
+struct Way {
+    name: String,
+    args: Vec<String>,
+}
+
+/// `fresnel` the ways the course's C++ is compared with: by default, with every ray traced as the C++
+/// traces them (`--exhaustive`) and with the slides' plain code (`--slide`); each at the C++'s framing
+/// (`--fov`, [`course_fov`]: the same picture's rays, the ratios issue 34's targets are judged by) and at
+/// `fresnel`'s own, closer view (more of the picture is glass: more rays).
+fn fresnel_ways() -> Vec<Way> {
+    let framings = [vec!["--fov".to_string(), course_fov().to_string()], vec![]];
+    framings
+        .iter()
+        .flat_map(|framing| {
+            [None, Some("--exhaustive"), Some("--slide")].map(|way| Way {
+                name: format!(
+                    "fresnel{}{}",
+                    if framing.is_empty() { String::new() } else { format!(" --fov {:.2}", course_fov()) },
+                    way.map_or(String::new(), |w| format!(" {w}"))
+                ),
+                args: framing.iter().cloned().chain(way.map(String::from)).collect(),
+            })
+        })
+        .collect()
+}
 
 /// The machine's load average over 1, 5 and 15 minutes, as `/proc/loadavg` gives it.
 fn load_average() -> String {
@@ -406,15 +439,16 @@ fn course_figures(args: &Args, root: &Path) {
     fresnel_threads(args, &fresnel, &out_dir);
 }
 
-/// The course's C++ and `fresnel` three ways, on one thread at 640x480, 5 spp, interleaved: in each round
-/// each of the four runs once, the C++ first in one round and last in the next.
+/// The course's C++ and `fresnel` the six ways of [`fresnel_ways`], on one thread at 640x480, 5 spp,
+/// interleaved: in each round each runs once, the C++ first in one round and last in the next.
 fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
     let cpp = cpp.canonicalize().unwrap_or_else(|e| panic!("--course-cpp {}: {e}", cpp.display()));
+    let ways = fresnel_ways();
     let (mut cpp_samples, mut cpp_render_cpu) = (Vec::new(), Vec::new());
-    let mut samples: [Vec<Sample>; 3] = [Vec::new(), Vec::new(), Vec::new()];
+    let mut samples: Vec<Vec<Sample>> = ways.iter().map(|_| Vec::new()).collect();
     for round in 0..args.rounds {
         eprintln!("the course's C++ and fresnel: round {} of {}", round + 1, args.rounds);
-        let mut order = [0, 1, 2, 3];
+        let mut order: Vec<usize> = (0..=ways.len()).collect();
         if round % 2 == 1 {
             order.reverse();
         }
@@ -425,13 +459,14 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
                 cpp_render_cpu.push(render_cpu);
             } else {
                 let out = out_dir.join(format!("fresnel-course-{i}.png"));
-                samples[i - 1].push(run_example(fresnel, 1, FRESNEL_WAYS[i - 1].1, &out));
+                let way: Vec<&str> = ways[i - 1].args.iter().map(String::as_str).collect();
+                samples[i - 1].push(run_example(fresnel, 1, &way, &out));
             }
         }
     }
     let c = figures(&cpp_samples);
     let c_render_cpu = median(cpp_render_cpu);
-    let ways = samples.map(|s| figures(&s));
+    let figures: Vec<Figures> = samples.iter().map(|s| figures(s)).collect();
     println!(
         "\n## The course's C++ ({}) against `fresnel`: 640x480, 5 spp, one thread, median of {} interleaved rounds\n",
         cpp.display(),
@@ -447,9 +482,10 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
         c.rays * 1e-6,
         c.rays * 1e-6 / c.render
     );
-    for ((name, _), w) in FRESNEL_WAYS.iter().zip(&ways) {
+    for (way, w) in ways.iter().zip(&figures) {
         println!(
-            "| {name} | {:.3} | {:.3} | - | {:.3} | {:.2} | {:.2} |",
+            "| {} | {:.3} | {:.3} | - | {:.3} | {:.2} | {:.2} |",
+            way.name,
             w.cpu,
             w.wall,
             w.render,
@@ -457,22 +493,28 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
             w.rays * 1e-6 / w.render
         );
     }
-    println!("\n| C++ / this (above 1: the workbook takes less) | whole process, CPU | render only, wall |");
-    println!("|---|---:|---:|");
-    for ((name, _), w) in FRESNEL_WAYS.iter().zip(&ways) {
-        println!("| {name} | {:.2}x | {:.2}x |", c.cpu / w.cpu, c.render / w.render);
+    println!(
+        "\n| C++ / this (above 1: the workbook takes less) | whole process, CPU | render only, wall | rays, this / C++ |"
+    );
+    println!("|---|---:|---:|---:|");
+    for (way, w) in ways.iter().zip(&figures) {
+        println!("| {} | {:.2}x | {:.2}x | {:.2} |", way.name, c.cpu / w.cpu, c.render / w.render, w.rays / c.rays);
     }
     println!(
-        "\nWhole process: CPU (user + system, getrusage) of the whole run. The C++'s: starting SDL (dummy driver), \
-         building the scene and reading its textures, render(), showing the frame; it writes no file. The \
-         workbook's: reading the sky and the floor's texture, building the scene, rendering, writing the PNG. \
-         Render only: the C++'s own clock around render() (it prints its CPU and wall time); the workbook's \
-         render time from its summary line, a wall time around the render alone. On one thread on an idle core \
-         a render's CPU time is its wall time; in this run the C++'s render() had {:.2} s CPU per wall \
-         second (1.00 with a core to itself; below, it waited for one), so the render-only ratio compares wall \
-         with wall, both runs interleaved on the same machine. The C++'s rays were counted once with a counting copy of it (it \
-         prints none); the workbook's are from its summary line, shadow rays included. Load average at the \
-         end: {}.",
+        "\nThe lecture-6 program frames the scene wider than `fresnel` does (its camera scales its image plane by \
+         1.5): `--fov {:.2}` renders the picture it renders, and `--exhaustive` then traces the rays it traces \
+         (the last column), so that those rows compare the same work; at `fresnel`'s own, closer framing more of \
+         the picture is glass. Whole process: CPU (user + system, getrusage) of the whole run. The C++'s: \
+         starting SDL (dummy driver), building the scene and reading its textures, render(), showing the frame; \
+         it writes no file. The workbook's: reading the sky and the floor's texture, building the scene, \
+         rendering, writing the PNG. Render only: the C++'s own clock around render() (it prints its CPU and \
+         wall time); the workbook's render time from its summary line, a wall time around the render alone. On \
+         one thread on an idle core a render's CPU time is its wall time; in this run the C++'s render() had \
+         {:.2} s CPU per wall second (1.00 with a core to itself; below, it waited for one), so the render-only \
+         ratio compares wall with wall, both runs interleaved on the same machine. The C++'s rays were counted \
+         once with a counting copy of it (it prints none); the workbook's are from its summary line, shadow rays \
+         included. Load average at the end: {}.",
+        course_fov(),
         c_render_cpu / c.render,
         load_average()
     );
