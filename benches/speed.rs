@@ -354,7 +354,7 @@ fn instruction_table(
 /// Rays the course's C++ traces at 640x480, 5 spp, counted as the workbook counts its own
 /// (`Counters::total`): it prints no count, so this was counted once with a copy of it that counts every
 /// `raytrace()` past its depth test (6,555,602) and every `visibilityCheck()`, its shadow rays (1,470,873).
-/// `fresnel --exhaustive` at the C++'s framing ([`course_fov`]) traces the same number.
+/// `fresnel --exhaustive` at the C++'s framing ([`course_fov`]) traces 8.03 M too (as its summary line rounds).
 const COURSE_CPP_RAYS: f64 = 8_026_475.0;
 
 /// The lecture-6 program's field of view across the diagonal, in degrees. Its camera is given the 90
