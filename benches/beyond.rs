@@ -5,7 +5,7 @@
 //! cargo bench --bench beyond -- --quick   # 1 round, fewer points: target/beyond-the-slides.md
 //! ```
 //!
-//! Every step that the default reading takes beyond the slides' reading (`--slide`, `src/lesson/slide/`) is
+//! Every step that the default reading takes beyond the slides' reading (`--slide`, every step of `src/lesson/beyond.rs` left out) is
 //! measured against the slide's version of it, side by side in this one process: in each round every
 //! variant runs once, the order alternating from round to round, so that a machine shared with other work
 //! slows both alike; each figure is the median over the rounds. Renders run on one thread; CPU time
@@ -1393,7 +1393,7 @@ fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, 
     let mut doc = String::new();
     writeln!(doc, "# Beyond the slides: what each step buys").unwrap();
     writeln!(doc).unwrap();
-    writeln!(doc, "The workbook renders every example in two readings. `--slide` runs the code as the slides write it (`src/lesson/slide/`); the default reading adds, beside each slide, the steps below. Each row measures one step against the slide's version of it, side by side in one run: the time at equal error for the steps that leave the picture as it is, the error at equal time (and the time at equal error) for the steps that change the noise; and the lines of code the step costs. A step that buys nothing measurable on any example says so.").unwrap();
+    writeln!(doc, "The workbook renders every example in two readings. `--slide` runs the code as the slides write it (every step of `src/lesson/beyond.rs` left out); the default reading adds, beside each slide, the steps below. Each row measures one step against the slide's version of it, side by side in one run: the time at equal error for the steps that leave the picture as it is, the error at equal time (and the time at equal error) for the steps that change the noise; and the lines of code the step costs. A step that buys nothing measurable on any example says so.").unwrap();
     writeln!(doc).unwrap();
     writeln!(doc, "Written by `cargo bench --bench beyond` ({}), in {:.0} s on {date}: {machine}, {cores} cores shared with other work (load average {load} at the end). Every render runs on one thread; each figure is the median of {} interleaved round(s); \"CPU s\" is user plus system time of the whole process. In the equal-time and equal-error comparisons of a sweep, a point's time is its rays times its curve's median CPU time per ray (steadier on a loaded machine than one point's own median, which the tables give). The bench is `benches/beyond.rs`; its doc comment says how each figure is made.", if plan.quick { "`--quick`" } else { "full" }, seconds, plan.rounds).unwrap();
     writeln!(doc).unwrap();

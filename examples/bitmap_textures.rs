@@ -1,8 +1,8 @@
 //! # Bitmap textures (lecture 6, slide "Bitmap текстури")
 //!
-//! The slide's code: `src/lesson/slide/bitmap_textures.rs` (one texel per look-up). `--slide` renders this example
-//! with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
-//! (docs/beyond-the-slides.md).
+//! The slide's code: `Bitmap::sample` with `Filter::Nearest` in `src/lesson/bitmap.rs` (one texel per look-up).
+//! `--slide` renders this example with the slides' choice of every step beyond them (`--step NAME` adds one back);
+//! `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!
 //! Diffuse textures read from image files colour a floor, two spheres and a cube. Look at:
 //! - the floor: one image, repeated every 40 units (`with_tile_size`), fading with distance;

@@ -1,8 +1,8 @@
 //! # Chromatic dispersion (lecture 6, slides "Хроматично пречупване (дисперсия)", "Симулиране на хроматично пречупване")
 //!
-//! The slide's code: `src/lesson/slide/dispersion.rs` (K passes, each frame times its band's colour). `--slide`
-//! renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
-//! (docs/beyond-the-slides.md).
+//! The slide's code: the K passes of `src/lesson/render.rs`, each frame times its band's colour
+//! (`src/lesson/spectral/mod.rs`). `--slide` renders this example with the slides' choice of every step beyond them
+//! (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!
 //! Glass bends short wavelengths more than long ones: its index of refraction falls with the wavelength
 //! (the Abbe number V_d says how fast; small is strong). A ray of white light is really many rays, one per

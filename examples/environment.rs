@@ -1,7 +1,8 @@
 //! # Environment maps (lecture 6, slides "Заден фон", "Интерфейс за заден фон")
 //!
-//! The slide's code: `src/lesson/slide/environment.rs` (the spherical and cube-map look-ups). `--slide` renders
-//! this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
+//! The slide's code: the spherical and cube-map look-ups of `src/lesson/environment.rs`, one texel each
+//! (`Filter::Nearest` in `src/lesson/bitmap.rs`). `--slide` renders this example with the slides' choice of every step
+//! beyond them (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change
 //! (docs/beyond-the-slides.md).
 //!
 //! A ray that hits nothing sees the environment, which depends on the ray's direction only. Here a mirror

@@ -1,8 +1,8 @@
 //! # Glossy reflections (lecture 6, slides "Грапави (glossy) отражения" to "Резултати (2)")
 //!
-//! The slide's code: `src/lesson/slide/glossy.rs` (random points of the unit disc). `--slide` renders this example
-//! with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
-//! (docs/beyond-the-slides.md).
+//! The slide's code: `Reflection::shade_with` in `src/lesson/shader/reflection.rs` with random points of the unit disc
+//! (`src/lesson/sampling.rs`). `--slide` renders this example with the slides' choice of every step beyond them
+//! (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!
 //! A rough mirror reflects a cone of rays instead of one. The renderer tilts the face-forwarded normal by a
 //! point of the unit disc scaled by `tan((1 - glossiness) * pi/2)`, reflects about the tilted normal, drops

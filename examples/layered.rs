@@ -1,8 +1,9 @@
 //! # Layered shaders (lecture 6, slides "Комбиниране на шейдъри", "Layered Shader", "Текстури", "Пример за
 //! текстура")
 //!
-//! The slide's code: `src/lesson/slide/layered.rs` (the bottom-up loop). `--slide` renders this example with it
-//! alone; `--side-by-side "--slide"` shows what the steps beyond the slides change (docs/beyond-the-slides.md).
+//! The slide's code: `shade_bottom_up` in `src/lesson/shader/layered.rs` (the bottom-up loop). `--slide` renders this
+//! example with the slides' choice of every step beyond them (`--step NAME` adds one back); `--side-by-side "--slide"`
+//! shows what they change (docs/beyond-the-slides.md).
 //!
 //! Materials made of layers, bottom to top, each with a blend (its opacity), and textures that drive more
 //! than the colour. Look at:

@@ -1,8 +1,9 @@
 //! # Model transforms (lecture 6, slide "Model трансформация")
 //!
-//! The slide's code: `src/lesson/slide/model_transform.rs` (`Node::intersect` and the loop over the nodes).
-//! `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides
-//! change (docs/beyond-the-slides.md).
+//! The slide's code: `Node::intersect` and the loop over the nodes in `src/lesson/node.rs`, and the teapot's triangles
+//! one by one in `src/lesson/geometry/one_by_one.rs`. `--slide` renders this example with the slides' choice of every
+//! step beyond them (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change
+//! (docs/beyond-the-slides.md).
 //!
 //! Every shape is intersected in its canonical form; a node's transform T (scale, then rotate, then
 //! translate) places it in the world, and the ray goes the other way: intersect(o * T, r) =

@@ -1,8 +1,8 @@
 //! # Caustics by photon mapping (lecture 6, slides "Caustics", "Photon Mapping", "Пример за photon map")
 //!
-//! The slide's code: `src/lesson/slide/photon_mapping.rs` (photons in all directions, the k nearest). `--slide`
-//! renders this example with it alone; `--side-by-side "--slide"` shows what the steps beyond the slides change
-//! (docs/beyond-the-slides.md).
+//! The slide's code: `src/lesson/photon_map/all_directions.rs` and `src/lesson/photon_map/kd_tree.rs` (photons in all
+//! directions, the k nearest). `--slide` renders this example with the slides' choice of every step beyond them
+//! (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!
 //! Light concentrated by refraction and reflection: a glass sphere focuses a point light into a bright spot
 //! inside its own shadow, and a small mirror throws a bright patch onto the wall at the back ("слънчево

@@ -1,8 +1,8 @@
 //! # Reflection v0.1 (lecture 6, slide "Reflection v0.1")
 //!
-//! The slide's code: `src/lesson/slide/reflection.rs` and `src/lesson/slide/raytrace.rs` (the mirror ray and
-//! `raytrace`). `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps
-//! beyond the slides change (docs/beyond-the-slides.md).
+//! The slide's code: `TraceContext::raytrace` in `src/lesson/scene.rs` and the mirror ray of
+//! `src/lesson/shader/reflection.rs`. `--slide` renders this example with the slides' choice of every step beyond them
+//! (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!
 //! A mirror sends the ray on in the direction `reflect(i, n) = i + 2 * dot(-i, n) * n` and multiplies what
 //! it sees by 0.8 ("20% loss of energy"). There is no depth limit. Look at:

@@ -1,8 +1,8 @@
 //! # Reflection v0.2 (lecture 6, slide "Reflection v0.2")
 //!
-//! The slide's code: `src/lesson/slide/raytrace.rs` and `src/lesson/slide/reflection.rs` (`raytrace` with
-//! `MAX_RAY_DEPTH`). `--slide` renders this example with it alone; `--side-by-side "--slide"` shows what the steps
-//! beyond the slides change (docs/beyond-the-slides.md).
+//! The slide's code: `TraceContext::raytrace` in `src/lesson/scene.rs` (`MAX_RAY_DEPTH`) and the mirror ray of
+//! `src/lesson/shader/reflection.rs`. `--slide` renders this example with the slides' choice of every step beyond them
+//! (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!
 //! Every ray carries its `depth`: camera rays 0, each reflection one more; a ray deeper than
 //! `MAX_RAY_DEPTH` (2, as on the slide) returns black. Two mirrors face each other, one in front of the

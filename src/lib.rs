@@ -3,9 +3,11 @@
 //! Each module implements the slide it is named after; its documentation says which, and where the Rust
 //! differs from the slide's C++ and why.
 //!
-//! The crate is in three layers; each imports only from the layers above it in this list:
+//! The crate is in four layers; each imports only from the layers above it in this list:
 //!
-//! - [`lesson`]: the slides' code, a leaf that imports nothing from the other two;
+//! - [`files`]: not a slide: the files a run reads, checked before they are opened, the pixel budget of its
+//!   images, and its errors;
+//! - [`lesson`]: the slides' code, which imports nothing from the two below;
 //! - [`instruments`]: what makes the lesson visible (the ray tree, debug views, comparisons, the progressive
 //!   renderer, the study and the viewer); they watch the renderer through the one observation hook the lesson
 //!   owns ([`lesson::observer`]);
@@ -21,10 +23,10 @@
 //! | [`lesson::shader`] | Lambert, Phong, reflection (perfect and glossy), refraction, the Layered shader |
 //! | [`lesson::light`], [`lesson::scene`] | point lights and shadow rays; the scene and `raytrace()` |
 //! | [`lesson::render`], [`lesson::frame`], [`lesson::adaptive_aa`] | the parallel, deterministic renderer and the picture it makes; the course's adaptive anti-aliasing |
-//! | [`lesson::tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
+//! | [`instruments::tone_mapping`] | exposure and tone mapping: how linear light becomes the written picture (`--exposure`, `--tonemap`) |
 //! | [`lesson::spectral`] | chromatic dispersion: wavelength-dependent IOR; the colours of wavelengths (CIE 1931 tables, D65 or equal-energy light, gamut mapping); wavelength passes, spectral and hero-wavelength sampling |
 //! | [`lesson::photon_map`] | caustics by photon mapping: photon tracing, the photon grid, the caustic estimate |
-//! | [`lesson::input`], [`lesson::image_file`] | not a slide: the files a scene is read from, refused unless regular and within their caps; the pixel budget of the images a run holds |
+//! | [`files::input`], [`files::image_file`], [`files::error`] | not a slide: the files a scene is read from, refused unless regular and within their caps; the pixel budget of the images a run holds; the errors |
 //! | [`lesson::sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
 //! | [`instruments::ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
 //! | [`instruments::debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
@@ -41,6 +43,7 @@
 //! build a scene and run it (see [`app::cli::Example`] for a whole example in 25 lines).
 
 pub mod app;
+pub mod files;
 pub mod instruments;
 pub mod lesson;
 

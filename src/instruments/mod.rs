@@ -1,4 +1,5 @@
-//! The instruments: what makes the lesson visible.
+//! The instruments: what makes the lesson visible, and how its light becomes the picture that is shown
+//! ([`tone_mapping`]).
 
 pub mod compare;
 pub mod debug_view;
@@ -7,5 +8,6 @@ pub mod progressive;
 pub mod ray_tree;
 pub mod side_by_side;
 pub mod study;
+pub mod tone_mapping;
 #[cfg(feature = "viewer")]
 pub mod viewer;

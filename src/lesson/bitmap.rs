@@ -10,6 +10,7 @@
 //! A file is read through an [`ImageFile`], which checks its size against the pixel budget of the images a
 //! run holds before it is decoded; every bitmap holds its share of the budget until it is dropped.
 
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::color::{Color, srgb_to_linear, srgb8_to_linear_table};
 use crate::lesson::error::Result;
 use crate::lesson::image_file::{ImageFile, PixelCharge};
@@ -37,6 +38,14 @@ pub enum Filter {
     /// A distance-weighted mix of the four texels around the point.
     #[default]
     Bilinear,
+}
+
+impl Filter {
+    /// The filter a render that takes `steps` reads with: this one with the step
+    /// [`Step::TexelFilter`], the slide's one texel (`Nearest`) without it.
+    pub fn under(self, steps: Steps) -> Filter {
+        if steps.has(Step::TexelFilter) { self } else { Filter::Nearest }
+    }
 }
 
 impl Wrap {
@@ -140,7 +149,6 @@ impl Bitmap {
     /// one image per unit; outside [0, 1) the `wrap` mode decides.
     #[inline(always)]
     pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
-        beyond!(TexelFilter);
         // The storage is chosen once per look-up, not once per texel.
         match &self.texels {
             Texels::Linear(pixels) => self.filtered(u, v, filter, wrap, pixels, |c| c),
@@ -167,6 +175,7 @@ impl Bitmap {
                 at(wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height))
             }
             Filter::Bilinear => {
+                beyond!(TexelFilter);
                 exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
                 // Texel centres sit at half-integer coordinates.
                 let (i0, i1, tx) = wrap.0.neighbours(x - 0.5, self.width);

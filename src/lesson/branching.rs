@@ -5,9 +5,10 @@
 //! Two such shaders facing each other then branch N^depth rays per camera ray: 16 rays and 10 bounces is
 //! 10^12 rays, a render that never ends. Russian roulette on the weight cannot stop it (a white mirror's
 //! rays keep a weight of 1), and a 1/N weight stops it by pruning the deep samples, which darkens the
-//! picture the more rays the shader averages. The workbook's glossy mirror caps its own rays
-//! ([`crate::lesson::shader::SECONDARY_GLOSSY_SAMPLES`] per shading point below the first bounce, one below
-//! [`SPLIT_DEPTH`]); this module puts the same cap in `raytrace`, so that it holds for a student's shader too.
+//! picture the more rays the shader averages. This module puts a cap on every shader's rays in `raytrace`,
+//! the workbook's glossy mirror's and a student's alike (the course's glossy mirror traces
+//! [`crate::lesson::shader::SECONDARY_GLOSSY_SAMPLES`] per shading point below the first bounce; the cap
+//! allows that down to [`SPLIT_DEPTH`] and one ray below it).
 //!
 //! The rule. Each shading point (the hit of one ray, or one layer of a `Layered` shader there) may pass its
 //! rays, together, [`split_factor`] times its own ray's weight: without limit for a camera ray's hit, 2 times
@@ -18,8 +19,8 @@
 //! Why it is unbiased. A shader averaging N rays that are independent and identically distributed (the
 //! directions of a glossy cone, drawn alike) computes `(X_1 + ... + X_k + (N - k) * mean(X_1..X_k)) / N`
 //! when only k are traced, which is `mean(X_1..X_k)`: the same expectation as the average of all N, with the
-//! variance of k rays. Below the split depth that is what the workbook's own glossy mirror computes by
-//! tracing k rays, so a student's N-ray glossy converges to it (`tests/workbook/branching.rs` measures it).
+//! variance of k rays, so a student's N-ray glossy converges to the workbook's (`tests/workbook/branching.rs`
+//! measures it).
 //! The rays of a shading point that are *not* alike (a glass's reflection and refraction) are told apart by
 //! their weights: they split the light, so their attenuations add up to at most one (R + T = 1) and they
 //! never exceed the budget; an average's do, N times over. `Layered` shades each layer as a shading point
@@ -28,9 +29,10 @@
 //! with factors of the shader's own) gets, for the later ones, the earlier ones' colours: biased. Passing
 //! each ray the factor its colour is multiplied by (the contract) avoids it.
 //!
-//! What it costs. Nothing changes for the workbook's shaders: each stays within its budget (the glossy
-//! mirror caps itself first, and does not even draw the directions it would not trace), so every default
-//! picture is the same bit for bit and `--exhaustive` still traces every one of their rays. A student's
+//! What it costs. Nothing changes for the workbook's shaders down to [`SPLIT_DEPTH`], where every example's
+//! rays end: each stays within its budget, so every default picture is the same bit for bit and
+//! `--exhaustive` still traces every one of their rays. Below it a glossy mirror's second ray shares the
+//! first one's colour, as a student's would. A student's
 //! N-ray shader traces N rays at the camera ray's hit, 2 per shading point of a ray down to the split depth
 //! and 1 below it: at most `N * 2^SPLIT_DEPTH` rays per camera ray at any depth (at depth `SPLIT_DEPTH + 1`
 //! and below), a ray count linear in the depth limit.

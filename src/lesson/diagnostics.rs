@@ -22,10 +22,9 @@
 
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
-use crate::lesson::node::Node;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
-use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene};
+use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
 use crate::lesson::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 use std::collections::{BTreeMap, BTreeSet, HashSet};
 use std::sync::Arc;
@@ -144,20 +143,12 @@ const PROBE_KEY: u64 = 0x5052_4f42_4500_0000;
 /// colours. Each such shader is tried once, at the first of its nodes that one of a grid of
 /// [`PROBE_RAYS`]² camera rays over the picture hits: that ray is traced into the node alone (so that
 /// nothing else it sees can bring a wavelength's colour), in white light and at [`LAMBDA_MIN`] and
-/// [`LAMBDA_MAX`], with the same random numbers. `hits` and `trace` are the render's own ways of finding
-/// whether a ray hits a scene and of tracing a ray in a scene with a random stream (so that `--slide`
-/// probes with the slides' code alone). A node none of the rays hits is not tried, nor a point of
+/// [`LAMBDA_MAX`], with the same random numbers, by the scene's own steps. A node none of the rays hits is
+/// not tried, nor a point of
 /// a shader other than the one tried, and a shader that gives the same colour in every wavelength there
 /// (black, where no light reaches it) is not caught: the check finds the mistake, it cannot prove its
 /// absence.
-pub fn undeclared_dispersion(
-    scene: &Scene,
-    camera: &CameraFrame,
-    width: u32,
-    height: u32,
-    hits: impl Fn(&Scene, &Ray) -> bool,
-    trace: impl Fn(&Scene, Rng, &Ray) -> Color,
-) -> BTreeSet<usize> {
+pub fn undeclared_dispersion(scene: &Scene, camera: &CameraFrame, width: u32, height: u32) -> BTreeSet<usize> {
     let step = |size: u32, i: u32| (i as f32 + 0.5) * size as f32 / PROBE_RAYS as f32;
     let rays: Vec<Ray> = (0..PROBE_RAYS)
         .flat_map(|y| (0..PROBE_RAYS).map(move |x| (x, y)))
@@ -171,11 +162,14 @@ pub fn undeclared_dispersion(
             continue;
         }
         let alone = scene.around(vec![node.clone()]);
-        let Some(ray) = rays.iter().find(|ray| hits(&alone, ray)) else {
+        let alone = alone.prepared();
+        let Some(ray) = rays.iter().find(|ray| alone.intersects(ray, f32::INFINITY)) else {
             continue;
         };
         tried.insert(shader);
-        let colour = |wavelength: Option<f32>| trace(&alone, Rng::for_keys(&[PROBE_KEY]), &Ray { wavelength, ..*ray });
+        let colour = |wavelength: Option<f32>| {
+            TraceContext::new(&alone, Rng::for_keys(&[PROBE_KEY])).raytrace(&Ray { wavelength, ..*ray })
+        };
         let white = colour(None);
         if [LAMBDA_MIN, LAMBDA_MAX].into_iter().any(|lambda| differs(colour(Some(lambda)), white)) {
             found.insert(i);
@@ -194,14 +188,4 @@ fn listed<K>(counts: &BTreeMap<K, u64>, name: impl Fn(&K) -> String) -> String {
     let mut entries: Vec<_> = counts.iter().collect();
     entries.sort_by(|a, b| b.1.cmp(a.1));
     entries.iter().map(|(k, n)| format!("{} ({n})", name(k))).collect::<Vec<_>>().join(", ")
-}
-
-impl Scene {
-    /// The index in `nodes` of a node of this scene (found from its address: the end-of-run report names
-    /// nodes by it, and a render of many instances must not search them all).
-    pub fn node_index(&self, node: &Node) -> Option<usize> {
-        let offset = (node as *const Node as usize).checked_sub(self.nodes.as_ptr() as usize)?;
-        let i = offset / std::mem::size_of::<Node>();
-        (i < self.nodes.len() && std::ptr::eq(&self.nodes[i], node)).then_some(i)
-    }
 }

@@ -1,17 +1,21 @@
-//! Static dispatch of the workbook's own shapes, shaders, textures and environments (beyond the slides).
+//! The one place that lists the workbook's own shapes, shaders, textures and environments, and dispatches
+//! them: nothing else in the lesson asks a value's concrete type.
 //!
 //! The slides call a node's geometry, shader and texture, and the environment, through their interfaces
-//! (virtual calls in the course's C++, trait objects here): every hit costs a few indirect calls, and none
-//! of them can be inlined into its caller, so the sphere test, the Layered loop and the texel look-up each
-//! run as a separate function with its own set-up. When a scene is prepared ([`Scene::prepared`]), each
-//! node's shape and shader, and the environment, are looked at once: the workbook's own types (`Sphere`,
-//! `Plane`; `Lambert`, `Phong`, a perfect `Reflection`, `Refraction`, a `Layered` of these;
-//! `BitmapTexture`, `CheckerTexture`, `Fresnel`; the cube map, spherical and constant environments) become
-//! the cases of an enum, which `raytrace` matches on, so the compiler sees the whole shading of a hit as
-//! one piece of code. Anything else (a student's own shape, shader, texture or environment, a glossy mirror,
-//! a mesh, a transformed node) is one more case, `Dyn`, called through its trait object as before: a new
-//! type works the moment it compiles. pbrt-v4 dispatches its closed set of shapes and materials the same
-//! way.
+//! (virtual calls in the course's C++, trait objects here). When a scene is prepared ([`Scene::prepared`]),
+//! each node's shape and shader, and the environment, are looked at once: the workbook's own types
+//! (`Sphere`, `Plane`, a `Mesh`; `Lambert`, `Phong`, a perfect `Reflection`, `Refraction`, a `Layered` of
+//! these; `BitmapTexture`, `CheckerTexture`, `Fresnel`; the cube map, spherical and constant environments)
+//! become the cases of an enum, which `raytrace` matches on, so the compiler sees the whole shading of a hit
+//! as one piece of code. Anything else (a student's own shape, shader, texture or environment, a glossy
+//! mirror, a transformed node) is one more case, `Dyn`, called through its trait object: a new type works
+//! the moment it compiles. pbrt-v4 dispatches its closed set of shapes and materials the same way.
+//!
+//! The cases follow the scene's [`Steps`]: without [`Step::TexelFilter`] a bitmap texture or environment is
+//! read one texel at a time, without [`Step::MeshBvh`] a mesh is tested triangle by triangle, without
+//! [`Step::LayerPruning`] a `Layered` shader shades every layer. A course shader reached through its trait
+//! object (a student's shader that wraps one, or the ray tree's watched path) follows them the same way,
+//! through `ctx` ([`ColorSource::at`]).
 //!
 //! Knowing a node's types buys one more thing: a node of the workbook's own shape under the workbook's own
 //! shaders needs none of the bookkeeping that `raytrace` keeps for a student's shader (its branching
@@ -20,36 +24,48 @@
 //!
 //! Nothing is computed differently: each case calls the same function of its type that the trait object
 //! would (`Lambert::shade_with` with the colour of its texture, `Sphere::hit`, `BitmapTexture::get_tex_color`,
-//! the one Layered loop, [`shade_layers`](crate::lesson::shader::Layered)), so a picture is the same bit for bit either way.
+//! the same Layered loops), so a picture is the same bit for bit either way (`tests/workbook/beyond.rs`
+//! renders every example both ways).
 
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::color::Color;
 use crate::lesson::environment::{ConstantEnvironment, CubemapEnvironment, Environment, SphericalEnvironment};
-use crate::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo, Plane, Sphere};
+use crate::lesson::geometry::{Geometry, Hit, IntersectionInfo, Mesh, Plane, Sphere};
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
 use crate::lesson::ray::Ray;
-use crate::lesson::scene::{Scene, TraceContext};
+use crate::lesson::scene::TraceContext;
 use crate::lesson::shader::{
-    CausticCaster, ColorSource, Lambert, Layer, LayerShading, Layered, Phong, Reflection, Refraction, Shader,
-    shade_layers,
+    ColorSource, Lambert, Layer, LayerShading, Layered, Phong, Reflection, Refraction, Shader, shade_bottom_up,
+    shade_pruned,
 };
 use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, Texture};
+use crate::lesson::transform::Transform;
 use std::any::Any;
 use std::sync::Arc;
 
-/// A node's geometry: one of the workbook's shapes without a transform, or anything else (another shape,
-/// or any shape under a transform) through the node itself.
+/// A node's geometry: one of the workbook's shapes without a transform, a mesh tested triangle by triangle
+/// (without [`Step::MeshBvh`]), or anything else (another shape, or any shape under a transform) through the
+/// node itself.
 #[derive(Clone)]
 pub(crate) enum Shape {
     Sphere(Sphere),
     Plane(Plane),
+    /// A mesh whose triangles are tested one by one ([`Mesh::hit_one_by_one`]), under the node's transform.
+    MeshOneByOne(Arc<Mesh>, Option<Transform>),
     /// The node's own [`Node::hit`] and the like: its geometry's trait object, through its transform.
     Dyn(Box<Node>),
 }
 
 impl Shape {
-    /// The shape of `node`.
-    pub(crate) fn of(node: &Node) -> Shape {
+    /// The shape of `node` under `steps`.
+    pub(crate) fn of(node: &Node, steps: Steps) -> Shape {
+        if !steps.has(Step::MeshBvh) {
+            let geometry: Arc<dyn Any + Send + Sync> = node.geometry.clone();
+            if let Ok(mesh) = geometry.downcast::<Mesh>() {
+                return Shape::MeshOneByOne(mesh, node.transform);
+            }
+        }
         let any = &*node.geometry as &dyn Any;
         match (any.downcast_ref::<Sphere>(), any.downcast_ref::<Plane>()) {
             _ if node.transform.is_some() => Shape::Dyn(Box::new(node.clone())),
@@ -59,9 +75,10 @@ impl Shape {
         }
     }
 
-    /// Whether this is one of the workbook's own shapes.
+    /// Whether this is one of the workbook's own shapes that describe their hits exactly (a sphere or a
+    /// plane; a mesh is checked as any other shape is).
     pub(crate) fn is_workbook(&self) -> bool {
-        !matches!(self, Shape::Dyn(_))
+        matches!(self, Shape::Sphere(_) | Shape::Plane(_))
     }
 
     /// [`Node::hit`] of the node whose shape this is.
@@ -70,6 +87,7 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.hit(ray, t_max),
             Shape::Plane(plane) => plane.hit(ray, t_max),
+            Shape::MeshOneByOne(mesh, transform) => mesh_hit(mesh, transform, ray, t_max),
             Shape::Dyn(node) => node_hit(node, ray, t_max),
         }
     }
@@ -80,7 +98,20 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.intersects(ray, t_max),
             Shape::Plane(plane) => plane.intersects(ray, t_max),
+            Shape::MeshOneByOne(mesh, transform) => mesh_hit(mesh, transform, ray, t_max).is_some(),
             Shape::Dyn(node) => node_intersects(node, ray, t_max),
+        }
+    }
+
+    /// [`Node::intersect`] of the node whose shape this is (the slide's whole hit, for its loop over the
+    /// nodes), and whether its normal is of unit length.
+    #[inline(always)]
+    pub(crate) fn intersect(&self, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
+        match self {
+            Shape::Sphere(sphere) => sphere.intersect(ray, t_max).map(|info| (info, true)),
+            Shape::Plane(plane) => plane.intersect(ray, t_max).map(|info| (info, true)),
+            Shape::MeshOneByOne(..) => self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit)),
+            Shape::Dyn(node) => node.checked_intersect(ray, t_max),
         }
     }
 
@@ -91,7 +122,12 @@ impl Shape {
     pub(crate) fn surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
         match self {
             Shape::Dyn(node) => node.checked_surface(ray, hit),
-            _ => self.workbook_surface(ray, hit).map(|info| (info, true)),
+            Shape::MeshOneByOne(mesh, None) => mesh.surface(ray, hit).map(|info| (info, Node::is_unit_normal(&info))),
+            Shape::MeshOneByOne(mesh, Some(t)) => {
+                let info = mesh.surface(&t.ray_to_canonical(ray), hit)?;
+                Some((t.info_to_world(&info), Node::is_unit_normal(&info)))
+            }
+            Shape::Sphere(_) | Shape::Plane(_) => self.workbook_surface(ray, hit).map(|info| (info, true)),
         }
     }
 
@@ -102,8 +138,17 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.surface(ray, hit),
             Shape::Plane(plane) => plane.surface(ray, hit),
-            Shape::Dyn(_) => None,
+            Shape::MeshOneByOne(..) | Shape::Dyn(_) => None,
         }
+    }
+}
+
+/// [`Mesh::hit_one_by_one`] through the node's transform, kept out of the loop over the nodes.
+#[inline(never)]
+fn mesh_hit(mesh: &Mesh, transform: &Option<Transform>, ray: &Ray, t_max: f32) -> Option<Hit> {
+    match transform {
+        None => mesh.hit_one_by_one(ray, t_max),
+        Some(t) => mesh.hit_one_by_one(&t.ray_to_canonical(ray), t_max),
     }
 }
 
@@ -131,8 +176,8 @@ pub(crate) enum Sky {
 }
 
 impl Sky {
-    /// The sky of a scene whose environment is `environment`.
-    pub(crate) fn of(environment: &Option<Arc<dyn Environment>>) -> Sky {
+    /// The sky of a scene whose environment is `environment`, under `steps`.
+    pub(crate) fn of(environment: &Option<Arc<dyn Environment>>, steps: Steps) -> Sky {
         let Some(environment) = environment else {
             return Sky::Black;
         };
@@ -140,9 +185,9 @@ impl Sky {
         if let Some(constant) = any.downcast_ref::<ConstantEnvironment>() {
             Sky::Constant(*constant)
         } else if let Some(cubemap) = any.downcast_ref::<CubemapEnvironment>() {
-            Sky::Cubemap(cubemap.clone())
+            Sky::Cubemap(cubemap.clone().with_filter(cubemap.filter.under(steps)))
         } else if let Some(spherical) = any.downcast_ref::<SphericalEnvironment>() {
-            Sky::Spherical(spherical.clone())
+            Sky::Spherical(spherical.clone().with_filter(spherical.filter.under(steps)))
         } else {
             Sky::Dyn(environment.clone())
         }
@@ -172,10 +217,10 @@ pub(crate) enum Tex {
 }
 
 impl Tex {
-    fn of_texture(texture: &Arc<dyn Texture>) -> Tex {
+    fn of_texture(texture: &Arc<dyn Texture>, steps: Steps) -> Tex {
         let any = &**texture as &dyn Any;
         if let Some(bitmap) = any.downcast_ref::<BitmapTexture>() {
-            Tex::Bitmap(bitmap.clone())
+            Tex::Bitmap(bitmap.clone().with_filter(bitmap.filter.under(steps)))
         } else if let Some(checker) = any.downcast_ref::<CheckerTexture>() {
             Tex::Checker(*checker)
         } else if let Some(fresnel) = any.downcast_ref::<Fresnel>() {
@@ -185,10 +230,10 @@ impl Tex {
         }
     }
 
-    fn of(source: &ColorSource) -> Tex {
+    fn of(source: &ColorSource, steps: Steps) -> Tex {
         match source {
             ColorSource::Color(c) => Tex::Color(*c),
-            ColorSource::Texture(texture) => Tex::of_texture(texture),
+            ColorSource::Texture(texture) => Tex::of_texture(texture, steps),
         }
     }
 
@@ -235,14 +280,14 @@ pub(crate) struct MaterialLayer {
 }
 
 impl Material {
-    /// The material of `shader`.
-    pub(crate) fn of(shader: &Arc<dyn Shader>) -> Material {
+    /// The material of `shader` under `steps`.
+    pub(crate) fn of(shader: &Arc<dyn Shader>, steps: Steps) -> Material {
         match (&**shader as &dyn Any).downcast_ref::<Layered>() {
             Some(layered) => {
-                let layers = layered.layers().iter().map(MaterialLayer::of).collect();
-                Material::Layered(layers, layered.shades_every_layer())
+                let layers = layered.layers().iter().map(|layer| MaterialLayer::of(layer, steps)).collect();
+                Material::Layered(layers, layered.shades_every_layer() || !steps.has(Step::LayerPruning))
             }
-            None => Material::Single(Surface::of(shader)),
+            None => Material::Single(Surface::of(shader, steps)),
         }
     }
 
@@ -259,21 +304,22 @@ impl Material {
     pub(crate) fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
             Material::Single(surface) => surface.shade(ray, info, ctx),
-            Material::Layered(layers, every_layer) => shade_layers(layers, *every_layer, ray, info, ctx),
+            Material::Layered(layers, true) => shade_bottom_up(layers, ray, info, ctx),
+            Material::Layered(layers, false) => shade_pruned(layers, ray, info, ctx),
         }
     }
 }
 
 impl Surface {
     /// The surface shader of `shader`: one of the workbook's, or its trait object.
-    fn of(shader: &Arc<dyn Shader>) -> Surface {
+    fn of(shader: &Arc<dyn Shader>, steps: Steps) -> Surface {
         let any = &**shader as &dyn Any;
         if let Some(lambert) = any.downcast_ref::<Lambert>() {
-            Surface::Lambert(lambert.clone(), Tex::of(&lambert.color))
+            Surface::Lambert(lambert.clone(), Tex::of(&lambert.color, steps))
         } else if let Some(phong) = any.downcast_ref::<Phong>() {
-            Surface::Phong(phong.clone(), Tex::of(&phong.color))
+            Surface::Phong(phong.clone(), Tex::of(&phong.color, steps))
         } else if let Some(mirror) = any.downcast_ref::<Reflection>().filter(|m| m.glossiness >= 1.0) {
-            Surface::Mirror(mirror.clone(), Tex::of(&mirror.multiplier))
+            Surface::Mirror(mirror.clone(), Tex::of(&mirror.multiplier, steps))
         } else if let Some(refraction) = any.downcast_ref::<Refraction>() {
             Surface::Refraction(*refraction)
         } else {
@@ -295,18 +341,18 @@ impl Surface {
 }
 
 impl MaterialLayer {
-    fn of(layer: &Layer) -> MaterialLayer {
+    fn of(layer: &Layer, steps: Steps) -> MaterialLayer {
         MaterialLayer {
-            surface: Surface::of(&layer.shader),
+            surface: Surface::of(&layer.shader, steps),
             blend: layer.blend,
-            blend_tex: layer.blend_tex.as_ref().map(Tex::of_texture),
+            blend_tex: layer.blend_tex.as_ref().map(|texture| Tex::of_texture(texture, steps)),
         }
     }
 }
 
 impl LayerShading for MaterialLayer {
     #[inline(always)]
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps) -> Color {
         match &self.blend_tex {
             Some(tex) => self.blend * tex.get(ray, info),
             None => self.blend,
@@ -316,67 +362,5 @@ impl LayerShading for MaterialLayer {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color {
         ctx.begin_layer(ray);
         self.surface.shade(ray, info, ctx) * weight
-    }
-}
-
-/// The scene with every node's geometry and shader, and the environment, hidden behind a type this module
-/// does not know, so that it is traced as a student's own types are, through their trait objects. The
-/// picture is the same bit for bit; the ledger (docs/beyond-the-slides.md) measures what the enum buys
-/// against it.
-pub fn through_trait_objects(scene: &Scene) -> Scene {
-    let mut hidden = scene.clone();
-    for node in &mut hidden.nodes {
-        node.geometry = Arc::new(Hidden(node.geometry.clone()));
-        node.shader = Arc::new(Hidden(node.shader.clone()));
-    }
-    hidden.environment = scene.environment.clone().map(|e| Arc::new(Hidden(e)) as Arc<dyn Environment>);
-    hidden
-}
-
-/// A trait object under a type of its own, which forwards every call to it.
-struct Hidden<T: ?Sized>(Arc<T>);
-
-impl Geometry for Hidden<dyn Geometry> {
-    fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        self.0.intersect(ray, t_max)
-    }
-    fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        self.0.hit(ray, t_max)
-    }
-    fn surface(&self, ray: &Ray, hit: &Hit) -> Option<IntersectionInfo> {
-        self.0.surface(ray, hit)
-    }
-    fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
-        self.0.intersects(ray, t_max)
-    }
-    fn bounds(&self) -> Option<Aabb> {
-        self.0.bounds()
-    }
-    fn name(&self) -> &'static str {
-        self.0.name()
-    }
-}
-
-impl Environment for Hidden<dyn Environment> {
-    fn get(&self, dir: Vector) -> Color {
-        self.0.get(dir)
-    }
-}
-
-impl Shader for Hidden<dyn Shader> {
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.0.shade(ray, info, ctx)
-    }
-    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        self.0.caustic_caster()
-    }
-    fn is_dispersive(&self) -> bool {
-        self.0.is_dispersive()
-    }
-    fn texture(&self) -> Option<&dyn Texture> {
-        self.0.texture()
-    }
-    fn name(&self) -> &'static str {
-        self.0.name()
     }
 }

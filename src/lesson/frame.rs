@@ -49,12 +49,6 @@ impl Frame {
         let values = self.pixels.iter().flat_map(|c| c.to_array()).collect();
         image::Rgb32FImage::from_raw(self.width, self.height, values).expect("frame size matches its pixels")
     }
-    /// A frame from an 8-bit sRGB image (decoded to linear light).
-    pub fn from_rgb8(img: &image::RgbImage) -> Frame {
-        let table = crate::lesson::color::srgb8_to_linear_table();
-        let pixels = img.pixels().map(|p| Color::new(table[p[0] as usize], table[p[1] as usize], table[p[2] as usize]));
-        Frame { width: img.width(), height: img.height(), pixels: pixels.collect() }
-    }
 
     /// Writes the frame: `.png` as 8-bit sRGB, `.exr` and `.hdr` as linear floats. The image goes to a
     /// temporary file beside the target first and is renamed over it only when complete, so a failure never

@@ -50,6 +50,11 @@ pub struct Lighting {
 /// direction to the lamp and its irradiance before the cosine, and adds what it returns to the
 /// [`Lighting::highlights`]: the light that depends on where the lamp is (Phong's highlight). A shader that
 /// takes its light from here gets caustics without asking.
+///
+/// Deviation from the slides: a lamp is skipped, with no shadow ray, when the shading normal and the
+/// surface's own normal disagree about which side it is on (a smooth mesh's interpolated normal near its
+/// silhouette): the slides' loop tests the shading normal alone, and such a lamp would light a point that
+/// faces away from it.
 #[inline(always)]
 pub fn light_loop(
     ctx: &mut TraceContext,
@@ -57,9 +62,6 @@ pub fn light_loop(
     n: Vector,
     mut each_lamp: impl FnMut(Vector, Color) -> Color,
 ) -> Lighting {
-    if ctx.slides.is_some() {
-        return crate::lesson::slide::light_loop(ctx, info, n, each_lamp);
-    }
     let scene = ctx.scene;
     let mut irradiance = scene.ambient;
     let mut highlights = Color::BLACK;

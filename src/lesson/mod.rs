@@ -12,6 +12,8 @@ macro_rules! exercise {
     };
 }
 
+pub use crate::files::{error, image_file, input};
+
 #[macro_use]
 pub mod beyond;
 pub mod adaptive_aa;
@@ -22,13 +24,10 @@ pub mod color;
 pub mod diagnostics;
 pub mod dispatch;
 pub mod environment;
-pub mod error;
 #[cfg(feature = "exercises")]
 pub mod exercise_hooks;
 pub mod frame;
 pub mod geometry;
-pub mod image_file;
-pub mod input;
 pub mod light;
 pub mod math;
 pub mod node;
@@ -41,10 +40,8 @@ pub mod rng;
 pub mod sampling;
 pub mod scene;
 pub mod shader;
-pub mod slide;
 pub mod spectral;
 pub mod texture;
-pub mod tone_mapping;
 pub mod transform;
 
 /// The last segment of a type's path, without generic arguments: `Reflection` for

@@ -89,8 +89,27 @@ impl Node {
 
     /// The slide's `Node::intersect`: the ray goes to canonical space, meets the geometry there, and the hit
     /// comes back to world space.
+    ///
+    /// ```text
+    /// function Node::intersect(ray, info)
+    ///     t_ray = ray * T-1
+    ///     geometry->intersect(t_ray, info)
+    ///     info = info * T
+    /// ```
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
+        self.checked_intersect(ray, t_max).map(|(info, _)| info)
+    }
+
+    /// [`Node::intersect`], and whether the geometry described the hit with a unit normal (see
+    /// [`Node::checked_surface`]).
+    pub(crate) fn checked_intersect(&self, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
+        match &self.transform {
+            None => self.geometry.intersect(ray, t_max).map(|info| (info, Node::is_unit_normal(&info))),
+            Some(t) => {
+                let info = self.geometry.intersect(&t.ray_to_canonical(ray), t_max)?;
+                Some((t.info_to_world(&info), Node::is_unit_normal(&info)))
+            }
+        }
     }
 
     /// The first phase of [`Node::intersect`] ([`Geometry::hit`] in canonical space): where the ray meets
@@ -288,6 +307,25 @@ pub(crate) fn nearest_of(nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize
         }
     }
     nearest
+}
+
+/// The slides' loop over the nodes (slide "Model трансформация"): `intersect(i, t_max)` of every node `i` in
+/// turn, each searched up to the closest hit so far, so that a node added earlier keeps a tie. The closest
+/// hit, its node's index, and whether its normal was of unit length.
+#[inline(always)]
+pub(crate) fn closest_of(
+    count: usize,
+    mut intersect: impl FnMut(usize, f32) -> Option<(IntersectionInfo, bool)>,
+) -> Option<(IntersectionInfo, usize, bool)> {
+    let mut closest = None;
+    let mut t_max = f32::INFINITY;
+    for i in 0..count {
+        if let Some((info, unit_normal)) = intersect(i, t_max) {
+            t_max = info.distance;
+            closest = Some((info, i, unit_normal));
+        }
+    }
+    closest
 }
 
 /// Whether any of `nodes` is hit before `t_max`, testing them in turn.

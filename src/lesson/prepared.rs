@@ -1,20 +1,24 @@
 //! The scene prepared for tracing (beyond the slides): what the renderer works out once from a complete
 //! scene instead of again for every ray, kept beside the scene's nodes by [`Scene::prepared`].
 //!
-//! - the BVH over the nodes ([`NodeTree`]), for scenes with more than a few of them;
-//! - each node's shape and shader as the cases of an enum ([`crate::lesson::dispatch`]), so that the
-//!   workbook's own types are called without a trait object.
+//! - the BVH over the nodes ([`NodeTree`]), for scenes with more than a few of them, when they take that step
+//!   ([`Step::NodeTree`]);
+//! - each node's shape and shader as the cases of an enum ([`crate::lesson::dispatch`], the one place that
+//!   lists the workbook's own types), so that they are called without a trait object, as the scene's steps
+//!   say.
 //!
 //! A preparation belongs to the nodes it was made from: `Preparation::describes` checks, in one pass over
 //! the nodes, that the scene still holds exactly those (the same geometry and shader, by address, under the
-//! same transform), so a scene changed after it was prepared is prepared again rather than traced wrongly.
+//! same transform) and the same steps, so a scene changed after it was prepared is prepared again rather than
+//! traced wrongly.
 
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::color::Color;
 use crate::lesson::dispatch::{Material, Shape, Sky};
 use crate::lesson::environment::Environment;
 use crate::lesson::geometry::{Hit, IntersectionInfo};
 use crate::lesson::math::Vector;
-use crate::lesson::node::{Node, NodeHits, NodeTree, any_of, nearest_of};
+use crate::lesson::node::{Node, NodeHits, NodeTree, any_of, closest_of, nearest_of};
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::transform::Transform;
@@ -35,6 +39,8 @@ pub(crate) struct Preparation {
     made_from: Vec<NodeIdentity>,
     /// Which environment it was made from (its address, only compared, never followed).
     made_with: Option<usize>,
+    /// Which steps it was made for.
+    steps: Steps,
 }
 
 /// One node as the renderer traces it.
@@ -70,33 +76,32 @@ impl NodeIdentity {
 }
 
 impl Preparation {
-    /// Prepares `nodes` and `environment` for tracing.
-    pub(crate) fn new(nodes: &[Node], environment: &Option<Arc<dyn Environment>>) -> Preparation {
+    /// Prepares `nodes` and `environment` for tracing with `steps`.
+    pub(crate) fn new(nodes: &[Node], environment: &Option<Arc<dyn Environment>>, steps: Steps) -> Preparation {
         let prepare = |node: &Node| {
-            let (shape, material) = (Shape::of(node), Material::of(&node.shader));
+            let (shape, material) = (Shape::of(node, steps), Material::of(&node.shader, steps));
             let workbook = shape.is_workbook() && material.is_workbook();
             PreparedNode { shape, material, dispersive: node.shader.is_dispersive(), workbook }
         };
         Preparation {
-            node_tree: NodeTree::build(nodes),
+            node_tree: if steps.has(Step::NodeTree) { NodeTree::build(nodes) } else { None },
             nodes: nodes.iter().map(prepare).collect(),
-            sky: Sky::of(environment),
+            sky: Sky::of(environment, steps),
             made_from: nodes.iter().map(NodeIdentity::of).collect(),
             made_with: environment_identity(environment),
+            steps,
         }
     }
 
     /// What a ray that hits nothing sees in the direction `dir`.
     #[inline(always)]
     pub(crate) fn sky(&self, dir: Vector) -> Color {
-        beyond!(StaticDispatch);
         self.sky.get(dir)
     }
 
     /// The nearest of the nodes hit by the ray: where, and the node's index.
     #[inline(always)]
     pub(crate) fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, usize)> {
-        beyond!(StaticDispatch);
         let nodes = PreparedNodes { nodes: &self.nodes, ray };
         match &self.node_tree {
             Some(tree) => tree.nearest_of(&nodes, ray),
@@ -118,6 +123,25 @@ impl Preparation {
         node.shape.workbook_surface(ray, hit)
     }
 
+    /// Whether node `i` is the workbook's own shape under the workbook's own shaders (see
+    /// [`Preparation::workbook_surface`]).
+    #[inline(always)]
+    pub(crate) fn is_workbook(&self, i: usize) -> bool {
+        self.nodes[i].workbook
+    }
+
+    /// The slide's loop over the nodes, each intersected in full: the closest hit, its node's index, and
+    /// whether its normal was of unit length ([`crate::lesson::scene::Scene::closest_by_loop`]).
+    #[inline(always)]
+    pub(crate) fn closest_by_loop(&self, ray: &Ray) -> Option<(IntersectionInfo, usize, bool)> {
+        closest_of(self.nodes.len(), |i, t_max| self.nodes[i].shape.intersect(ray, t_max))
+    }
+
+    /// Whether any node is hit before `t_max`, each intersected in full in turn (the slide's shadow ray).
+    pub(crate) fn any_by_loop(&self, ray: &Ray, t_max: f32) -> bool {
+        self.nodes.iter().any(|node| node.shape.intersect(ray, t_max).is_some())
+    }
+
     /// Whether node `i`'s shader is dispersive.
     #[inline(always)]
     pub(crate) fn is_dispersive(&self, i: usize) -> bool {
@@ -133,7 +157,6 @@ impl Preparation {
     /// Whether any of the nodes is hit by the ray before `t_max`.
     #[inline(always)]
     pub(crate) fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
-        beyond!(StaticDispatch);
         let nodes = PreparedNodes { nodes: &self.nodes, ray };
         match &self.node_tree {
             Some(tree) => tree.any_of(&nodes, ray, t_max),
@@ -144,13 +167,13 @@ impl Preparation {
     /// The colour node `i`'s shader gives the hit.
     #[inline(always)]
     pub(crate) fn shade(&self, i: usize, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        beyond!(StaticDispatch);
         self.nodes[i].material.shade(ray, info, ctx)
     }
 
-    /// Whether this preparation was made from exactly `nodes` and `environment`.
-    pub(crate) fn describes(&self, nodes: &[Node], environment: &Option<Arc<dyn Environment>>) -> bool {
-        self.made_from.len() == nodes.len()
+    /// Whether this preparation was made from exactly `nodes` and `environment`, for `steps`.
+    pub(crate) fn describes(&self, nodes: &[Node], environment: &Option<Arc<dyn Environment>>, steps: Steps) -> bool {
+        self.steps == steps
+            && self.made_from.len() == nodes.len()
             && self.made_from.iter().zip(nodes).all(|(id, n)| *id == NodeIdentity::of(n))
             && self.made_with == environment_identity(environment)
     }

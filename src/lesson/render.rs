@@ -4,9 +4,10 @@
 //! (seed, x, y) (see [`crate::lesson::rng`]), and its samples are averaged in a fixed order, so the frame is the same
 //! bit for bit whatever the thread count.
 //!
-//! Anti-aliasing: with `spp` samples per pixel, a square `spp` (4, 9, 16, ...) is a jittered k x k grid;
-//! any other count uses N-rooks (Latin hypercube) stratification, one sample in each column and each row
-//! of an N x N grid. One sample per pixel goes through the pixel's centre.
+//! Anti-aliasing: one sample per pixel goes through the pixel's centre; more go to random points of the
+//! pixel, as on the slides, or, with the step [`Step::StratifiedAa`], a square `spp` (4, 9, 16, ...) to a
+//! jittered k x k grid and any other count to N-rooks (Latin hypercube) stratification, one sample in each
+//! column and each row of an N x N grid.
 //!
 //! Dispersion (see [`crate::lesson::spectral`]): a scene whose shaders depend on the wavelength is traced once per
 //! wavelength band (the slide's K passes; each pass of a pixel has its own random stream, keyed by the pass)
@@ -19,6 +20,7 @@
 //! light, whatever `wavelengths` says.
 
 use crate::lesson::adaptive_aa;
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
 use crate::lesson::diagnostics::{Problems, undeclared_dispersion};
@@ -184,9 +186,13 @@ pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
         .map_err(|e| Error::parameter("thread count", threads.unwrap_or(0), e))
 }
 
-/// Where in its pixel each anti-aliasing sample goes (see the module documentation).
+/// Where in its pixel each anti-aliasing sample goes: through its centre for one sample; for more, random
+/// points of the pixel (the slide's) or, with the step [`Step::StratifiedAa`], stratified ones (see the module
+/// documentation).
 pub struct Stratifier {
     spp: u32,
+    /// Whether the samples are stratified ([`Step::StratifiedAa`]).
+    stratified: bool,
     /// k when spp = k * k (a jittered grid), else 0 (N-rooks).
     grid: u32,
     /// N-rooks: the key of the current pixel's random permutation of the rows (see [`shuffled_index`]).
@@ -194,16 +200,17 @@ pub struct Stratifier {
 }
 
 impl Stratifier {
-    /// The sample positions for `spp` samples per pixel: a jittered grid when `spp` is a square, else N-rooks.
-    pub fn new(spp: u32) -> Stratifier {
+    /// The sample positions for `spp` samples per pixel under `steps`: random ones, or, with the step, a
+    /// jittered grid when `spp` is a square and N-rooks otherwise.
+    pub fn new(spp: u32, steps: Steps) -> Stratifier {
         let k = (spp as f64).sqrt().round() as u32;
-        Stratifier { spp, grid: if k * k == spp { k } else { 0 }, rows_key: 0 }
+        let stratified = steps.has(Step::StratifiedAa);
+        Stratifier { spp, stratified, grid: if k * k == spp { k } else { 0 }, rows_key: 0 }
     }
 
     /// Prepares the samples of a new pixel: N-rooks draws the pixel's permutation of the rows.
     pub fn start_pixel(&mut self, rng: &mut Rng) {
-        beyond!(StratifiedAa);
-        if self.grid == 0 && self.spp > 1 {
+        if self.stratified && self.grid == 0 && self.spp > 1 {
             self.rows_key = rng.next_u32();
         }
     }
@@ -214,6 +221,10 @@ impl Stratifier {
         if self.spp == 1 {
             return (0.5, 0.5);
         }
+        if !self.stratified {
+            return (rng.next_f32(), rng.next_f32());
+        }
+        beyond!(StratifiedAa);
         let (col, row, n) = match self.grid {
             0 => (s, shuffled_index(s, self.spp, self.rows_key), self.spp),
             k => (s % k, s / k, k),
@@ -248,9 +259,11 @@ pub fn render_with_progress(
     RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render(progress)
 }
 
-/// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive.
+/// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive, the slide's K
+/// passes when the scene does not take the step [`Step::HeroWavelengths`].
 pub fn spectral_plan(scene: &Scene, settings: &RenderSettings) -> SpectralPlan {
-    SpectralPlan::new(scene.is_dispersive(), settings.spectral, settings.wavelengths, scene.illuminant)
+    let mode = if scene.steps.has(Step::HeroWavelengths) { settings.spectral } else { SpectralMode::Passes };
+    SpectralPlan::new(scene.is_dispersive(), mode, settings.wavelengths, scene.illuminant)
 }
 
 /// Renders the scene with the given wavelength plan, whether or not the scene needs it (tests use this to
@@ -337,9 +350,7 @@ impl<'a> RenderJob<'a> {
     /// ([`undeclared_dispersion`]).
     pub fn stats(&self, elapsed: Duration, threads: usize, mut counters: Counters) -> RenderStats {
         let (w, h) = (self.settings.width, self.settings.height);
-        let hits = |scene: &Scene, ray: &Ray| scene.intersects(ray, f32::INFINITY);
-        let trace = |scene: &Scene, rng, ray: &Ray| TraceContext::new(scene, rng).raytrace(ray);
-        counters.problems.undeclared_dispersion = undeclared_dispersion(&self.scene, &self.camera, w, h, hits, trace);
+        counters.problems.undeclared_dispersion = undeclared_dispersion(&self.scene, &self.camera, w, h);
         RenderStats {
             elapsed,
             threads,
@@ -510,7 +521,7 @@ impl<'j> PixelTracer<'j> {
             if settings.adaptive_aa { adaptive_aa::SAMPLES_PER_REFINED_PIXEL } else { settings.spp };
         let mut ctx = TraceContext::new(&job.scene, Rng::for_keys(&[]));
         ctx.observer = observer;
-        PixelTracer { job, ctx, stratifier: Stratifier::new(settings.spp), samples_per_pixel }
+        PixelTracer { job, ctx, stratifier: Stratifier::new(settings.spp, job.scene.steps), samples_per_pixel }
     }
 
     /// Starts the samples of a pixel (or of one wavelength pass of it) whose random stream is keyed by

@@ -12,6 +12,7 @@
 //! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
 //! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
 
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
@@ -21,14 +22,13 @@ use crate::lesson::error::Result;
 use crate::lesson::geometry::{Hit, IntersectionInfo};
 use crate::lesson::light::PointLight;
 use crate::lesson::math::{Vector, max_abs};
-use crate::lesson::node::{Node, nearest_of};
+use crate::lesson::node::{Node, closest_of, nearest_of};
 use crate::lesson::observer::{Observer, Stop};
 use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::prepared::Preparation;
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
 use crate::lesson::shader::Layer;
-use crate::lesson::slide::{self, Slides};
 use crate::lesson::spectral::Illuminant;
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -72,8 +72,12 @@ pub struct Scene {
     /// Rays deeper than this return black (the slide's `MAX_RAY_DEPTH`).
     pub max_depth: u32,
     /// Rays whose `weight` is below this return black without being traced (adaptive ray-tree depth
-    /// control). [`srgb8_finest_step`] by default; 0 traces every ray to `max_depth` (`--exhaustive`).
+    /// control, the step [`Step::AdaptiveDepth`]). [`srgb8_finest_step`] by default; 0 traces every ray to
+    /// `max_depth`, as the render does without the step (`--exhaustive`, `--slide`).
     pub min_ray_weight: f32,
+    /// Which steps beyond the slides the render takes ([`crate::lesson::beyond`]): every one by default,
+    /// none with `--slide` ([`Steps::SLIDES`]).
+    pub steps: Steps,
     /// How the caustic photon map is made (no photons by default).
     pub photons: PhotonSettings,
     /// The spectrum a white light stands for when wavelengths are traced (a dispersive scene): D65 by default.
@@ -100,6 +104,7 @@ impl Scene {
             ambient: Color::BLACK,
             max_depth: MAX_RAY_DEPTH,
             min_ray_weight: srgb8_finest_step(),
+            steps: Steps::default(),
             photons: PhotonSettings::default(),
             illuminant: Illuminant::default(),
             photon_map: None,
@@ -127,9 +132,13 @@ impl Scene {
     /// Directions and distances are the same as in the world; a shader or texture that needs where a point
     /// is in the world the scene was built in (bands at fixed heights) asks [`Scene::world_position`].
     ///
-    /// Deviation from the slides: the course always renders in world coordinates; in f32, a scene moved
-    /// 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
+    /// A step beyond the slides ([`Step::CameraRelative`]): the course always renders in world coordinates;
+    /// in f32, a scene moved 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
+    /// A scene whose `steps` leave it out is left as it is.
     pub fn relative_to_camera(&mut self) {
+        if !self.steps.has(Step::CameraRelative) {
+            return;
+        }
         let camera = self.camera.position;
         let farthest = self
             .nodes
@@ -198,6 +207,7 @@ impl Scene {
             ambient: self.ambient,
             max_depth: self.max_depth,
             min_ray_weight: self.min_ray_weight,
+            steps: self.steps,
             photons: self.photons,
             illuminant: self.illuminant,
             photon_map: None,
@@ -206,15 +216,15 @@ impl Scene {
         }
     }
 
-    /// The scene ready to be traced: itself if it was prepared already and its nodes have not changed since,
-    /// else a copy prepared for its nodes ([`crate::lesson::prepared`]: the BVH over its nodes, if it has
-    /// enough of them). The renderer and the photon tracer trace the prepared scene; preparing it once
+    /// The scene ready to be traced: itself if it was prepared already and its nodes and steps have not
+    /// changed since, else a copy prepared for them ([`crate::lesson::prepared`]: the BVH over its nodes, if
+    /// it has enough of them and takes that step). The renderer and the photon tracer trace the prepared scene; preparing it once
     /// before both saves the second preparation.
     pub fn prepared(&self) -> Cow<'_, Scene> {
         match &self.preparation {
-            Some(p) if p.describes(&self.nodes, &self.environment) => Cow::Borrowed(self),
+            Some(p) if p.describes(&self.nodes, &self.environment, self.steps) => Cow::Borrowed(self),
             _ => {
-                let preparation = Preparation::new(&self.nodes, &self.environment);
+                let preparation = Preparation::new(&self.nodes, &self.environment, self.steps);
                 Cow::Owned(Scene { preparation: Some(Arc::new(preparation)), ..self.clone() })
             }
         }
@@ -242,8 +252,8 @@ impl Scene {
         format!("{} #{}", node.geometry.name(), index.map_or("?".to_string(), |i| i.to_string()))
     }
 
-    /// The nearest node hit by the ray, and where (the first phase of [`Scene::closest_hit`]: [`Node::hit`]
-    /// on every node, or on the nodes the node tree leads the ray to).
+    /// The nearest node hit by the ray, and where (the first phase of the two-phase hit, [`Step::TwoPhaseHit`]:
+    /// [`Node::hit`] on every node, or on the nodes the node tree leads the ray to).
     #[inline(always)]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, &Node)> {
         self.nearest_hit_index(ray).map(|(hit, i)| (hit, &self.nodes[i]))
@@ -252,27 +262,40 @@ impl Scene {
     /// [`Scene::nearest_hit`], the node given by its index.
     #[inline(always)]
     fn nearest_hit_index(&self, ray: &Ray) -> Option<(Hit, usize)> {
-        beyond!(TwoPhaseHit);
         match &self.preparation {
             Some(p) => p.nearest_hit(ray),
             None => nearest_of(&(&self.nodes[..], ray), ray),
         }
     }
 
-    /// The closest node hit by the ray, and its surface there: the nearest hit is found first
-    /// ([`Scene::nearest_hit`]), and only the winner's surface is described ([`Node::surface`]).
+    /// The closest node hit by the ray, and its surface there: the slide's loop over the nodes, each
+    /// intersected in full ([`Scene::closest_by_loop`]), or, with the step [`Step::TwoPhaseHit`], the nearest
+    /// hit found first ([`Scene::nearest_hit`]) and only the winner's surface described ([`Node::surface`]).
     #[inline(always)]
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {
         self.checked_closest_hit(ray).map(|(info, i, _)| (info, &self.nodes[i]))
     }
 
     /// [`Scene::closest_hit`], the node given by its index, and whether the geometry gave a unit normal
-    /// ([`Node::checked_surface`]). Inlined into `raytrace`, so that the surface description is written
-    /// once, where the shader reads it.
+    /// ([`Node::checked_surface`]).
     #[inline(always)]
     pub(crate) fn checked_closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, usize, bool)> {
+        if !self.steps.has(Step::TwoPhaseHit) {
+            return self.closest_by_loop(ray);
+        }
+        beyond!(TwoPhaseHit);
         let (hit, i) = self.nearest_hit_index(ray)?;
         self.surface(i, ray, &hit)
+    }
+
+    /// The slide's closest hit ("Model трансформация"): every node in turn intersected in full
+    /// ([`Node::intersect`]), each searched up to the closest hit so far, so that a node added earlier keeps
+    /// a tie; the node's index, and whether its geometry gave a unit normal.
+    pub(crate) fn closest_by_loop(&self, ray: &Ray) -> Option<(IntersectionInfo, usize, bool)> {
+        match &self.preparation {
+            Some(p) => p.closest_by_loop(ray),
+            None => closest_of(self.nodes.len(), |i, t_max| self.nodes[i].checked_intersect(ray, t_max)),
+        }
     }
 
     /// The surface of node `i` where the ray hit it ([`Node::checked_surface`]), the index, and whether the
@@ -286,11 +309,14 @@ impl Scene {
         Some((info, i, unit_normal))
     }
 
-    /// Whether anything is hit by the ray before `t_max`.
+    /// Whether anything is hit by the ray before `t_max`: the slide's loop over the nodes, each intersected
+    /// in full, or, with the step [`Step::TwoPhaseHit`], each node's cheaper any-hit test (through the node
+    /// tree, with that step).
     #[inline(always)]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         match &self.preparation {
-            Some(p) => p.intersects(ray, t_max),
+            Some(p) if self.steps.has(Step::TwoPhaseHit) => p.intersects(ray, t_max),
+            Some(p) => p.any_by_loop(ray, t_max),
             None => self.nodes.iter().any(|node| node.intersects(ray, t_max)),
         }
     }
@@ -371,9 +397,6 @@ pub struct TraceContext<'a> {
     /// Set when a ray that carries a wavelength hits a node whose shader depends on it: from there on the
     /// path is its wavelength's own (hero-wavelength sampling splits there; see [`crate::lesson::render`]).
     pub met_dispersion: bool,
-    /// Set when the slides' reading renders (`--slide`, [`crate::lesson::slide`]): `raytrace`, `visible` and
-    /// the light loop then run the slides' own versions, for the workbook's shaders and a student's alike.
-    pub(crate) slides: Option<&'a Slides<'a>>,
     /// What `raytrace` keeps of the shaders running, which bounds their rays ([`crate::lesson::branching`]).
     pub(crate) shading: Shading<'a>,
 }
@@ -388,7 +411,6 @@ impl<'a> TraceContext<'a> {
             counters: Counters::default(),
             observer: None,
             met_dispersion: false,
-            slides: None,
             shading: Shading::camera(),
         }
     }
@@ -405,9 +427,6 @@ impl<'a> TraceContext<'a> {
     /// point's budget is not traced and brings back its siblings' mean colour ([`crate::lesson::branching`]).
     #[inline(always)]
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
-        if self.slides.is_some() {
-            return slide::raytrace(self, ray);
-        }
         if self.observer.is_some() {
             return self.raytrace_watched(ray);
         }
@@ -426,9 +445,11 @@ impl<'a> TraceContext<'a> {
         self.trace::<true>(ray)
     }
 
-    /// `raytrace`, telling the observer what it does when `WATCHED`. Unwatched, a prepared scene's nodes
-    /// are shaded through their prepared materials ([`crate::lesson::dispatch`]); watched, through their
-    /// shaders, whose layers the observer sees.
+    /// `raytrace`, telling the observer what it does when `WATCHED`: the slide's `raytrace` ("Reflection
+    /// v0.2"), with the guards that hold in both readings (the safety cap, the branching bound) and the steps
+    /// the scene takes (adaptive depth control, the two-phase hit). Unwatched, a prepared scene's nodes are
+    /// shaded through their prepared materials ([`crate::lesson::dispatch`]); watched, through their shaders,
+    /// whose layers the observer sees.
     #[inline(always)]
     fn trace<const WATCHED: bool>(&mut self, ray: &Ray) -> Color {
         if WATCHED {
@@ -441,8 +462,8 @@ impl<'a> TraceContext<'a> {
             self.counters.capped_rays += 1;
             return self.stop::<WATCHED>(Stop::SafetyCap);
         }
-        beyond!(AdaptiveDepth);
-        if ray.weight < self.scene.min_ray_weight {
+        if ray.weight < self.scene.min_ray_weight && self.scene.steps.has(Step::AdaptiveDepth) {
+            beyond!(AdaptiveDepth);
             self.counters.pruned_rays += 1;
             return self.stop::<WATCHED>(Stop::WeightCutoff);
         }
@@ -455,15 +476,20 @@ impl<'a> TraceContext<'a> {
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
         let scene = self.scene;
-        let (color, stop) = match scene.nearest_hit_index(ray) {
-            Some((hit, i)) => match scene.preparation() {
-                Some(prepared) if !WATCHED => match prepared.workbook_surface(i, ray, &hit) {
-                    Some(info) => (self.shade_workbook_hit(prepared, i, ray, &info), None),
-                    None => self.shade_any_hit::<WATCHED>(i, ray, &hit),
+        let (color, stop) = if !scene.steps.has(Step::TwoPhaseHit) {
+            self.trace_by_loop::<WATCHED>(ray)
+        } else {
+            beyond!(TwoPhaseHit);
+            match scene.nearest_hit_index(ray) {
+                Some((hit, i)) => match scene.preparation() {
+                    Some(prepared) if !WATCHED => match prepared.workbook_surface(i, ray, &hit) {
+                        Some(info) => (self.shade_workbook_hit(prepared, i, ray, &info), None),
+                        None => self.shade_any_hit::<WATCHED>(i, ray, &hit),
+                    },
+                    _ => self.shade_any_hit::<WATCHED>(i, ray, &hit),
                 },
-                _ => self.shade_any_hit::<WATCHED>(i, ray, &hit),
-            },
-            None => (self.environment(ray), Some(Stop::Missed)),
+                None => (self.environment(ray), Some(Stop::Missed)),
+            }
         };
         self.shading.traced(color);
         if WATCHED {
@@ -482,13 +508,43 @@ impl<'a> TraceContext<'a> {
         let Some((info, i, unit_normal)) = scene.surface(i, ray, hit) else {
             return (self.environment(ray), Some(Stop::Missed));
         };
+        self.shade_found::<WATCHED>(i, ray, &info, unit_normal)
+    }
+
+    /// `raytrace`'s hit as the slide finds it ([`Scene::closest_by_loop`]: every node intersected in full),
+    /// shaded as the two-phase hit's is: the usual case without the step [`Step::TwoPhaseHit`], kept out of
+    /// the default reading's `raytrace`.
+    #[inline(never)]
+    fn trace_by_loop<const WATCHED: bool>(&mut self, ray: &Ray) -> (Color, Option<Stop>) {
+        let scene = self.scene;
+        match scene.closest_by_loop(ray) {
+            Some((info, i, unit_normal)) => match scene.preparation() {
+                Some(prepared) if !WATCHED && prepared.is_workbook(i) => {
+                    (self.shade_workbook_hit(prepared, i, ray, &info), None)
+                }
+                _ => self.shade_found::<WATCHED>(i, ray, &info, unit_normal),
+            },
+            None => (self.environment(ray), Some(Stop::Missed)),
+        }
+    }
+
+    /// The colour of the hit `info` of `ray` on node `i`, any node, told to the observer when `WATCHED`.
+    #[inline(always)]
+    fn shade_found<const WATCHED: bool>(
+        &mut self,
+        i: usize,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        unit_normal: bool,
+    ) -> (Color, Option<Stop>) {
+        let scene = self.scene;
         let node = &scene.nodes[i];
         if WATCHED {
-            self.observe(|o| o.ray_hits(scene, node, &info));
+            self.observe(|o| o.ray_hits(scene, node, info));
         }
         self.met_dispersion |= ray.wavelength.is_some()
             && scene.preparation().map_or_else(|| node.shader.is_dispersive(), |p| p.is_dispersive(i));
-        (self.shade_hit::<WATCHED>(i, ray, &info, unit_normal), None)
+        (self.shade_hit::<WATCHED>(i, ray, info, unit_normal), None)
     }
 
     /// What a ray that hit nothing sees: the environment, or black.
@@ -543,9 +599,6 @@ impl<'a> TraceContext<'a> {
     /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
     #[inline(always)]
     pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
-        if self.slides.is_some() {
-            return slide::visible(self, from, to);
-        }
         self.counters.shadow_rays += 1;
         let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
         let to_light = to - start;

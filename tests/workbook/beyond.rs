@@ -1,17 +1,19 @@
-//! Each step beyond the slides (src/lesson/beyond.rs) computes what the slide's version
-//! (src/lesson/slide/) computes: the exact steps give the same hits, the filters and samplers the same means.
+//! Each step beyond the slides (src/lesson/beyond.rs) computes what the slide's version beside it computes:
+//! the exact steps give the same hits, the filters and samplers the same means.
 //! The steps that already have tests of their own against the slide's version: adaptive depth control
 //! (layered_fresnel: within one level of `--exhaustive`), layer pruning (layered_fresnel: the slide's loop),
 //! the mesh BVH (mesh: brute force), camera-relative coordinates (stress: scenes moved 1e6 away), and every
 //! example against `--slide` (slide). Static dispatch is tested here against the trait objects it replaces.
 
+use crate::common::hidden::through_trait_objects;
 use crate::common::{examples, parse, random_unit, root};
+use lecture6::lesson::beyond::{Step, Steps};
 use lecture6::lesson::bitmap::{Bitmap, Filter, Wrap};
 use lecture6::lesson::camera::Camera;
 use lecture6::lesson::color::Color;
-use lecture6::lesson::dispatch::through_trait_objects;
 use lecture6::lesson::geometry::{Cube, Mesh, Plane, Sphere};
 use lecture6::lesson::math::Vector;
+use lecture6::lesson::math::floor;
 use lecture6::lesson::node::Node;
 use lecture6::lesson::photon_map::PhotonMap;
 use lecture6::lesson::ray::Ray;
@@ -20,7 +22,6 @@ use lecture6::lesson::rng::Rng;
 use lecture6::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use lecture6::lesson::scene::Scene;
 use lecture6::lesson::shader::Lambert;
-use lecture6::lesson::slide;
 use std::sync::Arc;
 
 /// Twenty nodes (more than the node tree's threshold): spheres, cubes, transformed teapots sharing one mesh,
@@ -50,26 +51,28 @@ fn crowded_scene() -> Scene {
 }
 
 /// The two-phase nearest hit through the node tree finds the node and the point that the slides' loop of
-/// `Node::intersect` finds (the mesh's BVH and the slide's triangle loop included): on 99.9% of the rays
+/// `Node::intersect` finds (the mesh's BVH against its triangles one by one included): on 99.9% of the rays
 /// that hit, the same node, and the distance within 1e-4 relative everywhere but at triangle edges.
 #[test]
 fn the_node_tree_and_two_phase_hit_find_the_slides_closest_hit() {
     let scene = crowded_scene().prepared().into_owned();
-    let slide_nodes = slide::model_transform::slide_nodes(&scene.nodes);
+    let mut slides = crowded_scene();
+    slides.steps = Steps::SLIDES;
+    let slides = slides.prepared().into_owned();
     let mut rng = Rng::for_keys(&[8]);
     let (mut hits, mut same) = (0, 0);
     for _ in 0..20_000 {
         let start = random_unit(&mut rng) * 80.0;
         let target = (Vector::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - 0.5) * 60.0;
         let ray = Ray::new(start, (target - start).normalize());
-        let slide = slide::model_transform::closest_hit(&slide_nodes, &ray);
-        let default = scene.closest_hit(&ray);
+        let slide = slides.closest_hit(&ray).map(|(info, node)| (info, slides.node_name(node)));
+        let default = scene.closest_hit(&ray).map(|(info, node)| (info, scene.node_name(node)));
         match (slide, default) {
             (None, None) => {}
             (Some((a, node_a)), Some((b, node_b))) => {
                 hits += 1;
                 let close = (a.distance - b.distance).abs() <= 1e-4 * a.distance;
-                same += (std::ptr::eq(node_a, node_b) && close && (a.ip - b.ip).length() <= 1e-3 * a.distance) as u32;
+                same += (node_a == node_b && close && (a.ip - b.ip).length() <= 1e-3 * a.distance) as u32;
             }
             (a, b) => panic!("{ray:?}: the slide's loop hits {}, the default {}", a.is_some(), b.is_some()),
         }
@@ -93,7 +96,8 @@ fn bilinear_texels_keep_the_slides_mean_and_nearest_is_the_slides_texel() {
     for i in 0..n {
         for j in 0..n {
             let (u, v) = ((i as f32 + 0.5) / n as f32 * 3.0 - 1.0, (j as f32 + 0.5) / n as f32 * 2.0 - 0.5);
-            let texel = slide::bitmap_textures::texel(&bitmap, u, v, wrap);
+            let (x, y) = (floor(u * w as f32) as i64, floor(v * h as f32) as i64);
+            let texel = bitmap.get_pixel(wrap.0.texel(x, w), wrap.1.texel(y, h));
             assert_eq!(texel, bitmap.sample(u, v, Filter::Nearest, wrap), "nearest at ({u}, {v})");
             slide += texel;
             bilinear += bitmap.sample(u, v, Filter::Bilinear, wrap);
@@ -139,7 +143,9 @@ fn stratified_and_joint_disc_points_have_the_slides_moments() {
 fn aimed_photons_in_a_grid_carry_the_slides_caustic() {
     let (scene, _) = parse::<examples::photon_map::Options>(&["--width", "64", "--height", "48"]).prepare().unwrap();
     let default = scene.photon_map.clone().expect("the example builds a photon map");
-    let slide = slide::photon_mapping::PhotonMap::build(&scene, 1).unwrap().expect("a slide photon map");
+    let mut slides = scene.clone();
+    slides.steps = scene.steps.without(Step::PhotonGrid);
+    let slide = PhotonMap::build(&slides, 1).unwrap().expect("a slide photon map");
     let flux = |photons: &[lecture6::lesson::photon_map::StoredPhoton]| -> f64 {
         photons.iter().map(|p| p.power.to_array().iter().map(|&c| c as f64).sum::<f64>()).sum()
     };
@@ -152,7 +158,6 @@ fn aimed_photons_in_a_grid_carry_the_slides_caustic() {
     let up = Vector::Y;
     let (a, b) = (estimates(&|p| default.irradiance(p, up)), estimates(&|p| slide.irradiance(p, up)));
     assert!((a - b).abs() <= 0.10 * a, "estimates at the caustic: {a} by default, {b} on the slide's map");
-    let _: &PhotonMap = &default;
 }
 
 /// Static dispatch computes what the trait objects compute: every example renders the same picture bit for

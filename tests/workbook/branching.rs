@@ -92,8 +92,13 @@ fn a_full_weight_average_traces_rays_linear_in_the_depth() {
     // It goes DEPTH deep where the workbook's does: nothing is pruned for its weight.
     let (_, own) = rendered(&workbook(), 1);
     assert!(c.rays_by_depth[DEPTH as usize] > 0 && own.counters.rays_by_depth[DEPTH as usize] > 0);
-    // The workbook's own glossy never reaches the bound: it caps its rays itself.
-    assert_eq!(own.counters.shared_rays, 0);
+    // The workbook's own glossy is bounded by the same rule below the split depth, and by nothing else: its
+    // deeper levels hold no more rays than the one above them either.
+    assert!(own.counters.shared_rays > 0, "the workbook's glossy was never bounded: {:?}", own.counters);
+    for depth in SPLIT_DEPTH as usize + 2..=DEPTH as usize {
+        let rays = own.counters.rays_by_depth;
+        assert!(rays[depth] <= rays[depth - 1], "the workbook's glossy at depth {depth}: {rays:?}");
+    }
 }
 
 /// The mean difference of two pictures and its standard error, per channel, over the pixels `(x, y)` for

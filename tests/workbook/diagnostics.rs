@@ -211,7 +211,9 @@ fn a_shader_that_reads_the_wavelength_without_saying_so_is_named() {
         assert_eq!(stats.spectral, SpectralPlan::White, "{name}: traced in white light");
         let line = line(&stats, "is_dispersive");
         assert!(line.contains(name) && !line.contains("Sphere"), "{name}: {line}");
-        let slides = lecture6::lesson::slide::render(&scene, &settings()).unwrap().1;
+        let mut slides = scene.clone();
+        slides.steps = lecture6::lesson::beyond::Steps::SLIDES;
+        let slides = render(&slides, &settings()).unwrap().1;
         assert!(
             slides.warnings.iter().any(|l| l.contains("is_dispersive") && l.contains(name)),
             "{:?}",

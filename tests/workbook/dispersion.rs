@@ -7,6 +7,7 @@ use crate::common;
 use common::examples::{bitmap_textures, dispersion};
 use glam::{DMat3, DVec3};
 use lecture6::app::cli::Example;
+use lecture6::instruments::tone_mapping::Film;
 use lecture6::lesson::color::Color;
 use lecture6::lesson::environment::{ConstantEnvironment, Environment};
 use lecture6::lesson::frame::Frame;
@@ -22,7 +23,6 @@ use lecture6::lesson::spectral::{
     Band, GamutMapping, Illuminant, Ior, LAMBDA_C, LAMBDA_D, LAMBDA_F, LAMBDA_MAX, LAMBDA_MIN, SpectralPlan, bands,
     cie_xyz, fit_to_gamut, xyz_to_linear_srgb,
 };
-use lecture6::lesson::tone_mapping::Film;
 use std::sync::Arc;
 
 const SMALL: [&str; 4] = ["--width", "96", "--height", "72"];

@@ -6,6 +6,7 @@ use crate::common;
 use common::examples::glossy;
 use lecture6::Color;
 use lecture6::app::cli::Example;
+use lecture6::lesson::branching::SPLIT_DEPTH;
 use lecture6::lesson::camera::Camera;
 use lecture6::lesson::environment::Environment;
 use lecture6::lesson::geometry::Plane;
@@ -15,7 +16,7 @@ use lecture6::lesson::render::{RenderJob, RenderSettings, render, spectral_plan}
 use lecture6::lesson::rng::Rng;
 use lecture6::lesson::sampling::{DiscSampler, DiscSamples};
 use lecture6::lesson::scene::Scene;
-use lecture6::lesson::shader::{GLOSSY_SPLIT_DEPTH, GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
+use lecture6::lesson::shader::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 use std::sync::{Arc, Mutex};
 
 fn small(spp: u32) -> RenderSettings {
@@ -157,7 +158,8 @@ fn secondary_glossy_bounces_trace_two_rays() {
 fn facing_white_glossy_mirrors_trace_rays_in_proportion_to_the_depth() {
     // Two white glossy mirrors facing each other: their rays keep the full weight, so adaptive depth control
     // never prunes them. Splitting every bounce in two would trace 2^depth rays per camera ray (a hang for a
-    // scene file's `maxTraceDepth 60`); below GLOSSY_SPLIT_DEPTH each bounce traces one ray.
+    // scene file's `maxTraceDepth 60`); below the core's SPLIT_DEPTH each bounce traces one ray, the other
+    // shares its colour (the branching bound).
     let mut scene =
         Scene::new(Camera { position: Vector::new(0.0, 5.0, 0.0), pitch: -50.0, fov: 40.0, ..Camera::default() });
     for y in [0.0, 10.0] {
@@ -168,7 +170,7 @@ fn facing_white_glossy_mirrors_trace_rays_in_proportion_to_the_depth() {
     let settings = RenderSettings { width: 8, height: 6, spp: 1, threads: Some(2), ..RenderSettings::default() };
     let (_, stats) = render(&scene, &settings).unwrap();
     let rays = stats.counters.rays_by_depth;
-    let split = GLOSSY_SPLIT_DEPTH as usize;
+    let split = SPLIT_DEPTH as usize;
     assert_eq!(rays[1], 4 * rays[0], "every camera ray hits the floor and traces num_samples rays");
     assert_eq!(rays[split + 1], SECONDARY_GLOSSY_SAMPLES as u64 * rays[split], "the last split doubles the rays");
     for depth in split + 2..=14 {

@@ -1,4 +1,5 @@
-//! `--slide`, the slides' reading (src/lesson/slide/): every example renders through it, and its picture is
+//! `--slide`, the slides' reading (every step beyond the slides left out, src/lesson/beyond.rs): every example
+//! renders through it, and its picture is
 //! close to the default one: at 160x120 and the example's own spp, a PSNR of at least 24 dB against the
 //! default picture (or, where the default picture is noisier than that from one seed to another, at most
 //! 2 dB below that seed-to-seed PSNR), and a mean brightness within 5%. docs/beyond-the-slides.md says why
@@ -72,16 +73,18 @@ fn a_copy_renders_with_slide_and_side_by_side() {
     assert_eq!(image.width(), 3 * 160, "A | B | difference");
 }
 
-/// What `--slide` cannot honour is refused, naming the option.
+/// One renderer serves both readings: the instruments that watch it work under `--slide` too, and a choice
+/// that needs a step `--slide` leaves out is refused, naming the option and the step.
 #[test]
-fn slide_refuses_the_default_readings_instruments() {
-    for (option, args) in [
-        ("--trace-pixel", &["--trace-pixel", "10,10"][..]),
-        ("--view", &["--view", "normals"]),
-        ("--adaptive-aa", &["--spp", "1", "--adaptive-aa"]),
-    ] {
-        let output = run_example("fresnel", &[&SIZE[..], &["--slide", "-q"], args].concat());
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        assert!(!output.status.success() && stderr.contains(option), "{option}: {stderr}");
+fn the_instruments_work_in_the_slides_reading() {
+    for args in [&["--trace-pixel", "10,10"][..], &["--view", "normals"], &["--spp", "1", "--adaptive-aa"]] {
+        let out = root().join("target").join("slide").join("instrument.png");
+        let output =
+            run_example("fresnel", &[&SIZE[..], &["--slide", "-q", "-o", out.to_str().unwrap()], args].concat());
+        assert!(output.status.success(), "{args:?}: {}", String::from_utf8_lossy(&output.stderr));
     }
+    let output = run_example("dispersion", &[&SIZE[..], &["--slide", "-q", "--spectral", "hero"]].concat());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--spectral") && stderr.contains("hero-wavelengths"), "{stderr}");
 }

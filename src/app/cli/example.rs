@@ -3,15 +3,15 @@
 
 use super::options::{CommonArgs, MAX_EXHAUSTIVE_DEPTH};
 use super::progress::SampleBar;
+use crate::instruments::tone_mapping::Film;
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::environment;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::photon_map::PhotonMap;
 use crate::lesson::render::{Progress, RenderSettings, RenderStats, render_with_progress, thread_pool};
 use crate::lesson::scene::Scene;
-use crate::lesson::slide;
 use crate::lesson::spectral::SpectralMode;
-use crate::lesson::tone_mapping::Film;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -114,8 +114,11 @@ impl<E: Example> Cli<E> {
     /// file's frame size and anti-aliasing): [`Cli::prepare`] gives the ones the render uses.
     pub(crate) fn settings(&self) -> RenderSettings {
         let c = &self.common;
-        // The slides' reading traces the slide's K passes.
-        let spectral = if c.slide { SpectralMode::Passes } else { c.spectral.unwrap_or_default() };
+        // Without hero wavelengths, the slide's K passes.
+        let spectral = match self.steps().has(Step::HeroWavelengths) {
+            true => c.spectral.unwrap_or_default(),
+            false => SpectralMode::Passes,
+        };
         RenderSettings {
             width: c.width.unwrap_or(640),
             height: c.height.unwrap_or(480),
@@ -149,14 +152,12 @@ impl<E: Example> Cli<E> {
         let mut settings = self.settings();
         settings.check()?;
         self.film().check()?;
-        self.check_slide()?;
+        self.check_steps()?;
         // Prepared once, for the photon tracer and the renderer alike.
         let mut scene = self.scene_with_common_options(&mut settings)?.prepared().into_owned();
         settings.check()?;
         check(&scene, &settings)?;
-        if !self.common.slide {
-            self.build_photon_map(&mut scene)?;
-        }
+        self.build_photon_map(&mut scene)?;
         Ok((scene, settings))
     }
 
@@ -165,14 +166,16 @@ impl<E: Example> Cli<E> {
     pub(super) fn scene_with_common_options(&self, settings: &mut RenderSettings) -> Result<Scene> {
         let common = &self.common;
         let mut scene = self.example.scene_and_settings(common, settings)?;
+        scene.steps = self.steps();
         if let Some(depth) = common.max_depth {
-            if common.exhaustive && depth > MAX_EXHAUSTIVE_DEPTH {
+            if !scene.steps.has(Step::AdaptiveDepth) && depth > MAX_EXHAUSTIVE_DEPTH {
                 return Err(Error::parameter(
                     "--max-depth",
                     depth,
                     format!(
-                        "at most {MAX_EXHAUSTIVE_DEPTH} with --exhaustive: nothing prunes the ray tree then, and every \
-                         glass surface splits a ray in two, so a sample's rays can double with each level"
+                        "at most {MAX_EXHAUSTIVE_DEPTH} with --exhaustive or --slide (without the step adaptive-depth): \
+                         nothing prunes the ray tree then, and every glass surface splits a ray in two, so a \
+                         sample's rays can double with each level"
                     ),
                 ));
             }
@@ -180,9 +183,6 @@ impl<E: Example> Cli<E> {
         }
         if let Some(path) = &common.env {
             scene.environment = Some(environment::load_with_layout(path, common.env_layout)?);
-        }
-        if common.exhaustive {
-            scene.min_ray_weight = 0.0;
         }
         if let Some(illuminant) = common.illuminant {
             scene.illuminant = illuminant;
@@ -195,9 +195,7 @@ impl<E: Example> Cli<E> {
             scene.camera.fov = fov;
         }
         scene.check()?;
-        if !common.slide {
-            scene.relative_to_camera();
-        }
+        scene.relative_to_camera();
         common.photons.apply(&mut scene.photons);
         scene.photons.check()?;
         Ok(scene)
@@ -226,36 +224,33 @@ impl<E: Example> Cli<E> {
         let (scene, settings) = self.prepare_checked(check)?;
         let bar = settings.progress.then(SampleBar::on_terminal).flatten();
         let progress = bar.as_ref().map(|bar| bar as &dyn Progress);
-        let (frame, stats) = if self.common.slide {
-            slide::render(&scene, &settings)?
-        } else {
-            render_with_progress(&scene, &settings, progress)?
-        };
+        let (frame, stats) = render_with_progress(&scene, &settings, progress)?;
         Ok((frame, stats, settings))
     }
 
-    /// Refuses, with `--slide`, the options that the slides' reading cannot honour: the instruments that
-    /// watch the default reading, the course's adaptive anti-aliasing and `--show-photons`.
-    fn check_slide(&self) -> Result<()> {
+    /// The steps beyond the slides the options ask for: none with `--slide`, every one by default, then the
+    /// steps `--step` adds and `--no-step` takes away (`--exhaustive` is `--no-step adaptive-depth`).
+    pub fn steps(&self) -> Steps {
         let c = &self.common;
-        if !c.slide {
-            return Ok(());
-        }
-        let refused = given(&[
-            ("--trace-pixel", c.trace_pixel.is_some()),
-            ("--view", c.view.is_some()),
-            ("--window", c.window),
-            ("--adaptive-aa", c.adaptive_aa),
-            ("--show-photons", c.photons.show_photons),
-            ("--spectral", c.spectral.is_some_and(|mode| mode != SpectralMode::Passes)),
-        ]);
-        match refused.first() {
-            Some(option) => Err(Error::parameter(
-                "option",
-                *option,
-                "is not part of --slide, which renders only as the slides write it (docs/beyond-the-slides.md)",
-            )),
-            None => Ok(()),
+        let steps = if c.slide { Steps::SLIDES } else { Steps::ALL };
+        let steps = c.step.iter().fold(steps, |steps, &step| steps.with(step));
+        let steps = c.no_step.iter().fold(steps, |steps, &step| steps.without(step));
+        if c.exhaustive { steps.without(Step::AdaptiveDepth) } else { steps }
+    }
+
+    /// Refuses a choice that needs a step the render does not take: `--spectral hero` or `sampled` without
+    /// the step hero-wavelengths (under `--slide`, the slide's K passes).
+    fn check_steps(&self) -> Result<()> {
+        match self.common.spectral {
+            Some(mode) if mode != SpectralMode::Passes && !self.steps().has(Step::HeroWavelengths) => {
+                Err(Error::parameter(
+                    "--spectral",
+                    format!("{mode:?}").to_lowercase(),
+                    "needs the step hero-wavelengths, which --slide or --no-step leaves out: add --step hero-wavelengths, \
+                 or use the slide's --spectral passes",
+                ))
+            }
+            _ => Ok(()),
         }
     }
 

@@ -26,12 +26,12 @@ impl<E: Example> study::Subject for E {
 mod window {
     use super::super::example::{Cli, Example};
     use super::super::run::one_line;
+    use crate::instruments::tone_mapping::Film;
     use crate::instruments::viewer::ExampleOptions;
     use crate::instruments::viewer::controls::Controls;
     use crate::lesson::error::Result;
     use crate::lesson::render::RenderSettings;
     use crate::lesson::scene::Scene;
-    use crate::lesson::tone_mapping::Film;
     use std::path::{Path, PathBuf};
 
     impl<E: Example> ExampleOptions for Cli<E> {

@@ -3,13 +3,14 @@
 
 use crate::instruments::debug_view::DebugView;
 use crate::instruments::ray_tree::{PixelPos, TraceFormat};
+use crate::instruments::tone_mapping::ToneMap;
+use crate::lesson::beyond::Step;
 use crate::lesson::camera::{FOV_LIMITS, FovAxis};
 use crate::lesson::environment::CubemapLayout;
 use crate::lesson::photon_map::PhotonSettings;
 use crate::lesson::render::{MAX_SPP, MAX_THREADS};
 use crate::lesson::scene::RECURSION_SAFETY_CAP;
 use crate::lesson::spectral::{GamutMapping, Illuminant, MAX_WAVELENGTHS, SpectralMode};
-use crate::lesson::tone_mapping::ToneMap;
 use clap::builder::RangedI64ValueParser;
 use std::path::PathBuf;
 
@@ -90,20 +91,27 @@ pub struct CommonArgs {
     #[arg(long, value_parser = whole_number::<usize>(1..=MAX_THREADS as i64), help_heading = COMMON)]
     pub threads: Option<usize>,
     /// Maximum ray depth (the slides' MAX_RAY_DEPTH): deeper rays return black. At most 1000, the depth at
-    /// which every ray stops anyway; at most 64 with --exhaustive. [default: the scene's own]
+    /// which every ray stops anyway; at most 64 with --exhaustive or --slide. [default: the scene's own]
     #[arg(long, value_parser = ray_depth, help_heading = COMMON)]
     pub max_depth: Option<u32>,
-    /// Trace every ray down to the maximum depth. By default a ray too weak to change its pixel by a whole
-    /// 8-bit level (its weight, the product of the multipliers, blends and Fresnel factors along its path, is
-    /// below the finest sRGB step) is not traced: adaptive ray-tree depth control.
+    /// Trace every ray down to the maximum depth (`--no-step adaptive-depth`). By default a ray too weak to
+    /// change its pixel by a whole 8-bit level (its weight, the product of the multipliers, blends and Fresnel
+    /// factors along its path, is below the finest sRGB step) is not traced: adaptive ray-tree depth control.
     #[arg(long, help_heading = COMMON)]
     pub exhaustive: bool,
-    /// Render as the slides write it: the slides' own render loop, raytrace, loop over the nodes, one texel
-    /// per look-up, random points of the unit disc, K wavelength passes and the k nearest photons, and none
-    /// of the steps beyond the slides (docs/beyond-the-slides.md). Compare the two with
-    /// `--side-by-side "--slide"`.
+    /// Render as the slides write it: none of the steps beyond the slides (docs/beyond-the-slides.md): every
+    /// ray to the maximum depth (at most 64 then), the loop over the nodes, a mesh's triangles one by one, one
+    /// texel per look-up, random points of the pixel and of the unit disc, K wavelength passes, every layer,
+    /// photons in all directions and the k nearest from a k-d tree, world coordinates. The guards hold as by
+    /// default. Compare the two with `--side-by-side "--slide"`.
     #[arg(long, help_heading = COMMON)]
     pub slide: bool,
+    /// Take this step beyond the slides even with --slide (repeat it for more): show one step at a time.
+    #[arg(long, value_enum, value_name = "STEP", help_heading = COMMON)]
+    pub step: Vec<Step>,
+    /// Leave this step beyond the slides out (repeat it for more): what the default gains from it.
+    #[arg(long, value_enum, value_name = "STEP", help_heading = COMMON)]
+    pub no_step: Vec<Step>,
     /// Seed of every random choice; the same seed gives the same picture, byte for byte.
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,

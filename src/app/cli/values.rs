@@ -4,13 +4,14 @@
 //! writes `#[arg(long, value_enum, default_value_t = FresnelMode::Schlick)]` as it always has. Each value has
 //! the name the command line spells and `--help` lists, and the help `--help` shows beside it.
 
+use crate::instruments::tone_mapping::ToneMap;
+use crate::lesson::beyond::Step;
 use crate::lesson::bitmap::{Filter, Wrap};
 use crate::lesson::camera::FovAxis;
 use crate::lesson::environment::CubemapLayout;
 use crate::lesson::sampling::DiscSampler;
 use crate::lesson::spectral::{GamutMapping, Illuminant, SpectralMode};
 use crate::lesson::texture::FresnelMode;
-use crate::lesson::tone_mapping::ToneMap;
 use clap::builder::PossibleValue;
 
 /// `value_enums! { Type { Variant = "name": "help", ... } ... }`: `clap::ValueEnum` for each type, its values
@@ -29,6 +30,17 @@ macro_rules! value_enums {
             }
         }
     )+};
+}
+
+/// The steps beyond the slides by their names, each with its one-line summary.
+impl clap::ValueEnum for Step {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Step::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(PossibleValue::new(self.name()).help(self.summary()))
+    }
 }
 
 value_enums! {

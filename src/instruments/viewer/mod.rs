@@ -18,10 +18,10 @@ pub mod fly;
 pub mod window;
 pub mod worker;
 
+use crate::instruments::tone_mapping::Film;
 use crate::lesson::error::Result;
 use crate::lesson::render::RenderSettings;
 use crate::lesson::scene::Scene;
-use crate::lesson::tone_mapping::Film;
 use controls::Controls;
 use std::path::PathBuf;
 use std::process::ExitCode;

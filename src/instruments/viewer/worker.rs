@@ -3,13 +3,13 @@
 //! paints what the progressive renderer draws into the picture the window shows.
 
 use crate::instruments::progressive::{Outcome, Update, preview_settings, quick_frame, render_progressive};
+use crate::instruments::tone_mapping::Film;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::to_srgb8;
 use crate::lesson::error::Result;
 use crate::lesson::frame::Frame;
 use crate::lesson::render::{RenderSettings, RenderStats, thread_pool};
 use crate::lesson::scene::Scene;
-use crate::lesson::tone_mapping::Film;
 use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};

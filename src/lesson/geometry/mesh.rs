@@ -332,16 +332,10 @@ impl Mesh {
         self.triangles.iter().flat_map(|four| (0..LANES).filter_map(|lane| four.get(lane))).collect()
     }
 
-    /// Every triangle with its slot, one by one, for a search that tests them all (the slides' reading,
-    /// [`crate::lesson::slide::model_transform`]).
+    /// Every triangle with its slot, one by one, for a search that tests them all (the slide's,
+    /// [`Mesh::hit_one_by_one`]).
     pub fn slots(&self) -> impl Iterator<Item = (usize, [Vector; 3])> + '_ {
         (0..self.triangles.len() * LANES).filter_map(|i| self.triangles[i / LANES].get(i % LANES).map(|t| (i, t)))
-    }
-
-    /// The surface of a hit at ray parameter `t` on the triangle in slot `i`, at the barycentric coordinates
-    /// `b` (the weights of its corners): its hit point, normals, u/v and error bound.
-    pub fn surface_at(&self, i: usize, t: f32, b: [f32; 3]) -> IntersectionInfo {
-        self.info(i, t, b)
     }
 
     /// The acceleration structure (for the benchmark's report).

@@ -10,6 +10,7 @@
 pub mod bvh;
 mod cube;
 pub mod mesh;
+mod one_by_one;
 mod plane;
 pub mod polygon;
 mod prism;

@@ -142,7 +142,7 @@ impl Emitter {
     /// the wavelength passes multiply the caustic estimate by the light's colour, as every light), so that
     /// together the photons are as white as the light.
     fn emit(&self, scene: &Scene, index: u32, rng: &mut Rng) -> (Ray, Color) {
-        beyond!(AimedEmission);
+        beyond!(PhotonGrid);
         let chosen = self.cones.partition_point(|c| c.first + c.count <= index);
         let cone = &self.cones[chosen];
         let dir = cone.direction(index - cone.first);

@@ -3,16 +3,20 @@
 //! Before the picture is rendered, photons are shot from the point lights (the slide's "обратен
 //! raytracing": rays that start at the lamps), followed through mirrors, glass and layered surfaces, and
 //! stored where they land on a diffuse surface after at least one reflection or refraction: the *caustic*
-//! photon map. The stored photons go into a uniform grid. When a diffuse shader shades a point it asks the
-//! map (through the light loop, [`crate::lesson::light::light_loop`]), which finds the k nearest photons
-//! and turns their power into the caustic light arriving there.
+//! photon map. When a diffuse shader shades a point it asks the map (through the light loop,
+//! [`crate::lesson::light::light_loop`]), which finds the k nearest photons and turns their power into the
+//! caustic light arriving there.
+//!
+//! The slide's map ([`all_directions`]): photons shot in all directions, the k nearest found in a k-d tree
+//! ([`kd_tree`]), their power over the area of the disc that holds them. The step beyond it,
+//! [`Step::PhotonGrid`], is the rest of this page: photons aimed at the casters, a grid, a cone filter.
 //!
 //! How a photon behaves at a surface is the shader's business: a mirror's or glass's
 //! [`CausticCaster::scatter_photon`](crate::lesson::shader::CausticCaster::scatter_photon) returns a
 //! [`PhotonScatter`](crate::lesson::shader::PhotonScatter): on a diffuse surface (Lambert, Phong) the photon lands; `Reflection`, `Refraction` and
 //! `Layered` send it on, and the `Fresnel` texture takes part through a layer's blend.
 //!
-//! Where this differs from the slides, and why:
+//! Where the step differs from the slides, and why:
 //! - The slide shoots photons "in all directions". Here each light aims only at the caustic casters (objects
 //!   whose shader can reflect or refract a photon): each caster's bounding sphere, seen from the light, is a
 //!   cone of directions, and every cone gets a share of the photons in proportion to the power the light
@@ -35,8 +39,7 @@
 //!   first that holds k photons, which then are the k nearest: in a dense caustic the nearest are close, and
 //!   most of the photons of the largest ball are never read. The photons found are gathered into a
 //!   per-thread buffer and the k nearest selected in place, by one integer key per photon (distance, then
-//!   index): no allocation per estimate. The slides' reading keeps the k-d tree
-//!   ([`crate::lesson::slide::kd_tree`]); docs/beyond-the-slides.md compares the two.
+//!   index): no allocation per estimate. docs/beyond-the-slides.md compares it with the k-d tree.
 //! - The estimate gathers the k nearest photons within a maximum radius and weights them with Jensen's cone
 //!   filter ("Realistic Image Synthesis Using Photon Mapping", 2001, section 7.2.2). When fewer than k
 //!   photons lie within the maximum radius, every photon in that disc was found, so the disc is the one
@@ -55,11 +58,14 @@
 //!   light arriving at a surface cannot be negative, the estimate's negative channels are clipped (whatever
 //!   `--gamut` says of the picture).
 
+pub mod all_directions;
 mod emitter;
 mod grid;
+pub mod kd_tree;
 
 pub use emitter::{Emitter, strength, trace_photons};
 
+use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::Aabb;
@@ -67,6 +73,7 @@ use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
 use crate::lesson::spectral::clip_to_gamut;
 use grid::{CELLS_PER_RADIUS, Found, PhotonGrid, SEARCH_FRACTIONS};
+use kd_tree::KdTree;
 use std::cell::RefCell;
 use std::f32::consts::PI;
 use std::num::NonZeroUsize;
@@ -146,14 +153,21 @@ pub struct PhotonStats {
     pub stored: usize,
     /// Emitting and tracing the photons.
     pub trace_time: Duration,
-    /// Building the search structure (the grid).
+    /// Building the search structure (the k-d tree or the grid).
     pub build_time: Duration,
 }
 
-/// The caustic photon map: the stored photons in a grid, and how estimates are made from them.
+/// Where a map finds the photons near a point: the slide's k-d tree, or the grid of the step
+/// [`Step::PhotonGrid`].
+enum Lookup {
+    KdTree(KdTree),
+    Grid(PhotonGrid),
+}
+
+/// The caustic photon map: the stored photons in a k-d tree or a grid, and how estimates are made from them.
 pub struct PhotonMap {
     photons: Vec<StoredPhoton>,
-    grid: PhotonGrid,
+    lookup: Lookup,
     k: NonZeroUsize,
     max_radius: f32,
     show: bool,
@@ -178,19 +192,30 @@ thread_local! {
 }
 
 impl PhotonMap {
-    /// Builds the scene's photon map as its `photons` settings say, on the current rayon pool; `None` when
-    /// the settings ask for no photons or the scene has nothing that casts caustics.
+    /// Builds the scene's photon map as its `photons` settings and its steps say, on the current rayon
+    /// pool: the slide's ([`all_directions`], a k-d tree) or, with [`Step::PhotonGrid`], photons aimed at the
+    /// casters in a grid. `None` when the settings ask for no photons or the scene has nothing that casts
+    /// caustics.
     pub fn build(scene: &Scene, seed: u64) -> Result<Option<PhotonMap>> {
         let settings = scene.photons;
         settings.check()?;
         if settings.count == 0 {
             return Ok(None);
         }
-        let Some(emitter) = Emitter::new(scene, settings.count, seed) else {
-            return Ok(None);
-        };
+        let grid = scene.steps.has(Step::PhotonGrid);
         let start = Instant::now();
-        let photons = trace_photons(&scene.prepared(), &emitter, seed);
+        let (photons, emitted) = if grid {
+            let Some(emitter) = Emitter::new(scene, settings.count, seed) else {
+                return Ok(None);
+            };
+            (trace_photons(&scene.prepared(), &emitter, seed), settings.count as u64)
+        } else {
+            let casters = scene.nodes.iter().any(|node| node.shader.caustic_caster().is_some());
+            if !casters || scene.lights.is_empty() {
+                return Ok(None);
+            }
+            all_directions::shoot_photons(&scene.prepared(), settings.count, seed)
+        };
         let trace_time = start.elapsed();
         // A radius below the scene's floor cannot tell photons apart: refused when asked for, and the default
         // raised to it (only in a tiny scene far from the camera).
@@ -210,19 +235,27 @@ impl PhotonMap {
             Some(r) => r,
             None => default_radius(scene, &photons).max(floor),
         };
-        let mut map = PhotonMap::new(photons, settings.k, max_radius, settings.show)?;
-        map.stats.emitted = settings.count;
+        let mut map = PhotonMap::with_lookup(photons, settings.k, max_radius, settings.show, grid)?;
+        map.stats.emitted = emitted.min(u32::MAX as u64) as u32;
         map.stats.trace_time = trace_time;
         Ok(Some(map))
     }
 
     /// A map of the given photons: sorts them into the grid.
     pub fn new(photons: Vec<StoredPhoton>, k: u32, max_radius: f32, show: bool) -> Result<PhotonMap> {
+        PhotonMap::with_lookup(photons, k, max_radius, show, true)
+    }
+
+    /// A map of the given photons in a grid (`grid`) or the slide's k-d tree.
+    fn with_lookup(photons: Vec<StoredPhoton>, k: u32, max_radius: f32, show: bool, grid: bool) -> Result<PhotonMap> {
         let k = NonZeroUsize::new(k as usize).ok_or_else(|| Error::parameter("photon k", k, "must be at least 1"))?;
         let start = Instant::now();
-        let grid = PhotonGrid::new(&photons, max_radius);
+        let lookup = match grid {
+            true => Lookup::Grid(PhotonGrid::new(&photons, max_radius)),
+            false => Lookup::KdTree(KdTree::new(photons.iter().map(|photon| photon.position))),
+        };
         let stats = PhotonStats { stored: photons.len(), build_time: start.elapsed(), ..PhotonStats::default() };
-        Ok(PhotonMap { photons, grid, k, max_radius, show, stats })
+        Ok(PhotonMap { photons, lookup, k, max_radius, show, stats })
     }
 
     /// The stored photons.
@@ -232,13 +265,18 @@ impl PhotonMap {
 
     /// The caustic irradiance at the point `p` of a diffuse surface whose normal `n` faces the viewer
     /// (the slide's "K-те най-близки съседа"): the power of the k nearest photons within the maximum radius
-    /// that arrived on this side of the surface, weighted by the cone filter, over the disc's area. With
-    /// `--show-photons`, a bright dot where a photon lies instead.
+    /// that arrived on this side of the surface, over the area of the disc through the farthest of them (the
+    /// disc of the maximum radius when fewer than k lie within it); with the grid, weighted by the cone
+    /// filter. With `--show-photons`, a bright dot where a photon lies instead.
     pub fn irradiance(&self, p: Vector, n: Vector) -> Color {
-        beyond!(PhotonGrid);
         if self.show {
             return self.dot(p);
         }
+        let grid = match &self.lookup {
+            Lookup::KdTree(tree) => return self.kd_tree_irradiance(tree, p, n),
+            Lookup::Grid(grid) => grid,
+        };
+        beyond!(PhotonGrid);
         let max_r2 = self.max_radius * self.max_radius;
         let k = self.k.get();
         FOUND.with_borrow_mut(|found| {
@@ -247,7 +285,7 @@ impl PhotonMap {
             // it is farther than every photon inside), so smaller balls are searched first, and the result
             // is the same as searching the largest at once.
             for fraction in SEARCH_FRACTIONS {
-                self.grid.within(p, max_r2 * fraction * fraction, found);
+                grid.within(p, max_r2 * fraction * fraction, found);
                 if found.len() >= k {
                     break;
                 }
@@ -278,17 +316,38 @@ impl PhotonMap {
         })
     }
 
+    /// The slide's estimate: the k nearest photons from the k-d tree, their power over the disc's area.
+    fn kd_tree_irradiance(&self, tree: &KdTree, p: Vector, n: Vector) -> Color {
+        let (max_r2, k) = (self.max_radius * self.max_radius, self.k.get());
+        let found = tree.nearest(p, k, max_r2);
+        let r2 = if found.len() < k { max_r2 } else { found.iter().fold(0.0, |m, (d2, _)| d2.max(m)) };
+        if found.is_empty() || r2 <= 0.0 {
+            return Color::BLACK;
+        }
+        let mut sum = Color::BLACK;
+        for (_, i) in found {
+            let photon = &self.photons[i as usize];
+            if photon.dir.dot(n) < 0.0 {
+                sum += photon.power;
+            }
+        }
+        arriving_light(sum / (PI * r2))
+    }
+
     /// `--show-photons`: a dot of the nearest photon's colour if one lies within the dot radius.
     fn dot(&self, p: Vector) -> Color {
-        let dot_radius = DOT_RADIUS * self.max_radius;
-        let nearest = FOUND.with_borrow_mut(|found| {
-            self.grid.within(p, dot_radius * dot_radius, found);
-            found.iter().copied().min()
-        });
+        let dot_r2 = (DOT_RADIUS * self.max_radius).powi(2);
+        let nearest = match &self.lookup {
+            Lookup::KdTree(tree) => tree.nearest(p, 1, dot_r2).first().map(|&(_, i)| i as usize),
+            Lookup::Grid(grid) => FOUND.with_borrow_mut(|found| {
+                grid.within(p, dot_r2, found);
+                found.iter().copied().min().map(Found::index)
+            }),
+        };
         let Some(nearest) = nearest else {
             return Color::BLACK;
         };
-        let color = clip_to_gamut(self.photons[nearest.index()].power);
+        let color = clip_to_gamut(self.photons[nearest].power);
         color * (DOT_IRRADIANCE / color.max_channel())
     }
 }

@@ -35,7 +35,7 @@ impl Lambert {
 
 impl Shader for Lambert {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.shade_with(self.color.get(ray, info), ray, info, ctx)
+        self.shade_with(self.color.at(ray, info, ctx), ray, info, ctx)
     }
 
     fn texture(&self) -> Option<&dyn Texture> {

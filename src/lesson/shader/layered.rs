@@ -1,25 +1,27 @@
 //! `Layered` (slides "Комбиниране на шейдъри", "Layered Shader"): a surface made of layers, listed bottom to
 //! top, each with its own shader and a blend colour (per-channel opacity: 0 transparent, 1 opaque), optionally
-//! multiplied by a blend texture. The slide's loop is
+//! multiplied by a blend texture. The slide's loop ([`shade_bottom_up`]) is
 //!
 //! ```text
 //! res = 0;  for each layer, bottom to top:  res = res * (1 - blend) + layer_color * blend
 //! ```
 //!
-//! which gives layer i the weight `blend_i * (1 - blend_{i+1}) * ... * (1 - blend_top)`. This shader walks
-//! the layers from the top down instead, computing those weights as it goes, and shades only the layers whose
-//! weight is not zero: a layer with zero blend at this point costs nothing, and under an opaque layer nothing
-//! is shaded at all (not even its blend texture is looked up). The result is the slide's, without the work
-//! the picture cannot show. [`Layered::shade_every_layer`] switches back to the slide's loop, to compare.
+//! which gives layer i the weight `blend_i * (1 - blend_{i+1}) * ... * (1 - blend_top)`.
 //!
-//! Each layer's shader sees the ray with its weight multiplied by the layer's weight (its largest channel),
-//! so reflection and refraction rays below a faint layer are as faint as they look, and adaptive depth
-//! control (see [`crate::lesson::scene`]) stops them early.
+//! Layer pruning, a step beyond the slide ([`Step::LayerPruning`], [`shade_pruned`]): the layers from the top
+//! down instead, computing those weights as it goes, shading only the layers whose weight is not zero: a
+//! layer with zero blend at this point costs nothing, and under an opaque layer nothing is shaded at all (not
+//! even its blend texture is looked up). The result is the slide's, without the work the picture cannot
+//! show. Each layer's shader then sees the ray with its weight multiplied by the layer's weight (its largest
+//! channel), so reflection and refraction rays below a faint layer are as faint as they look, and adaptive
+//! depth control (see [`crate::lesson::scene`]) stops them early. [`Layered::shade_every_layer`] keeps one
+//! shader to the slide's loop whatever the steps.
 //!
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
 use super::{CausticCaster, IntoShader, PhotonScatter, Shader, is_caustic_caster, scatter_photon};
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::photon_map::strength;
@@ -45,7 +47,7 @@ pub struct Layer {
 impl Layer {
     /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
     pub fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
-        Layer::clamp_blend(LayerShading::blend(self, ray, info))
+        Layer::clamp_blend(LayerShading::blend(self, ray, info, Steps::ALL))
     }
 
     /// A blend clamped to [0, 1], the range of an opacity.
@@ -55,22 +57,22 @@ impl Layer {
     }
 }
 
-/// What the Layered loop ([`shade_layers`]) needs of a layer: its opacity at a hit, and its colour there.
-/// A [`Layer`] answers through its trait objects; the renderer's prepared layers
+/// What the Layered loops ([`shade_bottom_up`], [`shade_pruned`]) need of a layer: its opacity at a hit, and
+/// its colour there. A [`Layer`] answers through its trait objects; the renderer's prepared layers
 /// ([`crate::lesson::dispatch`]) answer the same through the workbook's own types.
 pub(crate) trait LayerShading {
-    /// The layer's opacity at the hit: its blend colour times its blend texture, before clamping.
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
-    /// The layer's colour at the hit times `weight`, its share of the surface's colour, for `ray`, which
-    /// carries the layer's weight already.
+    /// The layer's opacity at the hit, its blend texture read as `steps` say: its blend colour times its
+    /// blend texture, before clamping.
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color;
+    /// The layer's colour at the hit times `weight`, its share of the surface's colour, for `ray`.
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color;
 }
 
 impl LayerShading for Layer {
     #[inline(always)]
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color {
         match &self.blend_tex {
-            Some(tex) => self.blend * tex.get_tex_color(ray, info),
+            Some(tex) => self.blend * tex.color_with(ray, info, steps),
             None => self.blend,
         }
     }
@@ -81,30 +83,46 @@ impl LayerShading for Layer {
     }
 }
 
-/// The Layered shader's loop: from the top down, `uncovered` is how much of the layers seen so far lets
-/// through, so a layer's weight is `uncovered * blend`; it stops at the first layer that covers everything
-/// below it, unless `every_layer`.
+/// The slide's Layered loop: every layer from the bottom up, `res = res * (1 - blend) + layer_color * blend`.
 #[inline(always)]
-pub(crate) fn shade_layers<L: LayerShading>(
+pub(crate) fn shade_bottom_up<L: LayerShading>(
     layers: &[L],
-    every_layer: bool,
     ray: &Ray,
     info: &IntersectionInfo,
     ctx: &mut TraceContext,
 ) -> Color {
     let mut res = Color::BLACK;
+    for layer in layers {
+        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx.scene.steps));
+        res = res * (Color::WHITE - blend) + layer.shade(ray, info, blend, ctx);
+    }
+    res
+}
+
+/// Layer pruning ([`Step::LayerPruning`]): from the top down, `uncovered` is how much of the layers seen so
+/// far lets through, so a layer's weight is `uncovered * blend`; a layer of no weight is not shaded, and the
+/// loop stops at the first layer that covers everything below it.
+#[inline(always)]
+pub(crate) fn shade_pruned<L: LayerShading>(
+    layers: &[L],
+    ray: &Ray,
+    info: &IntersectionInfo,
+    ctx: &mut TraceContext,
+) -> Color {
+    beyond!(LayerPruning);
+    let mut res = Color::BLACK;
     let mut uncovered = Color::WHITE;
     let mut layer_ray = *ray;
     for layer in layers.iter().rev() {
-        let blend = Layer::clamp_blend(layer.blend(ray, info));
+        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx.scene.steps));
         let weight = layer_weight(uncovered, blend);
         let strength = weight.max_channel();
-        if strength > 0.0 || every_layer {
+        if strength > 0.0 {
             layer_ray.weight = ray.weight * strength;
             res += layer.shade(&layer_ray, info, weight, ctx);
         }
         uncovered *= Color::WHITE - blend;
-        if uncovered.max_channel() <= 0.0 && !every_layer {
+        if uncovered.max_channel() <= 0.0 {
             break;
         }
     }
@@ -148,9 +166,9 @@ impl Layered {
         self
     }
 
-    /// With `true`, shades every layer at every point, as the slide's loop does, even a layer of zero blend or
-    /// one hidden under an opaque layer. The picture is the same; only the time differs. (The layers are
-    /// still visited from the top down, so that nothing but the skipping differs between the two ways.)
+    /// With `true`, shades every layer at every point with the slide's loop, even a layer of zero blend or one
+    /// hidden under an opaque layer, whatever the render's steps. The picture is the same; only the time
+    /// differs.
     pub fn shade_every_layer(&mut self, every_layer: bool) -> &mut Layered {
         self.every_layer = every_layer;
         self
@@ -188,8 +206,10 @@ impl Layered {
 
 impl Shader for Layered {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        beyond!(LayerPruning);
-        shade_layers(&self.layers, self.every_layer, ray, info, ctx)
+        if ctx.scene.steps.has(Step::LayerPruning) && !self.every_layer {
+            return shade_pruned(&self.layers, ray, info, ctx);
+        }
+        shade_bottom_up(&self.layers, ray, info, ctx)
     }
 
     fn is_dispersive(&self) -> bool {

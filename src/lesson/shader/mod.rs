@@ -13,9 +13,11 @@ mod refraction;
 pub use glass::fresnel_glass;
 pub use lambert::Lambert;
 pub use layered::{Layer, Layered, MAX_LAYERS};
-pub(crate) use layered::{LayerShading, shade_layers};
+pub(crate) use layered::{LayerShading, shade_bottom_up, shade_pruned};
 pub use phong::Phong;
-pub use reflection::{GLOSSY_SPLIT_DEPTH, GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
+#[allow(deprecated)]
+pub use reflection::GLOSSY_SPLIT_DEPTH;
+pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
 
 use crate::lesson::color::Color;
@@ -180,6 +182,17 @@ impl ColorSource {
         match self {
             ColorSource::Color(c) => *c,
             ColorSource::Texture(t) => t.get_tex_color(ray, info),
+        }
+    }
+
+    /// The colour at the hit `info` as the render's reading reads it ([`TraceContext::raytrace`]'s scene's
+    /// steps: one texel of a bitmap under `--slide`, its filter otherwise). The course's shaders read their
+    /// colours so; a shader of a student's may too.
+    #[inline]
+    pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &TraceContext) -> Color {
+        match self {
+            ColorSource::Color(c) => *c,
+            ColorSource::Texture(t) => t.color_with(ray, info, ctx.scene.steps),
         }
     }
 

@@ -19,20 +19,24 @@
 //! - a sample under the surface is dropped and the average is taken over the samples kept (the slide only
 //!   says it must be caught). Should every sample of a shading point be dropped (possible at grazing angles
 //!   with a low glossiness), the exact mirror ray is traced instead, so the surface never turns black;
-//! - the disc points may be stratified over the whole pixel ([`DiscSampler::Joint`], the default: the
-//!   `num_samples` points of each camera ray are one block of a set shared by all the pixel's camera rays)
-//!   or per shading point ([`DiscSampler::Stratified`]) rather than independent, which gives the same
-//!   picture with markedly less noise (see `benches/error_vs_time.rs` and docs/measurements.md);
-//! - below [`GLOSSY_SPLIT_DEPTH`] a glossy mirror traces one ray, not two: two white glossy mirrors facing
-//!   each other would otherwise trace 2^depth rays for each camera ray (2^60 for `maxTraceDepth 60`, a
-//!   render that never ends), since a white mirror's rays keep their full weight and are never pruned. The
-//!   split depth is the course's default `maxTraceDepth`, so its scenes trace exactly the course's rays;
+//! - a step beyond the slide ([`Step::DiscSamples`]): the disc points may be stratified over the whole
+//!   pixel ([`DiscSampler::Joint`], the default: the `num_samples` points of each camera ray are one block of
+//!   a set shared by all the pixel's camera rays) or per shading point ([`DiscSampler::Stratified`]) rather
+//!   than independent, which gives the same picture with markedly less noise (see
+//!   `benches/error_vs_time.rs` and docs/measurements.md); without the step every mirror draws random points;
+//! - below [`crate::lesson::branching::SPLIT_DEPTH`] the second ray of a shading point is not traced but
+//!   given the first one's colour, as every shader's rays are (the core's branching bound,
+//!   [`crate::lesson::branching`]): two white glossy mirrors facing each other would otherwise trace 2^depth
+//!   rays for each camera ray (2^60 for `maxTraceDepth 60`, a render that never ends), since a white
+//!   mirror's rays keep their full weight and are never pruned. The split depth is the course's default
+//!   `maxTraceDepth`, so its scenes trace exactly the course's rays;
 //! - each spawned ray's `weight` is scaled by the full multiplier, not by its 1/N share of the average, as
 //!   every averaging shader does for adaptive depth control (`Scene::min_ray_weight`): pruning the samples
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
 //!   samples would converge to a different picture.
 
 use super::{CausticCaster, ColorSource, PhotonScatter, Shader};
+use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
@@ -48,11 +52,9 @@ use std::f32::consts::FRAC_PI_2;
 /// uses 2. The core's bound on every shader's branching ([`crate::lesson::branching`]) allows the same.
 pub const SECONDARY_GLOSSY_SAMPLES: u32 = crate::lesson::branching::SECONDARY_SPLIT;
 
-/// The deepest ray a glossy mirror still splits into [`SECONDARY_GLOSSY_SAMPLES`] rays; for a deeper ray it
-/// traces one, so that the number of rays grows with the depth limit, not exponentially. 4 is the course's
-/// default `maxTraceDepth`. The mirror caps its own rays so, before the core's bound
-/// ([`crate::lesson::branching::SPLIT_DEPTH`], the same depth) would: it does not draw directions it would
-/// not trace, and its rays stay stratified.
+/// The deepest ray whose shading point still traces [`SECONDARY_GLOSSY_SAMPLES`] rays: the core's
+/// [`crate::lesson::branching::SPLIT_DEPTH`], which bounds every shader's rays alike.
+#[deprecated(note = "the core's branching bound holds for every shader: use `lesson::branching::SPLIT_DEPTH`")]
 pub const GLOSSY_SPLIT_DEPTH: u32 = crate::lesson::branching::SPLIT_DEPTH;
 
 /// The most rays a glossy mirror averages per shading point: twenty times the slide's 200, and low enough
@@ -141,20 +143,18 @@ impl Reflection {
         if self.glossiness >= 1.0 {
             return self.trace_mirror(ray, info, n, ctx, multiplier);
         }
-        beyond!(GlossySplit);
-        let num_samples = match ray.depth {
-            0 => self.num_samples,
-            1..=GLOSSY_SPLIT_DEPTH => self.num_samples.min(SECONDARY_GLOSSY_SAMPLES),
-            _ => 1,
-        };
+        let steps = ctx.scene.steps;
+        let num_samples =
+            if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
-        // The first bounce of a camera ray may share its pixel's set of points (the joint sampler); deeper
-        // bounces take a set of their own.
+        // The slide's random points, or, with the step, the mirror's own sampler; the first bounce of a
+        // camera ray may share its pixel's set of points (the joint sampler), deeper bounces take their own.
+        let sampler = if steps.has(Step::DiscSamples) { self.sampler } else { DiscSampler::Random };
         let disc = match ctx.pixel_sample {
             Some(sample) if ray.depth == 0 => {
-                DiscSamples::for_pixel_sample(self.sampler, &sample, num_samples, &mut ctx.rng)
+                DiscSamples::for_pixel_sample(sampler, &sample, num_samples, &mut ctx.rng)
             }
-            _ => DiscSamples::new(self.sampler, &mut ctx.rng),
+            _ => DiscSamples::new(sampler, &mut ctx.rng),
         };
         let attenuation = multiplier.max_channel();
         let mut sum = Color::BLACK;
@@ -174,7 +174,7 @@ impl Reflection {
 
 impl Shader for Reflection {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.shade_with(self.multiplier.get(ray, info), ray, info, ctx)
+        self.shade_with(self.multiplier.at(ray, info, ctx), ray, info, ctx)
     }
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {

@@ -8,6 +8,7 @@
 //! instead; a scene file's `scaling` is read as the tile size, unchanged.
 
 use super::Texture;
+use crate::lesson::beyond::Steps;
 use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
@@ -65,6 +66,12 @@ impl Texture for BitmapTexture {
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
         let (u, v) = self.lookup_uv(info.uv());
         self.bitmap.sample(u, v, self.filter, self.wrap)
+    }
+
+    /// One texel, the slide's, without the step `TexelFilter`; the texture's own filter with it.
+    fn color_with(&self, _ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color {
+        let (u, v) = self.lookup_uv(info.uv());
+        self.bitmap.sample(u, v, self.filter.under(steps), self.wrap)
     }
 
     /// The surface's u/v divided by `tile_size`: one copy of the image per unit.

@@ -10,6 +10,7 @@ pub use bitmap::BitmapTexture;
 pub use checker::CheckerTexture;
 pub use fresnel::{Fresnel, FresnelMode};
 
+use crate::lesson::beyond::Steps;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::ray::Ray;
@@ -19,6 +20,13 @@ use std::any::Any;
 pub trait Texture: Any + Send + Sync {
     /// The texture's colour where `ray` hit the surface described by `info`.
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
+
+    /// The colour as a render that takes `steps` reads it ([`crate::lesson::beyond`]): by default
+    /// [`Texture::get_tex_color`], whatever the steps; a bitmap texture reads one texel without the step
+    /// `TexelFilter`. A texture whose reading depends on no step leaves it as it is.
+    fn color_with(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps) -> Color {
+        self.get_tex_color(ray, info)
+    }
 
     /// The coordinates this texture looks its colour up at, for a point of a surface whose texture
     /// coordinates are `uv` (the hit's `info.uv()`): after the texture's own scaling, before any wrapping.

@@ -8,6 +8,7 @@ use lecture6::app::cli::{Cli, Example};
 
 #[macro_use]
 pub mod examples;
+pub mod hidden;
 pub mod hostile;
 
 use lecture6::instruments::compare::{difference, heat_map};

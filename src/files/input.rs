@@ -11,7 +11,7 @@
 //!   one of its own inputs ([`check_not_an_input`]). The note is kept for the whole process: a run is one
 //!   process, and the list only grows by the files the process reads.
 
-use crate::lesson::error::{Error, Result};
+use crate::files::error::{Error, Result};
 use std::fs::File;
 use std::io::Read;
 use std::path::{Path, PathBuf};

@@ -9,8 +9,8 @@
 //! [`PixelCharge`], given back to the budget when it is dropped. The count is kept for the whole process: a
 //! run is one process.
 
-use crate::lesson::error::{Error, Result};
-use crate::lesson::input;
+use crate::files::error::{Error, Result};
+use crate::files::input;
 use std::fs::File;
 use std::io::{BufReader, Seek};
 use std::path::{Path, PathBuf};
