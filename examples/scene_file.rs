@@ -47,8 +47,9 @@ pub struct Options {
 }
 
 impl Options {
-    fn load(&self) -> Result<scene_file::SceneFile> {
-        scene_file::load(&self.file, &LoadOptions { skip_unsupported: self.skip_unsupported })
+    /// The file, its `maxTraceDepth` refused above `max_trace_depth`.
+    fn load(&self, max_trace_depth: Option<u32>) -> Result<scene_file::SceneFile> {
+        scene_file::load(&self.file, &LoadOptions { skip_unsupported: self.skip_unsupported, max_trace_depth })
     }
 }
 
@@ -56,12 +57,12 @@ impl Example for Options {
     const DEFAULT_SPP: u32 = 1;
 
     fn scene(&self) -> Result<Scene> {
-        Ok(self.load()?.scene)
+        Ok(self.load(None)?.scene)
     }
 
     /// The file's frame size and anti-aliasing, where the options leave them open; its warnings on stderr.
     fn scene_and_settings(&self, common: &CommonArgs, settings: &mut RenderSettings) -> Result<Scene> {
-        let file = self.load()?;
+        let file = self.load(common.max_trace_depth())?;
         if !common.quiet {
             for w in &file.warnings {
                 eprintln!("{w}");

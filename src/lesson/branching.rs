@@ -226,8 +226,9 @@ impl<'a> TraceContext<'a> {
     /// The colour the shader of `node` gives the hit `info` of `ray`, shaded as a shading point of its own
     /// (its rays bounded by its budget), and what went wrong there counted for the end-of-run report: a
     /// normal that was not of unit length as the geometry returned it (`unit_normal` false), a ray that
-    /// found the surface it left, a NaN or infinite colour made here. A node of the workbook's own shape and
-    /// shaders, unwatched, is shaded through its prepared material and keeps no shading point.
+    /// found the surface it left (black, not followed), a NaN or infinite colour made here. A node of the
+    /// workbook's own shape and shaders, unwatched, is shaded through its prepared material and keeps no
+    /// shading point.
     #[inline(always)]
     pub(crate) fn shade_hit<const WATCHED: bool>(
         &mut self,
@@ -242,7 +243,11 @@ impl<'a> TraceContext<'a> {
             self.note(i, |p| &mut p.bad_normals);
         }
         if !self.shading.workbook && self.shading.point.finds_its_own_surface(node, ray, info) {
+            // Not followed: shaded, it would leave the same surface from the same point again, down to the
+            // depth limit (a shader's ray started without an offset). Black shows the mistake, and the
+            // end-of-run report names it.
             self.note(i, |p| &mut p.self_hits);
+            return Color::BLACK;
         }
         let outer = std::mem::replace(
             &mut self.shading,

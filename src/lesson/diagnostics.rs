@@ -98,9 +98,10 @@ impl Problems {
         }
         if !problems.self_hits.is_empty() {
             lines.push(format!(
-                "rays hit the surface they left, right where they left it (self-intersection: the hit point is \
-                 off the surface by more than its error bound; put it back on the surface or widen the bound \
-                 with IntersectionInfo::with_error): {}",
+                "rays hit the surface they left, right where they left it, and were not followed (black; \
+                 self-intersection): a shader's ray must start off the surface, made with ray.spawn(info, dir, \
+                 attenuation), not Ray::new(info.ip, dir); a geometry's hit point must lie on the surface, or \
+                 its error bound be widened with IntersectionInfo::with_error: {}",
                 listed(&problems.self_hits, |&i| node(i))
             ));
         }

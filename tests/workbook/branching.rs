@@ -2,6 +2,7 @@
 //! N rays, each passed its full weight, traces a number of rays linear in the depth limit, and converges to
 //! the workbook's own glossy mirror; the workbook's shaders never reach the bound.
 
+use lecture6::lesson::beyond::Steps;
 use lecture6::lesson::branching::{SECONDARY_SPLIT, SPLIT_DEPTH};
 use lecture6::lesson::frame::Frame;
 use lecture6::lesson::render::{RenderSettings, RenderStats, render};
@@ -75,7 +76,18 @@ fn rendered(scene: &Scene, seed: u64) -> (Frame, RenderStats) {
 
 #[test]
 fn a_full_weight_average_traces_rays_linear_in_the_depth() {
-    let (_, stats) = rendered(&student(false), 1);
+    for steps in [Steps::ALL, Steps::SLIDES] {
+        bounded_in(steps);
+    }
+}
+
+/// The bound holds in either reading: by default and with `--slide` (`steps`).
+fn bounded_in(steps: Steps) {
+    let in_reading = |mut scene: Scene| {
+        scene.steps = steps;
+        scene
+    };
+    let (_, stats) = rendered(&in_reading(student(false)), 1);
     let c = &stats.counters;
     let camera_rays = c.rays_by_depth[0];
     // N rays at the camera ray's hit, SECONDARY_SPLIT per shading point of a ray down to the split depth,
@@ -90,7 +102,7 @@ fn a_full_weight_average_traces_rays_linear_in_the_depth() {
     }
     assert!(c.shared_rays > 0, "the student's shader was never bounded: {c:?}");
     // It goes DEPTH deep where the workbook's does: nothing is pruned for its weight.
-    let (_, own) = rendered(&workbook(), 1);
+    let (_, own) = rendered(&in_reading(workbook()), 1);
     assert!(c.rays_by_depth[DEPTH as usize] > 0 && own.counters.rays_by_depth[DEPTH as usize] > 0);
     // The workbook's own glossy is bounded by the same rule below the split depth, and by nothing else: its
     // deeper levels hold no more rays than the one above them either.
@@ -209,5 +221,58 @@ fn a_students_average_on_the_workbooks_own_shape_is_bounded_too() {
         // it would hold N * 16^(DEPTH - 1) rays per camera ray).
         let most = c.rays_by_depth[1..=DEPTH as usize].iter().max().unwrap();
         assert!(4 * most >= 3 * widest * c.rays_by_depth[0], "{what}: {c:?}");
+    }
+}
+
+/// The student's mirror with its rays started on the surface, not off it (`Ray { start: info.ip, .. }`, as
+/// `Ray::new(info.ip, dir)` would, but keeping the depth): a ray that finds the surface it left again.
+struct NoOffset(TintedGlossy);
+
+impl Shader for NoOffset {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let on_surface = IntersectionInfo { error: 0.0, ..*info };
+        let shader = &self.0;
+        let normal = faceforward(info.normal, ray.dir);
+        let cone = lecture6::lesson::shader::GlossyCone::new(ray.dir, normal, shader.glossiness);
+        let mut sum = Color::BLACK;
+        for _ in 0..shader.n {
+            let point = lecture6::lesson::sampling::random_unit_disc_point(&mut ctx.rng);
+            if let Some(dir) = cone.direction(point) {
+                let spawned = ray.spawn(&on_surface, dir, shader.tint.max_channel());
+                sum += ctx.raytrace(&Ray { start: info.ip, ..spawned });
+            }
+        }
+        sum * shader.tint / shader.n as f32
+    }
+}
+
+/// A shader whose rays start on the surface finishes, in either reading, with no more than 3 times the rays
+/// of the same shader done right, and the end-of-run report names it and says how to make its rays: a ray
+/// that finds the surface it left is not followed.
+#[test]
+fn a_shader_without_an_offset_finishes_and_is_named_in_both_readings() {
+    let glossy = || TintedGlossy { tint: TINT, glossiness: GLOSSINESS, n: N };
+    // A glossy ball on a glossy floor, under the stripes: curved surfaces, whose hit points lie on either
+    // side of the surface by a rounding.
+    let scene = |shader: &dyn Fn() -> Arc<dyn Shader>, steps| {
+        let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 10.0, -40.0), Vector::ZERO, 50.0));
+        scene.add(Node::new(Sphere::new(Vector::ZERO, 10.0), shader()));
+        scene.add(Node::new(Sphere::new(Vector::new(0.0, -1010.0, 0.0), 1000.0), shader()));
+        scene.environment = Some(Arc::new(Stripes));
+        (scene.max_depth, scene.steps) = (DEPTH, steps);
+        scene
+    };
+    for steps in [Steps::ALL, Steps::SLIDES] {
+        let right = scene(&|| Arc::new(glossy()), steps);
+        let wrong = scene(&|| Arc::new(NoOffset(glossy())), steps);
+        let (_, right) = render(&right, &settings(1)).unwrap();
+        let (_, wrong) = render(&wrong, &settings(1)).unwrap();
+        let (a, b) = (right.counters.total(), wrong.counters.total());
+        assert!(b <= 3 * a, "{steps:?}: {b} rays without the offset, {a} with it");
+        let line = wrong.warnings.iter().find(|l| l.contains("self-intersection"));
+        let line =
+            line.unwrap_or_else(|| panic!("{steps:?}: no self-hit named ({a} and {b} rays): {:?}", wrong.warnings));
+        assert!(line.contains("NoOffset") && line.contains("ray.spawn"), "{line}");
+        assert!(right.warnings.is_empty(), "{:?}", right.warnings);
     }
 }

@@ -440,7 +440,8 @@ fn elements_of_later_lectures_can_be_skipped_with_a_warning() {
          Node {{\n geometry s\n shader l\n bump b\n}}\nNode {{\n geometry s\n shader c\n}}\n"
     );
     assert!(error("later.qdmg", &text).contains("`RectLight` (area lights)"));
-    let file = load(&write("later.qdmg", &text), &LoadOptions { skip_unsupported: true }).unwrap();
+    let file =
+        load(&write("later.qdmg", &text), &LoadOptions { skip_unsupported: true, max_trace_depth: None }).unwrap();
     assert_eq!(file.scene.nodes.len(), 1, "the node shaded by the skipped Const is skipped too");
     let has = |needle: &str| file.warnings.iter().any(|w| w.contains(needle));
     assert!(

@@ -1,7 +1,7 @@
 //! An example: its own options and how they become a scene ([`Example`]), and the whole command line of
 //! one ([`Cli`]): parsing, the render settings, the scene prepared as the options say, and the render.
 
-use super::options::{CommonArgs, MAX_EXHAUSTIVE_DEPTH};
+use super::options::CommonArgs;
 use super::progress::SampleBar;
 use crate::instruments::tone_mapping::Film;
 use crate::lesson::beyond::{Step, Steps};
@@ -166,16 +166,18 @@ impl<E: Example> Cli<E> {
     pub(super) fn scene_with_common_options(&self, settings: &mut RenderSettings) -> Result<Scene> {
         let common = &self.common;
         let mut scene = self.example.scene_and_settings(common, settings)?;
-        scene.steps = self.steps();
+        scene.steps = common.steps();
         if let Some(depth) = common.max_depth {
-            if !scene.steps.has(Step::AdaptiveDepth) && depth > MAX_EXHAUSTIVE_DEPTH {
+            if let Some(cap) = common.max_trace_depth()
+                && depth > cap
+            {
                 return Err(Error::parameter(
                     "--max-depth",
                     depth,
                     format!(
-                        "at most {MAX_EXHAUSTIVE_DEPTH} with --exhaustive or --slide (without the step adaptive-depth): \
-                         nothing prunes the ray tree then, and every glass surface splits a ray in two, so a \
-                         sample's rays can double with each level"
+                        "at most {cap} with --exhaustive or --slide (without the step adaptive-depth): nothing \
+                         prunes the ray tree then, and every glass surface splits a ray in two, so a sample's rays \
+                         can double with each level"
                     ),
                 ));
             }
@@ -228,14 +230,9 @@ impl<E: Example> Cli<E> {
         Ok((frame, stats, settings))
     }
 
-    /// The steps beyond the slides the options ask for: none with `--slide`, every one by default, then the
-    /// steps `--step` adds and `--no-step` takes away (`--exhaustive` is `--no-step adaptive-depth`).
+    /// The steps beyond the slides the options ask for ([`CommonArgs::steps`]).
     pub fn steps(&self) -> Steps {
-        let c = &self.common;
-        let steps = if c.slide { Steps::SLIDES } else { Steps::ALL };
-        let steps = c.step.iter().fold(steps, |steps, &step| steps.with(step));
-        let steps = c.no_step.iter().fold(steps, |steps, &step| steps.without(step));
-        if c.exhaustive { steps.without(Step::AdaptiveDepth) } else { steps }
+        self.common.steps()
     }
 
     /// Refuses a choice that needs a step the render does not take: `--spectral hero` or `sampled` without

@@ -4,7 +4,7 @@
 use crate::instruments::debug_view::DebugView;
 use crate::instruments::ray_tree::{PixelPos, TraceFormat};
 use crate::instruments::tone_mapping::ToneMap;
-use crate::lesson::beyond::Step;
+use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::camera::{FOV_LIMITS, FovAxis};
 use crate::lesson::environment::CubemapLayout;
 use crate::lesson::photon_map::PhotonSettings;
@@ -212,6 +212,23 @@ pub struct CommonArgs {
     /// three. [default: the scene's own]
     #[arg(long, value_enum, help_heading = PICTURE)]
     pub fov_axis: Option<FovAxis>,
+}
+
+impl CommonArgs {
+    /// The steps beyond the slides the options ask for: none with `--slide`, every one by default, then the
+    /// steps `--step` adds and `--no-step` takes away (`--exhaustive` is `--no-step adaptive-depth`).
+    pub fn steps(&self) -> Steps {
+        let steps = if self.slide { Steps::SLIDES } else { Steps::ALL };
+        let steps = self.step.iter().fold(steps, |steps, &step| steps.with(step));
+        let steps = self.no_step.iter().fold(steps, |steps, &step| steps.without(step));
+        if self.exhaustive { steps.without(Step::AdaptiveDepth) } else { steps }
+    }
+
+    /// The deepest ray depth the render can take, if the options cap it: [`MAX_EXHAUSTIVE_DEPTH`] without
+    /// adaptive depth control (`--exhaustive`, `--slide`), where nothing prunes the ray tree.
+    pub fn max_trace_depth(&self) -> Option<u32> {
+        (!self.steps().has(Step::AdaptiveDepth)).then_some(MAX_EXHAUSTIVE_DEPTH)
+    }
 }
 
 /// The `--help` heading of the photon-mapping options (set per option: a heading set on the whole struct

@@ -26,6 +26,19 @@ impl Loader<'_> {
         s.height = r.int(self, "frameHeight", s.height, 1, 1920)?;
         s.ambient = r.color(self, "ambientLight", s.ambient)?;
         s.max_depth = r.int(self, "maxTraceDepth", s.max_depth, 0, i32::MAX as i64)?;
+        if let Some(cap) = self.options.max_trace_depth
+            && s.max_depth > cap as i64
+        {
+            return Err(self.error(
+                r.line_of("maxTraceDepth"),
+                format!(
+                    "`maxTraceDepth` {}: at most {cap} with --exhaustive or --slide (without the step adaptive-depth): \
+                     nothing prunes the ray tree then, and every glass surface splits a ray in two, so a sample's \
+                     rays can double with each level",
+                    s.max_depth
+                ),
+            ));
+        }
         s.want_aa = r.boolean(self, "wantAA", s.want_aa);
         if r.boolean(self, "gi", false) {
             let line = r.line_of("gi");

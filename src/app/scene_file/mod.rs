@@ -67,6 +67,10 @@ use std::path::Path;
 pub struct LoadOptions {
     /// Skip the elements of later lectures with a warning, instead of failing, so the rest renders.
     pub skip_unsupported: bool,
+    /// The deepest `maxTraceDepth` the render can take, if it has a cap: a render without adaptive depth
+    /// control (`--exhaustive`, `--slide`) takes at most 64 ([`crate::app::cli::CommonArgs::max_trace_depth`]).
+    /// A deeper one is refused, naming its line.
+    pub max_trace_depth: Option<u32>,
 }
 
 /// A loaded scene file: the scene, the render settings the file asks for, and the warnings.
