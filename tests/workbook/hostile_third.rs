@@ -5,9 +5,9 @@
 //! says what the code before it did.
 
 use crate::common;
-use crate::hostile_input::{dir, s};
+use crate::hostile_input::{dir, run_to, s};
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 /// The small render every case starts from.
@@ -66,5 +66,97 @@ fn a_closed_stdout_ends_the_run_quietly_and_a_full_one_is_one_line_and_exit_2() 
         let help = args == ["--help"];
         let out = command("fresnel", args).stdout(full(help)).stderr(full(!help)).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?} with its stream on /dev/full");
+    }
+}
+
+#[test]
+fn a_refused_run_makes_no_folder() {
+    // `-o a/b/c/x.png` made a/b/c before the checks that then refused the run.
+    let folder = fresh("no-folder");
+    let picture = folder.join("a/b/c/x.png");
+    let refusals: [&[&str]; 3] =
+        [&["--env", "no-such-sky.hdr"], &["--view", "normals", "--env", "no-such-sky.hdr"], &["--ior", "-1"]];
+    for args in refusals {
+        let r = run_to("fresnel", &picture, args);
+        assert_eq!(r.code, Some(2), "{args:?}: {r:?}");
+        assert!(!folder.join("a").exists(), "{args:?} made a folder and was refused");
+    }
+    // A folder the save needs is made when the picture is written.
+    run_to("fresnel", &picture, &[]).assert_rendered("-o a/b/c/x.png");
+    assert!(picture.exists());
+    // A file where a folder should be is named.
+    let r = run_to("fresnel", &picture.join("y.png"), &[]);
+    r.assert_refused("a file as the folder", &["x.png' is a file, not a folder"]);
+}
+
+/// A picture's path in `folder` whose name is `bytes` long.
+fn named(folder: &Path, bytes: usize, ext: &str) -> PathBuf {
+    folder.join(format!("{}.{ext}", "n".repeat(bytes - 1 - ext.len())))
+}
+
+#[test]
+fn an_output_name_up_to_the_file_systems_limit_is_written() {
+    // A name of 244-255 bytes rendered, then failed: the temporary name was 12 bytes longer, and the
+    // check before the render probed with a short name.
+    let folder = fresh("long-names");
+    for args in [&[][..], &["--side-by-side", "--exposure 1"], &["--view", "normals"]] {
+        let picture = named(&folder, 255, "png");
+        let _ = std::fs::remove_file(&picture);
+        run_to("fresnel", &picture, args).assert_rendered(&format!("{args:?} to a name of 255 bytes"));
+        assert!(picture.exists(), "{args:?}");
+    }
+    let reference = named(&folder, 255, "png");
+    // --compare's heat map adds `-diff` to the name: 250 bytes make a heat map of 255, which is written.
+    let picture = named(&folder, 250, "png");
+    run_to("fresnel", &picture, &["--compare", s(&reference)]).assert_rendered("a heat map of 255 bytes");
+    assert!(folder.join(format!("{}-diff.png", "n".repeat(246))).exists());
+    // 252 bytes would make one of 257: refused before the render, nothing written.
+    let picture = named(&folder, 252, "png");
+    let r = run_to("fresnel", &picture, &["--compare", s(&reference)]);
+    r.assert_refused("a heat map of 257 bytes", &["-diff.png", "no name of 257 bytes"]);
+    assert!(!picture.exists());
+    let names = std::fs::read_dir(&folder).unwrap().flatten().map(|e| e.file_name().len());
+    assert!(names.filter(|&n| n < 250).count() == 0, "a probe or a temporary file was left behind");
+}
+
+/// The entries of `folder` whose names end in `.tmp`.
+fn temporary_files(folder: &Path) -> Vec<String> {
+    let names = std::fs::read_dir(folder).unwrap().flatten().map(|e| e.file_name().to_string_lossy().into_owned());
+    names.filter(|n| n.ends_with(".tmp")).collect()
+}
+
+#[test]
+fn a_signal_while_the_picture_is_written_leaves_no_temporary_file() {
+    // INT, TERM or HUP while a large EXR was written left a temporary file of hundreds of megabytes; so did
+    // KILL, and no later run removed it.
+    use std::os::unix::process::ExitStatusExt;
+    for signal in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP, libc::SIGKILL] {
+        let folder = fresh(&format!("signal-{signal}"));
+        let picture = folder.join("big.exr");
+        std::fs::write(&picture, "an earlier picture").unwrap();
+        let args = ["--width", "2048", "--height", "1536", "--spp", "1", "-q", "-o", s(&picture)];
+        let mut child = command("fresnel", &args).spawn().unwrap();
+        // The temporary file exists from when the render is done until it is renamed.
+        let status = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                panic!("signal {signal}: the render ended ({status}) before its temporary file was seen");
+            }
+            if !temporary_files(&folder).is_empty() {
+                // SAFETY: kill sends a signal to the child's process id, which it cannot outlive unwaited.
+                #[allow(unsafe_code)] // Sound: see the SAFETY comment.
+                let sent = unsafe { libc::kill(child.id() as libc::pid_t, signal) };
+                assert_eq!(sent, 0);
+                break child.wait().unwrap();
+            }
+            std::thread::sleep(std::time::Duration::from_millis(1));
+        };
+        assert_eq!(status.signal(), Some(signal), "the run ends by the signal");
+        assert_eq!(std::fs::read(&picture).unwrap(), b"an earlier picture", "signal {signal}");
+        if signal == libc::SIGKILL {
+            // Nothing can be done on KILL: the next save to the same path removes what it left.
+            assert_eq!(temporary_files(&folder).len(), 1);
+            run_to("fresnel", &picture, &[]).assert_rendered("the run after a KILL");
+        }
+        assert_eq!(temporary_files(&folder), Vec::<String>::new(), "signal {signal}");
     }
 }

@@ -27,6 +27,7 @@ fn program_name() -> String {
 /// with a reference if asked, print one summary line): the whole `main` of every example. The example's
 /// name, which names its default output `out/<name>.png`, is its binary's.
 pub fn run<E: Example>() -> ExitCode {
+    remove_unfinished_on_signals();
     let name = program_name();
     let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
     let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
@@ -52,6 +53,25 @@ pub fn run<E: Example>() -> ExitCode {
         Err(e) => refuse(&format!("{name}: error: {e}")),
     }
 }
+
+/// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
+/// written ([`crate::lesson::frame::remove_unfinished`]): the earlier picture is kept as it was, and nothing half written is left.
+/// Where the handler cannot be installed the run goes on without it.
+#[cfg(unix)]
+fn remove_unfinished_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else { return };
+    std::thread::spawn(move || {
+        for signal in signals.forever() {
+            crate::lesson::frame::remove_unfinished();
+            let _ = signal_hook::low_level::emulate_default_handler(signal);
+        }
+    });
+}
+
+/// Elsewhere the signals end the run as they would.
+#[cfg(not(unix))]
+fn remove_unfinished_on_signals() {}
 
 /// Prints `line` on stderr (if it can be written: there is nowhere else to say it) and returns exit code 2,
 /// the code of every error.
