@@ -5,7 +5,7 @@
 //! says what the code before it did.
 
 use crate::common;
-use crate::hostile_input::{dir, run_to, s};
+use crate::hostile_input::{dir, file, refused, run_to, s};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -159,4 +159,26 @@ fn a_signal_while_the_picture_is_written_leaves_no_temporary_file() {
         }
         assert_eq!(temporary_files(&folder), Vec::<String>::new(), "signal {signal}");
     }
+}
+
+#[test]
+fn obj_normal_and_texture_coordinate_indices_are_checked_as_vertex_indices_are() {
+    // Each loaded without a word, its normals or texture coordinates dropped, where a vertex index out of
+    // range was refused with its line.
+    let vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (name, faces, needles) in [
+        ("no-normals.obj", "f 1//1 2//2 3//3\n", &["line 4", "normal index 1", "has 0 normals"][..]),
+        ("no-uvs.obj", "f 1/1 2/1 3/1\n", &["line 4", "texture coordinate index 1", "has 0 texture coordinates"]),
+        (
+            "uv-before-first.obj",
+            "vt 0 0\nf 1/-2 2/-1 3/-1\nvt 1 1\n",
+            &["line 5", "index -2", "1 texture coordinates before"],
+        ),
+    ] {
+        let obj = file(name, format!("{vertices}{faces}"));
+        refused("model_transform", &["--mesh", s(&obj)], &[&[s(&obj)][..], needles].concat());
+    }
+    // Every index names an element: the mesh renders.
+    let obj = file("all-named.obj", format!("{vertices}vt 0 0\nvn 0 0 1\nf 1/1/1 2/-1/1 3/1/-1\n"));
+    run_to("model_transform", &dir().join("all-named.png"), &["--mesh", s(&obj)]).assert_rendered("all named");
 }

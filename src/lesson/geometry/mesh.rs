@@ -76,49 +76,71 @@ fn obj_error(bytes: &[u8], consumed: usize, e: tobj::LoadError) -> String {
             format!("line {line}: {e}")
         }
         ReadError => format!("{e} (not a text file?)"),
-        FaceVertexOutOfBounds => out_of_bounds(bytes, 0, e),
-        FaceTexCoordOutOfBounds => out_of_bounds(bytes, 1, e),
-        FaceNormalOutOfBounds => out_of_bounds(bytes, 2, e),
         e => e.to_string(),
     }
 }
 
-/// tobj's index error `e`, with the line of the first face whose index `slot` (0: vertex, 1: texture
-/// coordinate, 2: normal) names an element the file does not have. tobj finds it only once the whole
-/// object is read, so it cannot say where; OBJ indices count from 1, and negative ones back from the last
-/// element listed so far.
-fn out_of_bounds(bytes: &[u8], slot: usize, e: tobj::LoadError) -> String {
-    let text = String::from_utf8_lossy(bytes);
-    let kinds = ["v", "vt", "vn"];
-    let total = text.lines().filter(|l| l.split_ascii_whitespace().next() == Some(kinds[slot])).count() as i64;
-    let mut so_far = 0i64;
+/// Checks every index of the faces of the OBJ text `text` (its vertices, texture coordinates and normals)
+/// before tobj reads it, and names the line of the first that names an element the file does not have, with
+/// how many it has. OBJ indices count from 1, and negative ones back from the last element listed so far.
+/// tobj checks vertex indices only once the whole object is read, so it cannot say where, and it drops a
+/// normal or texture coordinate index that names nothing (`f 1//1 2//2 3//3` in a file without `vn`), or
+/// reads one that counts back past the first, without a word.
+fn check_face_indices(text: &str) -> std::result::Result<(), String> {
+    const KINDS: [&str; 3] = ["v", "vt", "vn"];
+    const NAMES: [(&str, &str); 3] =
+        [("vertex", "vertices"), ("texture coordinate", "texture coordinates"), ("normal", "normals")];
+    let kind = |line: &str| line.split_ascii_whitespace().next().and_then(|k| KINDS.iter().position(|&x| x == k));
+    let mut total = [0i64; 3];
+    for slot in text.lines().filter_map(kind) {
+        total[slot] += 1;
+    }
+    let mut so_far = [0i64; 3];
     for (i, line) in text.lines().enumerate() {
         let mut words = line.split_ascii_whitespace();
-        match words.next() {
-            Some(k) if k == kinds[slot] => so_far += 1,
-            Some("f") => {
-                let bad = words.filter_map(|corner| corner.split('/').nth(slot)?.parse::<i64>().ok()).find(|&index| {
-                    let resolved = if index < 0 { so_far + 1 + index } else { index };
-                    !(1..=total).contains(&resolved)
-                });
-                if let Some(index) = bad {
-                    let what = ["vertices", "texture coordinates", "normals"][slot];
-                    return format!("line {}: {e}: index {index}, and the file has {total} {what}", i + 1);
+        if words.next() != Some("f") {
+            if let Some(slot) = kind(line) {
+                so_far[slot] += 1;
+            }
+            continue;
+        }
+        for corner in words {
+            // An empty index (`1//3`) names nothing; one that is not a number is tobj's to refuse.
+            let indices = corner.split('/').take(3).enumerate();
+            for (slot, index) in indices.filter_map(|(slot, part)| Some((slot, part.parse::<i64>().ok()?))) {
+                let (one, many) = NAMES[slot];
+                let line = i + 1;
+                if index < 0 && -index > so_far[slot] {
+                    return Err(format!(
+                        "line {line}: face {one} index {index} counts back past the first: the file has {} {many} \
+                         before this line",
+                        so_far[slot]
+                    ));
+                }
+                if !(index < 0 || (1..=total[slot]).contains(&index)) {
+                    return Err(format!(
+                        "line {line}: face {one} index {index}, and the file has {} {many}",
+                        total[slot]
+                    ));
                 }
             }
-            _ => {}
         }
     }
-    e.to_string()
+    Ok(())
 }
 
 /// The text of an OBJ file as tobj reads it, and whether it has polylines: without a UTF-8 byte-order mark,
 /// with any byte that is not UTF-8 (a Latin-1 letter in a comment or a group name, where the file's numbers
 /// never are) replaced by U+FFFD, so that one such byte does not make the whole file unreadable, and with
 /// its polylines (`l` lines) made comments: tobj reads them as faces, which would fill the polygon a
-/// polyline outlines. Lines keep their numbers.
+/// polyline outlines; a carriage return alone (the line end of classic Mac OS files) ends a line, as a
+/// newline does: tobj would read the whole file as its first line. Lines keep their numbers.
 fn obj_text(bytes: &[u8]) -> (String, bool) {
     let text = String::from_utf8_lossy(bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes));
+    let text = match text.contains('\r') {
+        true => std::borrow::Cow::Owned(text.replace("\r\n", "\n").replace('\r', "\n")),
+        false => text,
+    };
     let is_polyline = |line: &str| {
         let mut words = line.split_ascii_whitespace();
         words.next() == Some("l")
@@ -246,6 +268,7 @@ impl Mesh {
         }
         let bytes = input::read_capped(path, "cannot read mesh", "an OBJ file", MAX_OBJ_BYTES)?;
         let (text, polylines) = obj_text(&bytes);
+        check_face_indices(&text).map_err(fail)?;
         let bytes = text.as_bytes();
         let options =
             tobj::LoadOptions { triangulate: false, single_index: false, ignore_points: true, ignore_lines: true };
