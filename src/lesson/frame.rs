@@ -235,9 +235,8 @@ fn remove_stale(dir: &Path, path: &Path) {
     for entry in entries.flatten() {
         let name = entry.file_name();
         let name = name.to_string_lossy();
-        let ours = name.len() == temporary_name_bytes(path)
-            && name.starts_with(&prefix)
-            && name.ends_with(TEMPORARY_SUFFIX);
+        let ours =
+            name.len() == temporary_name_bytes(path) && name.starts_with(&prefix) && name.ends_with(TEMPORARY_SUFFIX);
         // A regular file only (the type of the entry itself, a link not followed), opened without blocking.
         if !ours || !entry.file_type().is_ok_and(|t| t.is_file()) {
             continue;

@@ -24,9 +24,9 @@ mod progress;
 mod run;
 mod values;
 
+pub use console::{print_stderr, print_stdout};
 #[cfg(feature = "viewer")]
 pub use controls::controls;
-pub use console::{print_stderr, print_stdout};
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};
 pub use run::{one_line, run};
