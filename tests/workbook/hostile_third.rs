@@ -5,7 +5,7 @@
 //! says what the code before it did.
 
 use crate::common;
-use crate::hostile_input::{dir, file, refused, run_to, s};
+use crate::hostile_input::{dir, file, line_of, refused, run_to, s, scene_refused, scene_with};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -181,4 +181,34 @@ fn obj_normal_and_texture_coordinate_indices_are_checked_as_vertex_indices_are()
     // Every index names an element: the mesh renders.
     let obj = file("all-named.obj", format!("{vertices}vt 0 0\nvn 0 0 1\nf 1/1/1 2/-1/1 3/1/-1\n"));
     run_to("model_transform", &dir().join("all-named.png"), &["--mesh", s(&obj)]).assert_rendered("all named");
+}
+
+#[test]
+fn scene_file_numbers_are_read_in_the_grammar_of_c_strtod() {
+    // A hexadecimal float read as 0 (`power 0x1p3` turned the light off); C's strtod and the course read
+    // these as the numbers below.
+    let render = |name: &str, changes: &[(&str, &str)]| {
+        let scene = changes.iter().fold(scene_with("", ""), |text, (old, new)| text.replacen(old, new, 1));
+        let path = file(name, &scene);
+        let picture = dir().join(format!("{name}.png"));
+        run_to("scene_file", &picture, &[s(&path)]).assert_rendered(name);
+        std::fs::read(&picture).unwrap()
+    };
+    let decimal = render("decimal.qdmg", &[("R  27", "R  27"), ("power  45000", "power  45000")]);
+    let hexadecimal = render(
+        "hexadecimal.qdmg",
+        &[
+            ("R  27", "R  0x1.bp4"),
+            ("power  45000", "power  0XAFC8p0"),
+            ("color  (1, 1, 1)", "color  (0x1p0, 0x.8p1, 1)"),
+        ],
+    );
+    assert_eq!(hexadecimal, decimal, "0x1.bp4 is 27, 0XAFC8p0 is 45000, 0x1p0 and 0x.8p1 are 1");
+    // `inf` and `nan` are numbers to strtod, and refused by name at their line.
+    for (old, new, needle) in
+        [("R  27", "R  inf", "inf"), ("power  45000", "power  -nan", "NaN"), ("R  27", "R  0x1p200", "1.6")]
+    {
+        let scene = scene_with(old, new);
+        scene_refused("not-finite.qdmg", &scene, &[&format!("line {}", line_of(&scene, new)), needle]);
+    }
 }
