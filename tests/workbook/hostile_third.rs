@@ -212,3 +212,22 @@ fn scene_file_numbers_are_read_in_the_grammar_of_c_strtod() {
         scene_refused("not-finite.qdmg", &scene, &[&format!("line {}", line_of(&scene, new)), needle]);
     }
 }
+
+#[test]
+fn side_by_side_writes_each_panel_as_its_own_options_say() {
+    // B was A's picture (RMSE 0) under a caption saying `--exposure 3`; `--tonemap` and `--gamut` were
+    // dropped the same way, in B's options and in A's.
+    let cases: [(&str, &[&str], &str); 4] = [
+        ("fresnel", &[], "--exposure 3"),
+        ("fresnel", &["--exposure", "2"], "--exposure 0"),
+        ("fresnel", &["--tonemap", "reinhard"], "--tonemap clamp"),
+        ("dispersion", &[], "--gamut fit"),
+    ];
+    for (example, a, b) in cases {
+        let picture = dir().join("film-side-by-side.png");
+        let r = run_to(example, &picture, &[a, &["--side-by-side", b]].concat());
+        r.assert_rendered(&format!("{example} {a:?} --side-by-side {b:?}"));
+        let rmse = r.stdout.split("A - B: RMSE ").nth(1).and_then(|t| t.split(' ').next()?.parse::<f64>().ok());
+        assert!(rmse.is_some_and(|rmse| rmse > 0.0), "{example} {a:?} and {b:?} give one picture: {}", r.stdout);
+    }
+}
