@@ -231,3 +231,14 @@ fn side_by_side_writes_each_panel_as_its_own_options_say() {
         assert!(rmse.is_some_and(|rmse| rmse > 0.0), "{example} {a:?} and {b:?} give one picture: {}", r.stdout);
     }
 }
+
+#[test]
+fn the_heat_views_need_a_few_bytes_a_pixel() {
+    // `--view rays`, `shadow-rays` and `depth-reached` kept every pixel's ray counters, about 320 bytes a
+    // pixel: 1.3 GB at 2048 x 2048, an abort under the 1 GiB bound (21.5 GB at the largest size).
+    for view in ["rays", "shadow-rays", "depth-reached"] {
+        let picture = dir().join(format!("view-{view}.png"));
+        let args = ["--view", view, "--width", "2048", "--height", "2048", "--spp", "1", "-q", "-o", s(&picture)];
+        common::hostile::run_bounded("fresnel", &args).assert_rendered(&format!("--view {view} at 2048 x 2048"));
+    }
+}
