@@ -229,10 +229,9 @@ fn heat_scale(view: DebugView, smallest_count: f32, (lo, hi): (f32, f32)) -> Opt
     match view {
         DebugView::Normals | DebugView::Uv | DebugView::Depth => None,
         DebugView::DepthReached => Some(HeatScale::Linear { lo, hi }),
-        DebugView::Rays | DebugView::ShadowRays => Some(HeatScale::Log {
-            lo: if smallest_count.is_finite() { smallest_count } else { 1.0 },
-            hi: hi.max(1.0),
-        }),
+        DebugView::Rays | DebugView::ShadowRays => {
+            Some(HeatScale::Log { lo: if smallest_count.is_finite() { smallest_count } else { 1.0 }, hi: hi.max(1.0) })
+        }
     }
 }
 
