@@ -11,6 +11,7 @@
 
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
+use crate::lesson::render::MAX_SPP;
 use std::fs::File;
 use std::io::{BufReader, Seek};
 use std::path::{Path, PathBuf};
@@ -220,8 +221,8 @@ impl ImageFile {
 
     /// Decodes the picture; its share of the budget comes with it, to be held as long as the picture is.
     /// The decoder may not make a picture of another size than the header's.
-    /// A picture cut short is refused as truncated, and a floating-point picture must hold finite light: a
-    /// NaN or infinite pixel is refused, naming it.
+    /// A picture cut short is refused as truncated, and a floating-point picture must hold finite light of
+    /// at most [`MAX_IMAGE_LIGHT`]: a NaN, infinite or brighter pixel is refused, naming it.
     pub fn decode(mut self) -> Result<(image::DynamicImage, PixelCharge)> {
         let path = &self.path;
         let fail = |e: image::ImageError| match e {
@@ -248,20 +249,30 @@ impl ImageFile {
             }
         }
         .map_err(fail)?;
-        if let Some((x, y, value)) = first_non_finite(&image) {
+        if let Some((x, y, value)) = first_too_bright(&image) {
             return Err(Error::file(
                 "cannot use image",
                 path,
-                format!("pixel ({x}, {y}) is {value}: an image must hold finite light"),
+                format!(
+                    "pixel ({x}, {y}) is {value:e}: an image must hold finite light of at most {MAX_IMAGE_LIGHT:.2e}, \
+                     which a pixel's {MAX_SPP} samples at most can add up without passing 32-bit floats' 3.4e38"
+                ),
             ));
         }
         Ok((image, self.charge))
     }
 }
 
-/// The first pixel (column, row) of a floating-point `image` with a colour channel that is NaN or
-/// infinite, and that value.
-fn first_non_finite(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
+/// The brightest light an image may hold: the renderer adds the samples of a pixel before it averages them,
+/// and [`MAX_SPP`] samples of up to this much light add up to a finite 32-bit number (an environment's light
+/// reaches a pixel as it is). 5.2e33, far above any real sky (the sun's disc in an HDR panorama is under
+/// 1e6); a Radiance pixel whose exponent byte is 255 (2^119 = 6.6e35 at least) or an EXR texel of 3e38 is
+/// beyond it.
+pub const MAX_IMAGE_LIGHT: f32 = f32::MAX / MAX_SPP as f32;
+
+/// The first pixel (column, row) of a floating-point `image` with a colour channel that is NaN, infinite or
+/// brighter than [`MAX_IMAGE_LIGHT`], and that value.
+fn first_too_bright(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
     let (pixels, channels): (&[f32], usize) = match image {
         image::DynamicImage::ImageRgb32F(img) => (img.as_raw(), 3),
         image::DynamicImage::ImageRgba32F(img) => (img.as_raw(), 4),
@@ -269,7 +280,7 @@ fn first_non_finite(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
     };
     let width = image.width() as usize;
     pixels.chunks_exact(channels).enumerate().find_map(|(i, p)| {
-        let bad = p[..3].iter().find(|c| !c.is_finite())?;
+        let bad = p[..3].iter().find(|c| !(c.abs() <= MAX_IMAGE_LIGHT))?;
         Some(((i % width) as u32, (i / width) as u32, *bad))
     })
 }

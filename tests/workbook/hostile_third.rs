@@ -5,6 +5,7 @@
 //! says what the code before it did.
 
 use crate::common;
+use crate::hostile_files::{encoded, float_picture};
 use crate::hostile_input::{dir, file, line_of, refused, run_to, s, scene_refused, scene_with};
 
 use std::path::{Path, PathBuf};
@@ -240,5 +241,39 @@ fn the_heat_views_need_a_few_bytes_a_pixel() {
         let picture = dir().join(format!("view-{view}.png"));
         let args = ["--view", view, "--width", "2048", "--height", "2048", "--spp", "1", "-q", "-o", s(&picture)];
         common::hostile::run_bounded("fresnel", &args).assert_rendered(&format!("--view {view} at 2048 x 2048"));
+    }
+}
+
+#[test]
+fn finite_values_that_overflow_when_shaded_are_refused_by_line_or_file() {
+    // Each was accepted and ended as "N samples came back NaN": a colour or multiplier times the light's
+    // power past 3.4e38, and images whose light a pixel's samples cannot add up.
+    for (name, old, new) in [
+        ("huge-colour", "Lambert tiles {\n\ttexture  tiles", "Phong tiles {\n\tcolor  (3.4e38, 1, 3.4e38)"),
+        (
+            "huge-specular",
+            "Lambert tiles {\n\ttexture  tiles",
+            "Phong tiles {\n\ttexture  tiles\n\tspecularMultiplier 3.4e38",
+        ),
+    ] {
+        let scene = scene_with(old, new);
+        let last = new.lines().last().unwrap().trim();
+        let needles = [format!("line {}", line_of(&scene, last)), "times the scene's brightest light (45000".into()];
+        scene_refused(&format!("{name}.qdmg"), &scene, &needles.iter().map(String::as_str).collect::<Vec<_>>());
+    }
+    // The bound is what the light allows: a colour of 1e30 under this light renders.
+    let scene = scene_with("Lambert tiles {\n\ttexture  tiles", "Phong tiles {\n\tcolor  (1e30, 1, 1)");
+    let path = file("large-colour.qdmg", &scene);
+    run_to("scene_file", &dir().join("large-colour.png"), &[s(&path)]).assert_rendered("a colour of 1e30");
+    // An EXR texel of 3e38, and a Radiance pixel whose exponent byte is 255 (2^119 at least).
+    let exr = file("3e38.exr", encoded(float_picture(3e38), image::ImageFormat::OpenExr));
+    let mut rgbe = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n".to_vec();
+    rgbe.extend([[128, 128, 128, 128]; 7].concat());
+    rgbe.extend([128, 128, 128, 255]);
+    let hdr = file("exponent-255.hdr", rgbe);
+    for (image, value) in [(&exr, "pixel (3, 2) is 3e38"), (&hdr, "pixel (3, 1) is 8.5")] {
+        for option in ["--env", "--texture"] {
+            refused("bitmap_textures", &[option, s(image)], &[s(image), value, "at most 5.19e33"]);
+        }
     }
 }

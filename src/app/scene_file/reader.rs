@@ -135,6 +135,36 @@ impl<'b> Reader<'b> {
         Ok(self.triple(l, name, "color", None)?.map_or(default, |[r, g, b]| Color::new(r, g, b)))
     }
 
+    /// A surface's colour: a colour ([`Reader::color`]) that keeps the light it scales finite
+    /// ([`Reader::check_lit`]).
+    pub(super) fn surface_color(&mut self, l: &Loader, name: &str, default: Color) -> Result<Color> {
+        let color = self.color(l, name, default)?;
+        self.check_lit(l, name, &color.0.to_array().map(f64::from))?;
+        Ok(color)
+    }
+
+    /// Fails unless each of `values`, the value of the property `name` of a surface (a colour's channels, a
+    /// multiplier), times the scene's brightest light ([`Loader::brightest_light`]: what a surface a unit
+    /// from its lamp gets, the course's measure of a light's power) is a finite 32-bit number: the shaders
+    /// multiply the light by these, and a product past 3.4e38 is infinite, then NaN where it meets a zero.
+    pub(super) fn check_lit(&self, l: &Loader, name: &str, values: &[f64]) -> Result<()> {
+        let light = l.brightest_light;
+        match values.iter().find(|&&v| !((v * light) as f32).is_finite()) {
+            Some(&v) => Err(l.error(
+                self.line_of(name),
+                format!(
+                    "`{name}` {}: {} times the scene's brightest light ({}, its colour times its power) is {:.2e}, \
+                     {TOO_LARGE}",
+                    self.raw_line(name).map_or(String::new(), |p| p.value.clone()),
+                    shown(v),
+                    shown(light),
+                    v * light
+                ),
+            )),
+            None => Ok(()),
+        }
+    }
+
     /// A position: three coordinates within ±[`MAX_COORDINATE`].
     pub(super) fn vector(&mut self, l: &Loader, name: &str) -> Result<Option<Vector>> {
         Ok(self.triple(l, name, "vector", Some(MAX_COORDINATE))?.map(Vector::from_array))
