@@ -7,6 +7,7 @@
 use crate::common;
 use crate::hostile_files::{encoded, float_picture};
 use crate::hostile_input::{dir, file, line_of, refused, run_to, s, scene_refused, scene_with};
+use common::hostile::run_bounded;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -240,7 +241,7 @@ fn the_heat_views_need_a_few_bytes_a_pixel() {
     for view in ["rays", "shadow-rays", "depth-reached"] {
         let picture = dir().join(format!("view-{view}.png"));
         let args = ["--view", view, "--width", "2048", "--height", "2048", "--spp", "1", "-q", "-o", s(&picture)];
-        common::hostile::run_bounded("fresnel", &args).assert_rendered(&format!("--view {view} at 2048 x 2048"));
+        run_bounded("fresnel", &args).assert_rendered(&format!("--view {view} at 2048 x 2048"));
     }
 }
 
@@ -275,5 +276,41 @@ fn finite_values_that_overflow_when_shaded_are_refused_by_line_or_file() {
         for option in ["--env", "--texture"] {
             refused("bitmap_textures", &[option, s(image)], &[s(image), value, "at most 5.19e33"]);
         }
+    }
+}
+
+#[test]
+fn messages_name_the_real_cause_and_help_states_each_limit() {
+    // `-o .png` was told "the name must end in .png".
+    let r = run_bounded("fresnel", &[&SMALL[..], &["-o", ".png"]].concat());
+    r.assert_refused("-o .png", &["'.png'", "the name before its extension is empty"]);
+    // An OBJ near 1e19 got "invalid transform (rows ...)", naming neither --mesh nor the file.
+    let obj = file("far.obj", "v 1e19 0 0\nv 0 1e19 0\nv 0 0 1e19\nf 1 2 3\n");
+    refused("model_transform", &["--mesh", s(&obj)], &["cannot read mesh", s(&obj), "line 1", "beyond ±1e18"]);
+    // An OBJ with classic Mac line ends (a CR alone) got "line 1: color parse error".
+    let obj = file("classic-mac.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+    run_to("model_transform", &dir().join("classic-mac.png"), &["--mesh", s(&obj)]).assert_rendered("CR line ends");
+    // Values that begin like an option were taken for options ("unexpected argument '-i' found").
+    for (option, value, needle) in [
+        ("--exposure", "-inf", "invalid --exposure -inf"),
+        ("--clamp-sample", "-inf", "invalid --clamp-sample -inf"),
+        ("--trace-pixel", "-1,-1", "'-1,-1' is not a pixel"),
+        ("--fov", "-5", "-5 is not a field of view"),
+        ("--radius", "-1", "invalid photon radius -1"),
+    ] {
+        refused("fresnel", &[option, value], &[needle]);
+    }
+    // --help states each limit, by its number.
+    let help = run_bounded("fresnel", &["--help"]).stdout.split_whitespace().collect::<Vec<_>>().join(" ");
+    let (fov, pixels) = (lecture6::lesson::camera::FOV_LIMITS, lecture6::lesson::render::MAX_PIXELS);
+    for limit in [
+        format!("At most {}", lecture6::lesson::scene::RECURSION_SAFETY_CAP),
+        "at most 64 with --exhaustive".to_string(),
+        format!("{pixels} pixels at most (2^{}", pixels.ilog2()),
+        format!("from {} to {}", fov.start(), fov.end()),
+        "Errors are still printed, and so is what was asked for: --compare's result".to_string(),
+        "Each panel is developed as its own options say (--exposure, --tonemap, --gamut)".to_string(),
+    ] {
+        assert!(help.contains(&limit), "--help does not say {limit:?}");
     }
 }

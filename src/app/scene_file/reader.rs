@@ -7,10 +7,7 @@ use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::math::Vector;
 
-/// The largest coordinate or length a scene file may give (positions, radii, sizes, `translate`): the
-/// renderer squares distances in 32-bit floats, which end at 3.4e38, so a scene must stay well inside
-/// their square root (1.8e19) to be traced at all.
-pub(super) const MAX_COORDINATE: f64 = 1e18;
+pub(super) use crate::lesson::math::MAX_COORDINATE;
 
 /// Why a number that fits the course's bounds is still refused.
 const TOO_LARGE: &str = "not a finite 32-bit number (the renderer's numbers end at 3.4e38)";

@@ -26,7 +26,7 @@ use super::triangle4::{LANES, ShearedRay, Triangle4};
 use super::{Aabb, Geometry, Hit, IntersectionInfo};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
-use crate::lesson::math::{Vector, gamma};
+use crate::lesson::math::{MAX_COORDINATE, Vector, gamma};
 use crate::lesson::ray::Ray;
 use std::path::Path;
 
@@ -127,6 +127,21 @@ fn check_face_indices(text: &str) -> std::result::Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// Why the OBJ text `text` is refused when a finite vertex lies beyond ±[`MAX_COORDINATE`]: the line of
+/// the first such `v` line, and the bound.
+fn too_far(text: &str) -> String {
+    let beyond = |line: &str| {
+        let mut words = line.split_ascii_whitespace();
+        let coordinate = |w: &str| w.parse::<f32>().is_ok_and(|c| c.is_finite() && c.abs() as f64 > MAX_COORDINATE);
+        words.next() == Some("v") && words.take(3).any(coordinate)
+    };
+    let line = text.lines().position(beyond).map_or(String::new(), |i| format!("line {}: ", i + 1));
+    format!(
+        "{line}a vertex lies beyond ±{MAX_COORDINATE:e}, where the renderer's 32-bit floats can no longer square its \
+         distances"
+    )
 }
 
 /// The text of an OBJ file as tobj reads it, and whether it has polylines: without a UTF-8 byte-order mark,
@@ -315,6 +330,9 @@ impl Mesh {
                     }
                 }
             }
+        }
+        if positions.iter().any(|p| p.is_finite() && p.abs().max_element() as f64 > MAX_COORDINATE) {
+            return Err(fail(too_far(&text)));
         }
         let has_normals = all_normals && !normals.is_empty();
         let normals = has_normals.then_some((&normals[..], &normal_indices[..]));
