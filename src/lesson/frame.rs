@@ -268,7 +268,7 @@ fn still_named(file: &std::fs::File) -> std::io::Result<bool> {
 
 /// Writes a file through `write`, which is given a temporary file in the folder of `path` (made if needed):
 /// a new file with a random name, created exclusively, so that it is never a file that exists already nor a
-/// link planted at a name someone could guess, and short whatever the name of `path` ([`KEPT_NAME_BYTES`]).
+/// link planted at a name someone could guess, and short whatever the name of `path` (76 bytes at most).
 /// It is renamed over `path` only when it is complete, so a failure never destroys an earlier file (the
 /// temporary file is removed, and so it is when INT, TERM or HUP ends the run: [`remove_unfinished`]). It is
 /// held locked while it is written; the unlocked temporary files of `path` that a killed run left are

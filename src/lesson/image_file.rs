@@ -280,7 +280,7 @@ fn first_too_bright(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
     };
     let width = image.width() as usize;
     pixels.chunks_exact(channels).enumerate().find_map(|(i, p)| {
-        let bad = p[..3].iter().find(|c| !(c.abs() <= MAX_IMAGE_LIGHT))?;
+        let bad = p[..3].iter().find(|c| c.is_nan() || c.abs() > MAX_IMAGE_LIGHT)?;
         Some(((i % width) as u32, (i / width) as u32, *bad))
     })
 }
