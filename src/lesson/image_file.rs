@@ -143,6 +143,17 @@ fn bmp_header_size(mut file: &File, format: image::ImageFormat) -> Option<(i64, 
     Some(if i32_at(14) == 12 { (u16_at(18), u16_at(20)) } else { (i32_at(18), i32_at(22).abs()) })
 }
 
+/// The channels of the EXR file `file`, listed, if its header reads and lacks one of R, G and B (the image
+/// decoder says only "image does not contain non-deep rgb channels").
+fn exr_without_rgb(mut file: &File) -> Option<String> {
+    file.rewind().ok()?;
+    let meta = exr::meta::MetaData::read_from_buffered(BufReader::new(file), false).ok()?;
+    let names: Vec<String> =
+        meta.headers.iter().flat_map(|h| h.channels.list.iter().map(|c| c.name.to_string())).collect();
+    let has = |name: &str| names.iter().any(|n| n == name);
+    (!(has("R") && has("G") && has("B"))).then(|| names.join(", "))
+}
+
 /// An image file whose header has been read: its size is known and its pixels are taken from the budget
 /// ([`MAX_IMAGE_PIXELS`]), but nothing is decoded yet. [`ImageFile::decode`] reads the picture.
 #[derive(Debug)]
@@ -189,11 +200,19 @@ impl ImageFile {
             Some(bytes) => image::ImageReader::with_format(std::io::Cursor::new(bytes), format).into_dimensions(),
             None => image::ImageReader::with_format(BufReader::new(&file), format).into_dimensions(),
         };
-        let (width, height) = dimensions.map_err(|e| match bmp_header_size(&file, format) {
+        let (width, height) = dimensions.map_err(|e| match (bmp_header_size(&file, format), exr_without_rgb(&file)) {
             // The BMP decoder calls a size of zero "too large".
-            Some((w, h)) if w == 0 || h == 0 => {
+            (Some((w, h)), _) if w == 0 || h == 0 => {
                 Error::file("cannot use image", path, format!("it has no pixels ({w}x{h})"))
             }
+            (_, Some(channels)) => Error::file(
+                "cannot use image",
+                path,
+                format!(
+                    "it holds the channels {channels} only (a luminance-only picture?): the workbook reads an EXR's \
+                     R, G and B; save it as RGB"
+                ),
+            ),
             _ => fail(e),
         })?;
         if width == 0 || height == 0 {

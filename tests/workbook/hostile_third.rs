@@ -314,3 +314,15 @@ fn messages_name_the_real_cause_and_help_states_each_limit() {
         assert!(help.contains(&limit), "--help does not say {limit:?}");
     }
 }
+
+#[test]
+fn a_luminance_only_exr_is_refused_saying_so() {
+    // Round two's case: "image does not contain non-deep rgb channels".
+    use exr::prelude::*;
+    let path = dir().join("luminance.exr");
+    let channels = SpecificChannels::build().with_channel("Y").with_pixel_fn(|_: Vec2<usize>| (0.5f32,));
+    Image::from_channels((8, 4), channels).write().to_file(&path).unwrap();
+    for option in ["--env", "--texture"] {
+        refused("bitmap_textures", &[option, s(&path)], &[s(&path), "the channels Y only", "R, G and B"]);
+    }
+}
