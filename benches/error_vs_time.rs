@@ -444,7 +444,7 @@ fn draw_chart(curves: &[Vec<Measurement>], path: &Path) -> lecture6::Result<()> 
         root.present().map_err(|e| chart_error(&e))?;
     }
     let img = image::RgbImage::from_raw(w, h, buffer).expect("the chart buffer matches its size");
-    lecture6::lesson::frame::save_atomically(path, |file| img.write_to(file, image::ImageFormat::Png))
+    lecture6::files::output::save_atomically(path, |file| img.write_to(file, image::ImageFormat::Png))
 }
 
 /// A tick label with two significant digits.

@@ -239,7 +239,7 @@ fn main() -> std::process::ExitCode {
                     std::io::Write::write_all(file, lecture6::app::assets::teapot::obj(40).as_bytes())
                         .map_err(image::ImageError::IoError)
                 };
-                if let Err(e) = lecture6::lesson::frame::save_atomically(&fine, write) {
+                if let Err(e) = lecture6::files::output::save_atomically(&fine, write) {
                     eprintln!("mesh: error: {e}");
                     return std::process::ExitCode::from(2);
                 }

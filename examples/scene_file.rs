@@ -26,7 +26,7 @@
 //!
 //! Homework ideas: write your homework's scene as a file; add a `Const` shader to the loader.
 
-use lecture6::app::cli::CommonArgs;
+use lecture6::app::cli::{CommonArgs, print_stderr};
 use lecture6::app::scene_file::{self, LoadOptions};
 use lecture6::lesson::render::RenderSettings;
 use lecture6::prelude::*;
@@ -65,7 +65,7 @@ impl Example for Options {
         let file = self.load(common.max_trace_depth())?;
         if !common.quiet {
             for w in &file.warnings {
-                eprintln!("{w}");
+                print_stderr(&format!("{w}\n"))?;
             }
         }
         settings.width = common.width.unwrap_or(file.width);

@@ -14,7 +14,7 @@
 mod examples;
 
 use lecture6::app::cli::{Cli, Example};
-use lecture6::lesson::frame::save_atomically;
+use lecture6::files::output::save_atomically;
 use std::fmt::Write;
 use std::path::Path;
 use std::process::ExitCode;

@@ -3,7 +3,7 @@
 
 use lecture6::Result;
 use lecture6::app::assets::{ASSETS, HDR_ASSETS, MESHES};
-use lecture6::lesson::frame::save_atomically;
+use lecture6::files::output::save_atomically;
 use std::path::Path;
 use std::process::ExitCode;
 

@@ -142,6 +142,17 @@ fn bmp_header_size(mut file: &File, format: image::ImageFormat) -> Option<(i64, 
     Some(if i32_at(14) == 12 { (u16_at(18), u16_at(20)) } else { (i32_at(18), i32_at(22).abs()) })
 }
 
+/// The channels of the EXR file `file`, listed, if its header reads and lacks one of R, G and B (the image
+/// decoder says only "image does not contain non-deep rgb channels").
+fn exr_without_rgb(mut file: &File) -> Option<String> {
+    file.rewind().ok()?;
+    let meta = exr::meta::MetaData::read_from_buffered(BufReader::new(file), false).ok()?;
+    let names: Vec<String> =
+        meta.headers.iter().flat_map(|h| h.channels.list.iter().map(|c| c.name.to_string())).collect();
+    let has = |name: &str| names.iter().any(|n| n == name);
+    (!(has("R") && has("G") && has("B"))).then(|| names.join(", "))
+}
+
 /// An image file whose header has been read: its size is known and its pixels are taken from the budget
 /// ([`MAX_IMAGE_PIXELS`]), but nothing is decoded yet. [`ImageFile::decode`] reads the picture.
 #[derive(Debug)]
@@ -188,11 +199,19 @@ impl ImageFile {
             Some(bytes) => image::ImageReader::with_format(std::io::Cursor::new(bytes), format).into_dimensions(),
             None => image::ImageReader::with_format(BufReader::new(&file), format).into_dimensions(),
         };
-        let (width, height) = dimensions.map_err(|e| match bmp_header_size(&file, format) {
+        let (width, height) = dimensions.map_err(|e| match (bmp_header_size(&file, format), exr_without_rgb(&file)) {
             // The BMP decoder calls a size of zero "too large".
-            Some((w, h)) if w == 0 || h == 0 => {
+            (Some((w, h)), _) if w == 0 || h == 0 => {
                 Error::file("cannot use image", path, format!("it has no pixels ({w}x{h})"))
             }
+            (_, Some(channels)) => Error::file(
+                "cannot use image",
+                path,
+                format!(
+                    "it holds the channels {channels} only (a luminance-only picture?): the workbook reads an EXR's \
+                     R, G and B; save it as RGB"
+                ),
+            ),
             _ => fail(e),
         })?;
         if width == 0 || height == 0 {
@@ -220,9 +239,10 @@ impl ImageFile {
 
     /// Decodes the picture; its share of the budget comes with it, to be held as long as the picture is.
     /// The decoder may not make a picture of another size than the header's.
-    /// A picture cut short is refused as truncated, and a floating-point picture must hold finite light: a
-    /// NaN or infinite pixel is refused, naming it.
-    pub fn decode(mut self) -> Result<(image::DynamicImage, PixelCharge)> {
+    /// A picture cut short is refused as truncated, and a floating-point picture must hold finite light of
+    /// at most `max_light` (what its user can add up: the renderer's `lesson::bitmap::MAX_IMAGE_LIGHT`): a
+    /// NaN, infinite or brighter pixel is refused, naming it.
+    pub fn decode(mut self, max_light: f32) -> Result<(image::DynamicImage, PixelCharge)> {
         let path = &self.path;
         let fail = |e: image::ImageError| match e {
             image::ImageError::IoError(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => {
@@ -248,20 +268,23 @@ impl ImageFile {
             }
         }
         .map_err(fail)?;
-        if let Some((x, y, value)) = first_non_finite(&image) {
+        if let Some((x, y, value)) = first_too_bright(&image, max_light) {
             return Err(Error::file(
                 "cannot use image",
                 path,
-                format!("pixel ({x}, {y}) is {value}: an image must hold finite light"),
+                format!(
+                    "pixel ({x}, {y}) is {value:e}: an image must hold finite light of at most {max_light:.2e}, \
+                     which the samples of a pixel can add up without passing 32-bit floats' 3.4e38"
+                ),
             ));
         }
         Ok((image, self.charge))
     }
 }
 
-/// The first pixel (column, row) of a floating-point `image` with a colour channel that is NaN or
-/// infinite, and that value.
-fn first_non_finite(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
+/// The first pixel (column, row) of a floating-point `image` with a colour channel that is NaN, infinite or
+/// brighter than `max_light`, and that value.
+fn first_too_bright(image: &image::DynamicImage, max_light: f32) -> Option<(u32, u32, f32)> {
     let (pixels, channels): (&[f32], usize) = match image {
         image::DynamicImage::ImageRgb32F(img) => (img.as_raw(), 3),
         image::DynamicImage::ImageRgba32F(img) => (img.as_raw(), 4),
@@ -269,7 +292,7 @@ fn first_non_finite(image: &image::DynamicImage) -> Option<(u32, u32, f32)> {
     };
     let width = image.width() as usize;
     pixels.chunks_exact(channels).enumerate().find_map(|(i, p)| {
-        let bad = p[..3].iter().find(|c| !c.is_finite())?;
+        let bad = p[..3].iter().find(|c| c.is_nan() || c.abs() > max_light)?;
         Some(((i % width) as u32, (i / width) as u32, *bad))
     })
 }

@@ -202,8 +202,8 @@ impl Reference {
     /// Decodes the reference picture at `path`, whose header has been read (see [`Reference::load`]): the
     /// reference and its share of the pixel budget, to be held as long as the reference is.
     pub fn decode(file: ImageFile, path: &Path) -> Result<(Reference, PixelCharge)> {
-        let (image, charge) = file.decode()?;
-        let reference = if crate::lesson::frame::keeps_linear_light(path) {
+        let (image, charge) = file.decode(f32::MAX)?;
+        let reference = if crate::files::output::keeps_linear_light(path) {
             let img = image.into_rgb32f();
             let pixels = img.pixels().map(|p| crate::lesson::color::Color::new(p[0], p[1], p[2])).collect();
             Reference::Linear(Frame { width: img.width(), height: img.height(), pixels })

@@ -92,14 +92,78 @@ enum UvSource {
     Surface(&'static str),
 }
 
-/// Draws the view of the scene at the size `settings` gives, on `settings.threads` threads.
+/// What the pixels of a view measured, all together: the range of their values, the smallest ray count of
+/// at least 1 (where a log scale starts) and where the `uv` view's coordinates come from.
+struct Summary {
+    lo: f32,
+    hi: f32,
+    smallest_count: f32,
+    sources: BTreeSet<UvSource>,
+}
+
+impl Summary {
+    fn new() -> Summary {
+        Summary { lo: f32::INFINITY, hi: f32::NEG_INFINITY, smallest_count: f32::INFINITY, sources: BTreeSet::new() }
+    }
+
+    /// The summary with `sample` counted too.
+    fn add(mut self, sample: Sample) -> Summary {
+        let mut extend = |values: &[f32]| {
+            for &v in values {
+                (self.lo, self.hi) = (self.lo.min(v), self.hi.max(v));
+            }
+        };
+        match sample {
+            Sample::Normal(n) => extend(&n),
+            Sample::TexCoords(uv, source) => {
+                extend(&uv);
+                self.sources.insert(source);
+            }
+            Sample::Number(v) => {
+                extend(&[v]);
+                if v >= 1.0 {
+                    self.smallest_count = self.smallest_count.min(v);
+                }
+            }
+            Sample::Nothing => {}
+        }
+        self
+    }
+
+    /// Two summaries of disjoint sets of pixels as one.
+    fn merge(mut self, other: Summary) -> Summary {
+        (self.lo, self.hi) = (self.lo.min(other.lo), self.hi.max(other.hi));
+        self.smallest_count = self.smallest_count.min(other.smallest_count);
+        self.sources.extend(other.sources);
+        self
+    }
+}
+
+/// Draws the view of the scene at the size `settings` gives, on `settings.threads` threads. Its memory is a
+/// few bytes a pixel, less than a render's frame: the geometric views measure each pixel twice (once for
+/// the range of the values, once for the colours) rather than keep what they measured, and the heat views
+/// keep one number a pixel of what the pixel's rays cost.
 pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) -> Result<DebugImage> {
     settings.check()?;
     let (w, h) = (settings.width, settings.height);
+    let pixels = w as usize * h as usize;
     let camera = scene.camera.frame(w, h);
-    let pixels: Vec<(u32, u32)> = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).collect();
-    let measure = |&(x, y): &(u32, u32)| -> Sample {
-        let ray = camera.get_screen_ray(x as f32 + 0.5, y as f32 + 0.5);
+    let geometric = matches!(view, DebugView::Normals | DebugView::Uv | DebugView::Depth);
+    let pool = thread_pool(settings.threads)?;
+    let costs: Vec<f32> = if geometric {
+        Vec::new()
+    } else {
+        let row_costs = |y: u32| -> Result<Vec<f32>> {
+            Ok(render_row(scene, settings, y, 0..w)?.iter().map(|p| cost(view, &p.counters)).collect())
+        };
+        pool.install(|| (0..h).into_par_iter().map(row_costs).collect::<Result<Vec<_>>>())?.concat()
+    };
+    let sample = |i: usize| -> Sample {
+        if !geometric {
+            return Sample::Number(costs[i]);
+        }
+        let (x, y) = ((i % w as usize) as f32, (i / w as usize) as f32);
+        let ray = camera.get_screen_ray(x + 0.5, y + 0.5);
         match scene.closest_hit(&ray) {
             None => Sample::Nothing,
             Some((info, node)) => match view {
@@ -109,24 +173,13 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
             },
         }
     };
-    let geometric = matches!(view, DebugView::Normals | DebugView::Uv | DebugView::Depth);
-    let samples = thread_pool(settings.threads)?.install(|| -> Result<Vec<Sample>> {
-        if geometric {
-            return Ok(pixels.par_iter().map(measure).collect());
-        }
-        let rows = (0..h).into_par_iter().map(|y| render_row(scene, settings, y, 0..w)).collect::<Result<Vec<_>>>()?;
-        Ok(rows.iter().flatten().map(|p| Sample::Number(cost(view, &p.counters))).collect())
-    })?;
-    let (lo, hi) = samples.iter().fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), s| match s {
-        Sample::Normal(v) => (v.iter().fold(lo, |a, &b| a.min(b)), v.iter().fold(hi, |a, &b| a.max(b))),
-        Sample::TexCoords([u, v], _) => (lo.min(*u).min(*v), hi.max(*u).max(*v)),
-        Sample::Number(v) => (lo.min(*v), hi.max(*v)),
-        Sample::Nothing => (lo, hi),
+    let summary = pool.install(|| {
+        (0..pixels).into_par_iter().fold(Summary::new, |s, i| s.add(sample(i))).reduce(Summary::new, Summary::merge)
     });
-    let range = if lo <= hi { (lo, hi) } else { (0.0, 0.0) };
-    let heat_scale = heat_scale(view, &samples, range);
-    let colour = |s: &Sample| -> [u8; 3] {
-        match (view, *s) {
+    let range = if summary.lo <= summary.hi { (summary.lo, summary.hi) } else { (0.0, 0.0) };
+    let heat_scale = heat_scale(view, summary.smallest_count, range);
+    let colour = |s: Sample| -> [u8; 3] {
+        match (view, s) {
             (_, Sample::Nothing) => NO_HIT,
             (_, Sample::Normal(n)) => n.map(|c| unit_to_u8((c + 1.0) * 0.5)),
             (_, Sample::TexCoords([u, v], _)) => [unit_to_u8(u), unit_to_u8(v), 0],
@@ -137,16 +190,11 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
             (_, Sample::Number(v)) => heat_scale.and_then(|scale| scale.position(v)).map_or(NO_HIT, heat),
         }
     };
-    let bytes = samples.iter().flat_map(colour).collect();
+    let mut bytes = Vec::with_capacity(pixels * 3);
+    pool.install(|| bytes.par_extend((0..pixels).into_par_iter().flat_map_iter(|i| colour(sample(i)))));
+    drop(costs);
     let image = image::RgbImage::from_raw(w, h, bytes).expect("one colour per pixel");
-    let sources: BTreeSet<UvSource> = samples
-        .iter()
-        .filter_map(|s| match s {
-            Sample::TexCoords(_, source) => Some(*source),
-            _ => None,
-        })
-        .collect();
-    let scale = describe(view, range, heat_scale, &sources);
+    let scale = describe(view, range, heat_scale, &summary.sources);
     let (picture, ticks) = match heat_scale {
         Some(heat_scale) => legend::with_legend(&image, heat_scale, &legend_caption(view))?,
         None => (image.clone(), Vec::new()),
@@ -175,19 +223,14 @@ fn cost(view: DebugView, counters: &Counters) -> f32 {
 }
 
 /// How a heat view places its values on the ramp: the ray counts by their logarithm, from the smallest count
-/// of at least 1 to the largest; the depth reached (a few small whole numbers) evenly over its range. `None`
-/// for the geometric views.
-fn heat_scale(view: DebugView, samples: &[Sample], (lo, hi): (f32, f32)) -> Option<HeatScale> {
+/// of at least 1 (`smallest_count`, infinite when there is none) to the largest; the depth reached (a few
+/// small whole numbers) evenly over its range. `None` for the geometric views.
+fn heat_scale(view: DebugView, smallest_count: f32, (lo, hi): (f32, f32)) -> Option<HeatScale> {
     match view {
         DebugView::Normals | DebugView::Uv | DebugView::Depth => None,
         DebugView::DepthReached => Some(HeatScale::Linear { lo, hi }),
         DebugView::Rays | DebugView::ShadowRays => {
-            let counted = samples.iter().filter_map(|s| match s {
-                Sample::Number(v) if *v >= 1.0 => Some(*v),
-                _ => None,
-            });
-            let smallest = counted.fold(f32::INFINITY, f32::min);
-            Some(HeatScale::Log { lo: if smallest.is_finite() { smallest } else { 1.0 }, hi: hi.max(1.0) })
+            Some(HeatScale::Log { lo: if smallest_count.is_finite() { smallest_count } else { 1.0 }, hi: hi.max(1.0) })
         }
     }
 }

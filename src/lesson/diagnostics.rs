@@ -8,7 +8,7 @@
 //! - a ray that found the surface it left again, right where it left it (a hit point off its surface by
 //!   more than its error bound: the same node, closer than `sqrt(EPSILON)` times the point's coordinates,
 //!   and crossed from the side the ray left, see [`crate::lesson::branching`]);
-//! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`]);
+//! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`](crate::lesson::node::Node::surface));
 //!
 //! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
 //!

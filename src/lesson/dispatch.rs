@@ -2,7 +2,7 @@
 //! them: nothing else in the lesson asks a value's concrete type.
 //!
 //! The slides call a node's geometry, shader and texture, and the environment, through their interfaces
-//! (virtual calls in the course's C++, trait objects here). When a scene is prepared ([`Scene::prepared`]),
+//! (virtual calls in the course's C++, trait objects here). When a scene is prepared ([`Scene::prepared`](crate::lesson::scene::Scene::prepared)),
 //! each node's shape and shader, and the environment, are looked at once: the workbook's own types
 //! (`Sphere`, `Plane`, a `Mesh`; `Lambert`, `Phong`, a perfect `Reflection`, `Refraction`, a `Layered` of
 //! these; `BitmapTexture`, `CheckerTexture`, `Fresnel`; the cube map, spherical and constant environments)

@@ -118,6 +118,11 @@ impl OrthonormalBasis {
     }
 }
 
+/// The largest coordinate or length a scene may give (positions, radii, sizes, a mesh's vertices): the
+/// renderer squares distances in 32-bit floats, which end at 3.4e38, so a scene must stay well inside their
+/// square root (1.8e19) to be traced at all.
+pub const MAX_COORDINATE: f64 = 1e18;
+
 /// Higham's bound on the relative rounding error of `n` successive floating-point operations:
 /// `n u / (1 - n u)` with `u` the unit roundoff (half of `f32::EPSILON`). Used to bound the error of a
 /// computed hit point, from which the start offset of secondary rays follows (pbrt-v4, section 6.8).

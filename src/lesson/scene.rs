@@ -269,7 +269,7 @@ impl Scene {
     }
 
     /// The closest node hit by the ray, and its surface there: the slide's loop over the nodes, each
-    /// intersected in full ([`Scene::closest_by_loop`]), or, with the step [`Step::TwoPhaseHit`], the nearest
+    /// intersected in full, or, with the step [`Step::TwoPhaseHit`], the nearest
     /// hit found first ([`Scene::nearest_hit`]) and only the winner's surface described ([`Node::surface`]).
     #[inline(always)]
     pub fn closest_hit(&self, ray: &Ray) -> Option<(IntersectionInfo, &Node)> {

@@ -23,6 +23,7 @@ mod glossy;
 mod homework;
 mod hostile_files;
 mod hostile_input;
+mod hostile_third;
 mod house;
 mod inspect;
 mod layered_fresnel;

@@ -4,11 +4,11 @@
 //! the lines to print.
 
 use super::example::{Cli, Example};
+use crate::files::output::{check_output, save_atomically};
 use crate::instruments::debug_view::{DebugView, render_view};
 use crate::instruments::ray_tree::{self, PixelPos};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
-use crate::lesson::frame::{check_output, save_atomically};
 use crate::lesson::input;
 use clap::ValueEnum;
 use std::ffi::OsString;
@@ -126,7 +126,8 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
         let secs = stats.elapsed.as_secs_f64();
         let rays = stats.counters.total() as f64 * 1e-6;
         Ok(Panel {
-            image: frame.to_rgb8(),
+            // Each panel as its options would write it to a PNG: exposed, gamut and tone mapped.
+            image: args.film().develop(frame, false).to_rgb8(),
             caption: format!("{label}: {name} {options}\n{secs:.2} s, {rays:.2} M rays"),
         })
     };

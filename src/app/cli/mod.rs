@@ -3,7 +3,9 @@
 //! and print one summary line. The regression tests go through [`Cli::render`], the same path.
 //!
 //! Errors in user input print one line naming the file or value and exit with code 2 (as clap does for
-//! unknown options, whose message is put on one line too), never a panic.
+//! unknown options, whose message is put on one line too), never a panic. What an example prints goes
+//! through `console.rs`: a reader that went away (`| head -1`) ends nothing, a full device is one more
+//! error.
 //!
 //! The instruments that render an example again and again (the study, the live window) say what they need of
 //! its command line as traits of their own; `instruments.rs` implements them for every example, and
@@ -11,6 +13,7 @@
 //! from here.
 
 pub mod commands;
+mod console;
 #[cfg(feature = "viewer")]
 mod controls;
 mod example;
@@ -21,6 +24,7 @@ mod progress;
 mod run;
 mod values;
 
+pub use console::{print_stderr, print_stdout};
 #[cfg(feature = "viewer")]
 pub use controls::controls;
 pub use example::{Cli, Example};

@@ -73,10 +73,12 @@ fn ray_depth(text: &str) -> std::result::Result<u32, String> {
 #[allow(missing_docs)]
 #[derive(clap::Args, Clone, Debug)]
 pub struct CommonArgs {
-    /// Image width in pixels. [default: 640, or a scene file's own]
+    /// Image width in pixels; the picture may have 67108864 pixels at most (2^26, 8192 x 8192).
+    /// [default: 640, or a scene file's own]
     #[arg(long, value_parser = whole_number::<u32>(1..=u32::MAX as i64), help_heading = COMMON)]
     pub width: Option<u32>,
-    /// Image height in pixels. [default: 480, or a scene file's own]
+    /// Image height in pixels; the picture may have 67108864 pixels at most (2^26, 8192 x 8192).
+    /// [default: 480, or a scene file's own]
     #[arg(long, value_parser = whole_number::<u32>(1..=u32::MAX as i64), help_heading = COMMON)]
     pub height: Option<u32>,
     /// Anti-aliasing samples per pixel: 1 shoots through each pixel's centre; a square number uses a jittered
@@ -119,7 +121,8 @@ pub struct CommonArgs {
     /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
-    /// Print nothing but errors: no progress bar, no summary.
+    /// No progress bar, summary, notes or warnings. Errors are still printed, and so is what was asked
+    /// for: --compare's result, --trace-pixel's tree, --view's and --side-by-side's lines.
     #[arg(long, short, help_heading = COMMON)]
     pub quiet: bool,
     /// Compare the picture with a reference (checked before the render): print RMSE, PSNR, the largest
@@ -167,7 +170,7 @@ pub struct CommonArgs {
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
     /// start, direction, what it hits, the shader and layer that sent it, its weight, its colour and why it
     /// stopped, and how the colours add up to the pixel's.
-    #[arg(long, value_name = "X,Y", help_heading = COMMON, conflicts_with = "side_by_side")]
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true, help_heading = COMMON, conflicts_with = "side_by_side")]
     pub trace_pixel: Option<PixelPos>,
     /// Which camera ray of the pixel --trace-pixel shows (numbered from 0).
     #[arg(long, default_value_t = 0, value_name = "N", help_heading = COMMON)]
@@ -183,6 +186,7 @@ pub struct CommonArgs {
     pub view: Option<DebugView>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
+    /// Each panel is developed as its own options say (--exposure, --tonemap, --gamut).
     /// The heat map is --compare's: black where A and B agree, white at their largest difference, with its
     /// colour bar.
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
@@ -193,7 +197,7 @@ pub struct CommonArgs {
     pub window: bool,
     /// Exposure in stops: the picture is multiplied by 2^EV before it is written (-1 halves the light). For
     /// HDR skies that come out white.
-    #[arg(long, value_name = "EV", default_value_t = 0.0, help_heading = PICTURE)]
+    #[arg(long, value_name = "EV", default_value_t = 0.0, allow_hyphen_values = true, help_heading = PICTURE)]
     pub exposure: f32,
     /// How light above 1 fits a PNG: clamp (the course's: white above 1) or reinhard (compresses highlights,
     /// darker overall). EXR and HDR output keep linear light.
@@ -201,11 +205,12 @@ pub struct CommonArgs {
     pub tonemap: ToneMap,
     /// Scale down every sample brighter than MAX in any channel to MAX: tames fireflies (a glossy sphere
     /// under a bright sun), at the price of bias: the clamped light is lost.
-    #[arg(long, value_name = "MAX", help_heading = PICTURE)]
+    #[arg(long, value_name = "MAX", allow_hyphen_values = true, help_heading = PICTURE)]
     pub clamp_sample: Option<f32>,
-    /// The camera's field of view in degrees, across the picture's diagonal (the course's convention) or the
-    /// extent that --fov-axis names: smaller zooms in, larger shows more. [default: the scene's own]
-    #[arg(long, value_name = "DEGREES", value_parser = field_of_view, help_heading = PICTURE)]
+    /// The camera's field of view in degrees, from 0.0001 to 179, across the picture's diagonal (the course's
+    /// convention) or the extent that --fov-axis names: smaller zooms in, larger shows more. [default: the
+    /// scene's own]
+    #[arg(long, value_name = "DEGREES", value_parser = field_of_view, allow_hyphen_values = true, help_heading = PICTURE)]
     pub fov: Option<f32>,
     /// Which extent of the picture stays when the aspect ratio changes: diagonal (the course's: a wider
     /// picture shows less at the top), vertical or horizontal. The picture at 640 x 480 is the same for all
@@ -224,7 +229,7 @@ impl CommonArgs {
         if self.exhaustive { steps.without(Step::AdaptiveDepth) } else { steps }
     }
 
-    /// The deepest ray depth the render can take, if the options cap it: [`MAX_EXHAUSTIVE_DEPTH`] without
+    /// The deepest ray depth the render can take, if the options cap it: 64 (`MAX_EXHAUSTIVE_DEPTH`) without
     /// adaptive depth control (`--exhaustive`, `--slide`), where nothing prunes the ray tree.
     pub fn max_trace_depth(&self) -> Option<u32> {
         (!self.steps().has(Step::AdaptiveDepth)).then_some(MAX_EXHAUSTIVE_DEPTH)
@@ -248,7 +253,7 @@ pub struct PhotonArgs {
     #[arg(long, value_name = "K", help_heading = HEADING)]
     pub k: Option<u32>,
     /// The largest distance from a shaded point at which photons count. [default: the scene's own]
-    #[arg(long, value_name = "R", help_heading = HEADING)]
+    #[arg(long, value_name = "R", allow_hyphen_values = true, help_heading = HEADING)]
     pub radius: Option<f32>,
     /// Draw each stored photon as a dot instead of estimating the caustic light from them.
     #[arg(long, help_heading = HEADING)]

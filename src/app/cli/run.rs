@@ -2,11 +2,12 @@
 //! reference if asked) and print one summary line, or run one of the instruments the options ask for.
 
 use super::commands;
+use super::console::{print_clap, print_stderr, print_stdout};
 use super::example::{Cli, Example};
 use super::help::help_command;
+use crate::files::output::{check_output, keeps_linear_light, save_atomically};
 use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
-use crate::lesson::frame::{check_output, keeps_linear_light, save_atomically};
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
 use crate::lesson::render::thread_pool;
@@ -26,6 +27,7 @@ fn program_name() -> String {
 /// with a reference if asked, print one summary line): the whole `main` of every example. The example's
 /// name, which names its default output `out/<name>.png`, is its binary's.
 pub fn run<E: Example>() -> ExitCode {
+    remove_unfinished_on_signals();
     let name = program_name();
     let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
     let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
@@ -33,16 +35,13 @@ pub fn run<E: Example>() -> ExitCode {
         // --help shows the defaults the example's scene sets; --help and --version print to stdout and succeed.
         Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelp => {
             let argv = std::iter::once(std::ffi::OsString::from(&name)).chain(argv);
-            match help_command::<E>(&name).try_get_matches_from(argv) {
-                Err(help) => help.exit(),
-                Ok(_) => e.exit(),
-            }
+            return match help_command::<E>(&name).try_get_matches_from(argv) {
+                Err(help) => clap_exit(&name, &help),
+                Ok(_) => clap_exit(&name, &e),
+            };
         }
-        Err(e) if !e.use_stderr() => e.exit(),
-        Err(e) => {
-            eprintln!("{name}: {}", one_line(&e.to_string()));
-            return ExitCode::from(2);
-        }
+        Err(e) if !e.use_stderr() => return clap_exit(&name, &e),
+        Err(e) => return refuse(&format!("{name}: {}", one_line(&e.to_string()))),
     };
     if args.common.window {
         return open_window(&name, args, argv);
@@ -51,10 +50,42 @@ pub fn run<E: Example>() -> ExitCode {
     // too (the render builds its own pool of the same size).
     match thread_pool(args.common.threads).and_then(|pool| pool.install(|| run_parsed(&name, &args))) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("{name}: error: {e}");
-            ExitCode::from(2)
+        Err(e) => refuse(&format!("{name}: error: {e}")),
+    }
+}
+
+/// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
+/// written ([`crate::files::output::remove_unfinished`]): the earlier picture is kept as it was, and nothing half written is left.
+/// Where the handler cannot be installed the run goes on without it.
+#[cfg(unix)]
+fn remove_unfinished_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else { return };
+    std::thread::spawn(move || {
+        for signal in signals.forever() {
+            crate::files::output::remove_unfinished();
+            let _ = signal_hook::low_level::emulate_default_handler(signal);
         }
+    });
+}
+
+/// Elsewhere the signals end the run as they would.
+#[cfg(not(unix))]
+fn remove_unfinished_on_signals() {}
+
+/// Prints `line` on stderr (if it can be written: there is nowhere else to say it) and returns exit code 2,
+/// the code of every error.
+fn refuse(line: &str) -> ExitCode {
+    let _ = print_stderr(&format!("{line}\n"));
+    ExitCode::from(2)
+}
+
+/// Prints what clap made of the command line (`--help`, `--version`) and returns clap's exit code, or 2
+/// when it cannot be printed.
+fn clap_exit(name: &str, message: &clap::Error) -> ExitCode {
+    match print_clap(message) {
+        Ok(()) => ExitCode::from(u8::try_from(message.exit_code()).unwrap_or(2)),
+        Err(e) => refuse(&format!("{name}: error: {e}")),
     }
 }
 
@@ -63,18 +94,16 @@ pub fn run<E: Example>() -> ExitCode {
 fn open_window<E: Example>(name: &str, args: Cli<E>, argv: Vec<std::ffi::OsString>) -> ExitCode {
     match super::controls::<E>(name, &argv) {
         Ok(controls) => crate::instruments::viewer::run(name, args, controls),
-        Err(e) => {
-            eprintln!("{name}: {}", one_line(&e.to_string()));
-            ExitCode::from(2)
-        }
+        Err(e) => refuse(&format!("{name}: {}", one_line(&e.to_string()))),
     }
 }
 
 /// `--window` in a build without the viewer: say how to get it.
 #[cfg(not(feature = "viewer"))]
 fn open_window<E: Example>(name: &str, _args: Cli<E>, _argv: Vec<std::ffi::OsString>) -> ExitCode {
-    eprintln!("{name}: --window needs the viewer: cargo run --release --features viewer --example {name} -- --window");
-    ExitCode::from(2)
+    refuse(&format!(
+        "{name}: --window needs the viewer: cargo run --release --features viewer --example {name} -- --window"
+    ))
 }
 
 /// A clap error message on one line: its lines joined, without the usage and the pointer to --help, and
@@ -124,16 +153,16 @@ fn resolved(path: &Path) -> Option<PathBuf> {
 
 fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     if let Some(pixel) = args.common.trace_pixel {
-        print!("{}", commands::trace_pixel(name, args, pixel)?);
+        print_stdout(&commands::trace_pixel(name, args, pixel)?)?;
         return Ok(());
     }
     if let Some(alternative) = &args.common.side_by_side {
         let given: Vec<_> = std::env::args_os().skip(1).collect();
-        print!("{}", commands::side_by_side::<E>(name, &given, alternative)?);
+        print_stdout(&commands::side_by_side::<E>(name, &given, alternative)?)?;
         return Ok(());
     }
     if let Some(view) = args.common.view {
-        print!("{}", commands::write_view(name, args, view)?);
+        print_stdout(&commands::write_view(name, args, view)?)?;
         return Ok(());
     }
     let output = args.output_path(name);
@@ -148,8 +177,8 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         }
         None => None,
     };
-    // Where the picture and the heat map go is checked before any work (after the reference's own check:
-    // this one makes the output's folder).
+    // Where the picture and the heat map go is checked before any work; nothing is made until the render is
+    // done.
     check_output(&output, None)?;
     if reference_file.is_some() {
         check_output(&heat_path, Some(image::ImageFormat::Png))?;
@@ -166,7 +195,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         }
         if !quiet {
             for note in args.options_without_effect(scene) {
-                eprintln!("{name}: note: {note}");
+                print_stderr(&format!("{name}: note: {note}\n"))?;
             }
         }
         Ok(())
@@ -181,8 +210,8 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             SpectralPlan::White => String::new(),
             plan => format!(" ({plan})"),
         };
-        println!(
-            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays, {:.2} Mrays/s -> {}",
+        print_stdout(&format!(
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays, {:.2} Mrays/s -> {}\n",
             name,
             settings.width,
             settings.height,
@@ -195,28 +224,32 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             rays as f64 * 1e-6,
             rays as f64 * 1e-6 / secs.max(1e-9),
             output.display()
-        );
+        ))?;
         for warning in &stats.warnings {
-            println!("{name}: warning: {warning}");
+            print_stdout(&format!("{name}: warning: {warning}\n"))?;
         }
         if let Some(p) = &stats.photons {
             let trace = p.trace_time.as_secs_f64();
-            println!(
+            print_stdout(&format!(
                 "{}: photon map: {} photons emitted, {} stored, traced in {:.3} s ({:.2} M photons/s), grid \
-                 built in {:.3} s",
+                 built in {:.3} s\n",
                 name,
                 p.emitted,
                 p.stored,
                 trace,
                 p.emitted as f64 * 1e-6 / trace.max(1e-9),
                 p.build_time.as_secs_f64()
-            );
+            ))?;
         }
     }
     if let Some((path, (reference, _charge))) = &reference {
         let comparison = compare::compare(&frame, reference)?;
         save_atomically(&heat_path, |file| comparison.heat_map.write_to(file, image::ImageFormat::Png))?;
-        println!("compared with {}: {comparison}; heat map -> {}", path.display(), heat_path.display());
+        print_stdout(&format!(
+            "compared with {}: {comparison}; heat map -> {}\n",
+            path.display(),
+            heat_path.display()
+        ))?;
     }
     Ok(())
 }

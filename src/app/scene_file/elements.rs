@@ -62,6 +62,10 @@ impl Loader<'_> {
             s.light_pos = Some((pos, r.line_of("lightPos")));
         }
         s.light_intensity = r.float(self, "lightIntensity", s.light_intensity, -1e120, 1e120)?;
+        // The lecture-6 era's white light, and the ambient light, light the surfaces as a lamp does.
+        let era_light = if s.light_pos.is_some() { s.light_intensity.abs() } else { 0.0 };
+        let ambient = s.ambient.0.to_array().iter().fold(0.0, |m: f64, &c| m.max(c.abs() as f64));
+        self.brightest_light = self.brightest_light.max(era_light).max(ambient);
         Ok(())
     }
 
@@ -171,8 +175,8 @@ impl Loader<'_> {
     pub(super) fn texture(&mut self, r: &mut Reader) -> Result<Arc<dyn Texture>> {
         Ok(match r.block.class.as_str() {
             "CheckerTexture" => {
-                let color1 = r.color(self, "color1", Color::BLACK)?;
-                let color2 = r.color(self, "color2", Color::BLACK)?;
+                let color1 = r.surface_color(self, "color1", Color::BLACK)?;
+                let color2 = r.surface_color(self, "color2", Color::BLACK)?;
                 let scaling = r.float(self, "scaling", 1.0, -1e120, 1e120)?;
                 // The course's squares are 5 / scaling units wide; the workbook's 1 / scaling.
                 Arc::new(CheckerTexture { color1, color2, scaling: (scaling / 5.0) as f32 })
@@ -237,6 +241,7 @@ impl Loader<'_> {
                 // A negative exponent makes the highlight infinite where its cosine is 0.
                 let exponent = r.float(self, "specularExponent", 10.0, 0.0, 1e120)?;
                 let multiplier = r.float(self, "specularMultiplier", 0.4, -1e120, 1e120)?;
+                r.check_lit(self, "specularMultiplier", &[multiplier])?;
                 Arc::new(Phong::new(color, multiplier as f32, exponent as f32))
             }
             "Refl" => {
@@ -268,7 +273,7 @@ impl Loader<'_> {
 
     /// A Lambert's or Phong's `color`, replaced entirely by its `texture` when it has one.
     pub(super) fn color_source(&mut self, r: &mut Reader, default: Color) -> Result<ColorSource> {
-        let color = r.color(self, "color", default)?;
+        let color = r.surface_color(self, "color", default)?;
         let Some(p) = r.raw("texture") else { return Ok(ColorSource::Color(color)) };
         match self.texture_ref(p, &p.value)? {
             Some(t) => Ok(ColorSource::Texture(t)),

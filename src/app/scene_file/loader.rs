@@ -36,6 +36,10 @@ pub(super) struct Loader<'a> {
     pub(super) shaders: Built<Arc<dyn Shader>>,
     /// Shaders being built, to report a Layered that contains itself.
     pub(super) building: Vec<usize>,
+    /// The largest channel of the light a surface a unit from a lamp gets (the lamp's colour times its
+    /// power), or of the ambient light, over the scene's lights: they are read before the textures and
+    /// shaders, whose colours and multipliers scale it ([`Reader::surface_color`]).
+    pub(super) brightest_light: f64,
 }
 
 /// The GlobalSettings, merged over every GlobalSettings block (spec 1.10).
@@ -64,6 +68,7 @@ impl<'a> Loader<'a> {
             textures: HashMap::new(),
             shaders: HashMap::new(),
             building: Vec::new(),
+            brightest_light: 0.0,
         }
     }
 
@@ -171,6 +176,8 @@ impl<'a> Loader<'a> {
                             ),
                         ));
                     }
+                    let brightest = intensity.iter().fold(0.0, |m: f64, c| m.max(c.abs()));
+                    self.brightest_light = self.brightest_light.max(brightest);
                     lights.push(PointLight::new(pos, color, power as f32));
                 }
                 "Plane" | "Sphere" | "Cube" | "Mesh" => {

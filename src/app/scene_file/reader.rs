@@ -7,10 +7,7 @@ use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::math::Vector;
 
-/// The largest coordinate or length a scene file may give (positions, radii, sizes, `translate`): the
-/// renderer squares distances in 32-bit floats, which end at 3.4e38, so a scene must stay well inside
-/// their square root (1.8e19) to be traced at all.
-pub(super) const MAX_COORDINATE: f64 = 1e18;
+pub(super) use crate::lesson::math::MAX_COORDINATE;
 
 /// Why a number that fits the course's bounds is still refused.
 const TOO_LARGE: &str = "not a finite 32-bit number (the renderer's numbers end at 3.4e38)";
@@ -133,6 +130,36 @@ impl<'b> Reader<'b> {
     /// A colour: three finite numbers (colours have no other bounds, spec 1.6).
     pub(super) fn color(&mut self, l: &Loader, name: &str, default: Color) -> Result<Color> {
         Ok(self.triple(l, name, "color", None)?.map_or(default, |[r, g, b]| Color::new(r, g, b)))
+    }
+
+    /// A surface's colour: a colour ([`Reader::color`]) that keeps the light it scales finite
+    /// ([`Reader::check_lit`]).
+    pub(super) fn surface_color(&mut self, l: &Loader, name: &str, default: Color) -> Result<Color> {
+        let color = self.color(l, name, default)?;
+        self.check_lit(l, name, &color.0.to_array().map(f64::from))?;
+        Ok(color)
+    }
+
+    /// Fails unless each of `values`, the value of the property `name` of a surface (a colour's channels, a
+    /// multiplier), times the scene's brightest light ([`Loader::brightest_light`]: what a surface a unit
+    /// from its lamp gets, the course's measure of a light's power) is a finite 32-bit number: the shaders
+    /// multiply the light by these, and a product past 3.4e38 is infinite, then NaN where it meets a zero.
+    pub(super) fn check_lit(&self, l: &Loader, name: &str, values: &[f64]) -> Result<()> {
+        let light = l.brightest_light;
+        match values.iter().find(|&&v| !((v * light) as f32).is_finite()) {
+            Some(&v) => Err(l.error(
+                self.line_of(name),
+                format!(
+                    "`{name}` {}: {} times the scene's brightest light ({}, its colour times its power) is {:.2e}, \
+                     {TOO_LARGE}",
+                    self.raw_line(name).map_or(String::new(), |p| p.value.clone()),
+                    shown(v),
+                    shown(light),
+                    v * light
+                ),
+            )),
+            None => Ok(()),
+        }
     }
 
     /// A position: three coordinates within ±[`MAX_COORDINATE`].

@@ -24,9 +24,10 @@ use super::polygon;
 pub use super::triangle4::intersect_triangle;
 use super::triangle4::{LANES, ShearedRay, Triangle4};
 use super::{Aabb, Geometry, Hit, IntersectionInfo};
+use crate::files::obj;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
-use crate::lesson::math::{Vector, gamma};
+use crate::lesson::math::{MAX_COORDINATE, Vector, gamma};
 use crate::lesson::ray::Ray;
 use std::path::Path;
 
@@ -58,77 +59,19 @@ pub const MAX_OBJ_BYTES: u64 = 128 << 20;
 /// Extensions of image files, which are refused as meshes with a message saying so.
 const IMAGE_EXTENSIONS: [&str; 8] = ["png", "jpg", "jpeg", "bmp", "hdr", "exr", "tga", "gif"];
 
-/// tobj's error for an OBJ file, with the line it stopped at when the error is about one line (tobj reads
-/// the file line by line and stops at the first bad one; `consumed` bytes had been read by then).
-fn obj_error(bytes: &[u8], consumed: usize, e: tobj::LoadError) -> String {
-    use tobj::LoadError::*;
-    match e {
-        PositionParseError
-        | NormalParseError
-        | TexcoordParseError
-        | FaceParseError
-        | UnrecognizedCharacter
-        | InvalidPolygon
-        | ScalingByZeroError
-        | ColorParseError => {
-            // The bad line's own newline was read too.
-            let line = bytes[..consumed.saturating_sub(1)].iter().filter(|&&b| b == b'\n').count() + 1;
-            format!("line {line}: {e}")
-        }
-        ReadError => format!("{e} (not a text file?)"),
-        FaceVertexOutOfBounds => out_of_bounds(bytes, 0, e),
-        FaceTexCoordOutOfBounds => out_of_bounds(bytes, 1, e),
-        FaceNormalOutOfBounds => out_of_bounds(bytes, 2, e),
-        e => e.to_string(),
-    }
-}
-
-/// tobj's index error `e`, with the line of the first face whose index `slot` (0: vertex, 1: texture
-/// coordinate, 2: normal) names an element the file does not have. tobj finds it only once the whole
-/// object is read, so it cannot say where; OBJ indices count from 1, and negative ones back from the last
-/// element listed so far.
-fn out_of_bounds(bytes: &[u8], slot: usize, e: tobj::LoadError) -> String {
-    let text = String::from_utf8_lossy(bytes);
-    let kinds = ["v", "vt", "vn"];
-    let total = text.lines().filter(|l| l.split_ascii_whitespace().next() == Some(kinds[slot])).count() as i64;
-    let mut so_far = 0i64;
-    for (i, line) in text.lines().enumerate() {
+/// Why the OBJ text `text` is refused when a finite vertex lies beyond ±[`MAX_COORDINATE`]: the line of
+/// the first such `v` line, and the bound.
+fn too_far(text: &str) -> String {
+    let beyond = |line: &str| {
         let mut words = line.split_ascii_whitespace();
-        match words.next() {
-            Some(k) if k == kinds[slot] => so_far += 1,
-            Some("f") => {
-                let bad = words.filter_map(|corner| corner.split('/').nth(slot)?.parse::<i64>().ok()).find(|&index| {
-                    let resolved = if index < 0 { so_far + 1 + index } else { index };
-                    !(1..=total).contains(&resolved)
-                });
-                if let Some(index) = bad {
-                    let what = ["vertices", "texture coordinates", "normals"][slot];
-                    return format!("line {}: {e}: index {index}, and the file has {total} {what}", i + 1);
-                }
-            }
-            _ => {}
-        }
-    }
-    e.to_string()
-}
-
-/// The text of an OBJ file as tobj reads it, and whether it has polylines: without a UTF-8 byte-order mark,
-/// with any byte that is not UTF-8 (a Latin-1 letter in a comment or a group name, where the file's numbers
-/// never are) replaced by U+FFFD, so that one such byte does not make the whole file unreadable, and with
-/// its polylines (`l` lines) made comments: tobj reads them as faces, which would fill the polygon a
-/// polyline outlines. Lines keep their numbers.
-fn obj_text(bytes: &[u8]) -> (String, bool) {
-    let text = String::from_utf8_lossy(bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes));
-    let is_polyline = |line: &str| {
-        let mut words = line.split_ascii_whitespace();
-        words.next() == Some("l")
+        let coordinate = |w: &str| w.parse::<f32>().is_ok_and(|c| c.is_finite() && c.abs() as f64 > MAX_COORDINATE);
+        words.next() == Some("v") && words.take(3).any(coordinate)
     };
-    if !text.lines().any(is_polyline) {
-        return (text.into_owned(), false);
-    }
-    let lines: Vec<String> =
-        text.split('\n').map(|line| if is_polyline(line) { format!("#{line}") } else { line.to_string() }).collect();
-    (lines.join("\n"), true)
+    let line = text.lines().position(beyond).map_or(String::new(), |i| format!("line {}: ", i + 1));
+    format!(
+        "{line}a vertex lies beyond ±{MAX_COORDINATE:e}, where the renderer's 32-bit floats can no longer square its \
+         distances"
+    )
 }
 
 /// Index triples into a list of attributes, one per triangle.
@@ -245,14 +188,15 @@ impl Mesh {
             return Err(fail(format!("it is an image (.{ext}), not an OBJ file")));
         }
         let bytes = input::read_capped(path, "cannot read mesh", "an OBJ file", MAX_OBJ_BYTES)?;
-        let (text, polylines) = obj_text(&bytes);
+        let (text, polylines) = obj::text(&bytes);
+        obj::check_face_indices(&text).map_err(fail)?;
         let bytes = text.as_bytes();
         let options =
             tobj::LoadOptions { triangulate: false, single_index: false, ignore_points: true, ignore_lines: true };
         let mut rest: &[u8] = bytes;
         // Materials are not needed: a missing .mtl file is not an error.
         let (models, _) = tobj::load_obj_buf(&mut rest, &options, |_| Err(tobj::LoadError::OpenFileFailed))
-            .map_err(|e| fail(obj_error(bytes, bytes.len() - rest.len(), e)))?;
+            .map_err(|e| fail(obj::error(bytes, bytes.len() - rest.len(), e)))?;
         if polylines && models.iter().all(|m| m.mesh.indices.is_empty()) {
             return Err(fail("it has only polylines (`l` lines) and no faces: a line has no surface to render".into()));
         }
@@ -292,6 +236,9 @@ impl Mesh {
                     }
                 }
             }
+        }
+        if positions.iter().any(|p| p.is_finite() && p.abs().max_element() as f64 > MAX_COORDINATE) {
+            return Err(fail(too_far(&text)));
         }
         let has_normals = all_normals && !normals.is_empty();
         let normals = has_normals.then_some((&normals[..], &normal_indices[..]));

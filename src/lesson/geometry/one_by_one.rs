@@ -10,8 +10,7 @@ use crate::lesson::ray::Ray;
 
 impl Mesh {
     /// The mesh's closest hit with ray parameter in (0, `t_max`), testing its triangles one by one after its
-    /// box: the triangle (its slot) and the barycentric coordinates, which [`Geometry::surface`](super::Geometry::surface)
-    /// describes.
+    /// box: the triangle (its slot) and the barycentric coordinates, which [`Geometry::surface`] describes.
     pub fn hit_one_by_one(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         if !self.bounds().is_some_and(|b| hits_box(&b, ray, t_max)) {
             return None;
