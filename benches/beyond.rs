@@ -1385,7 +1385,7 @@ fn branching_bound(readings: &Readings, rows: &mut Vec<Row>, details: &mut Strin
             "the API page's {N}-ray glossy mirror (docs/homework_glossy.rs, each ray its full weight) on two facing panels, depth {DEPTH}, 160x120, 1 spp; and every example in both readings"
         ),
         buys: format!(
-            "{:.2} M rays in {cpu:.2} CPU s with the bound ({:.2} M shared with a sibling, {} traced at depth {DEPTH}), against at most {:.0} M without it ({:.0} M at depth {DEPTH}: {N}^{} times the camera rays' {} glossy rays; the bound allows {N} rays at a camera ray's hit, {SECONDARY_SPLIT} per shading point down to depth {SPLIT_DEPTH}, then 1). On the examples it shares no ray: {shared_default} of {:.1} M rays by default, {shared_slide} of {:.1} M with `--slide`",
+            "{:.2} M rays in {cpu:.2} CPU s with the bound (another {:.2} M given their siblings' mean colour instead of traced; {} traced at depth {DEPTH}), against at most {:.0} M without it ({:.0} M at depth {DEPTH}: {N}^{} times the camera rays' {} glossy rays; the bound allows {N} rays at a camera ray's hit, {SECONDARY_SPLIT} per shading point down to depth {SPLIT_DEPTH}, then 1). On the examples it shares no ray: {shared_default} of {:.1} M rays by default, {shared_slide} of {:.1} M with `--slide`",
             c.total() as f64 / 1e6,
             c.shared_rays as f64 / 1e6,
             c.rays_by_depth[DEPTH as usize],
