@@ -5,18 +5,24 @@
 //! cargo bench --bench beyond -- --quick   # 1 round, fewer points: target/beyond-the-slides.md
 //! ```
 //!
-//! Every step that the default reading takes beyond the slides' reading (`--slide`, every step of `src/lesson/beyond.rs` left out) is
-//! measured against the slide's version of it, side by side in this one process: in each round every
-//! variant runs once, the order alternating from round to round, so that a machine shared with other work
-//! slows both alike; each figure is the median over the rounds. Renders run on one thread; CPU time
-//! (`getrusage`, user plus system, the whole process) stands beside the wall time, and the comparisons use
-//! the CPU time. Where a step leaves the picture as it is, within a few 8-bit levels (an exact step), the
-//! ledger gives the time at equal error; where a step changes the noise it gives the error (RMSE of the linear
-//! values against a converged reference of another seed) at equal time, and the time at equal error, both
-//! interpolated on the log-log curve of the sweep; there a point's time is its rays times its curve's median
-//! CPU time per ray, which is steadier on a loaded machine than one point's median (the tables give each
-//! point's own). Steps that no example reaches, or that have no switch, are timed at unit level (the same
-//! rays through the library's two functions). Lines of code are the non-blank, non-comment lines of the
+//! One renderer serves both readings: each step beyond the slides is a setting of the scene
+//! (`Scene::steps`, `src/lesson/beyond.rs`), and `--slide` leaves them all out. Each step's row measures the
+//! renderer with the step against the same renderer without it (`--no-step NAME`, or the scene's `steps`
+//! without it), side by side in this one process: in each round every variant runs once, the order
+//! alternating from round to round, so that a machine shared with other work slows both alike; each figure
+//! is the median over the rounds. Renders run on one thread; CPU time (`getrusage`, user plus system, the
+//! whole process) stands beside the wall time, and the comparisons use the CPU time. Where a step leaves the
+//! picture as it is, within a few 8-bit levels (an exact step), the ledger gives the time at equal error;
+//! where a step changes the noise it gives the error (RMSE of the linear values against a converged
+//! reference of another seed) at equal time, and the time at equal error, both interpolated on the log-log
+//! curve of the sweep; there a point's time is its rays times its curve's median CPU time per ray, which is
+//! steadier on a loaded machine than one point's median (the tables give each point's own). Steps that no
+//! example reaches are timed at unit level (the same rays through `Scene::closest_hit` with and without the
+//! step) on a scene where they pay. Where the CPU times of the two sides differ by less than a shared
+//! machine's noise, the ledger also counts the instructions of one render of each side (this bench run again
+//! under `valgrind --tool=callgrind`, when valgrind is installed): a count does not move with the load.
+//! Besides the steps, the ledger has rows for what runs beyond the slides without being a step (the guards,
+//! and the deviations from the slides' formulas). Lines of code are the non-blank, non-comment lines of the
 //! items that implement each step, listed at the end of the ledger.
 
 #[macro_use]
@@ -29,23 +35,23 @@ use clap::Parser;
 use lecture6::app::cli::{Cli, Example};
 use lecture6::instruments::compare::difference;
 use lecture6::instruments::study::{Measurement, cost_at_rmse, rmse_at_time, rmse_linear};
-use lecture6::lesson::color::Color;
-use lecture6::lesson::dispatch::through_trait_objects;
+use lecture6::lesson::beyond::{Step, Steps};
+use lecture6::lesson::branching::{SECONDARY_SPLIT, SPLIT_DEPTH};
+use lecture6::lesson::diagnostics::undeclared_dispersion;
 use lecture6::lesson::frame::Frame;
 use lecture6::lesson::geometry::Mesh;
 use lecture6::lesson::math::Vector;
-use lecture6::lesson::node::{Node, NodeTree};
+use lecture6::lesson::node::Node;
+use lecture6::lesson::photon_map::all_directions::MAX_BATCHES;
 use lecture6::lesson::photon_map::{PhotonMap, PhotonStats};
 use lecture6::lesson::ray::Ray;
-use lecture6::lesson::render::{RenderSettings, RenderStats, Stratifier, render, thread_pool};
-use lecture6::lesson::rng::Rng;
-use lecture6::lesson::scene::{Scene, TraceContext};
-use lecture6::lesson::shader::{GLOSSY_SPLIT_DEPTH, Layered, Reflection, Shader};
-use lecture6::lesson::slide;
+use lecture6::lesson::render::{RenderSettings, RenderStats, render, thread_pool};
+use lecture6::prelude::{Camera, Color, Cube, Environment, Layered, Scene, Shader};
 use shared::{cpu_time, median, spheres_scene};
 use std::any::Any;
 use std::fmt::Write as _;
 use std::path::Path;
+use std::process::Command;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -60,6 +66,10 @@ struct Args {
     /// Accepted for `cargo bench` compatibility.
     #[arg(long, hide = true)]
     bench: bool,
+    /// Renders one example once with the options that follow its name, and nothing else: the render whose
+    /// instructions the ledger counts under callgrind ([`instructions`]).
+    #[arg(long, hide = true, num_args = 1.., allow_hyphen_values = true)]
+    render_once: Vec<String>,
 }
 
 /// How a measurement is sized: the full ledger or a quick look.
@@ -111,23 +121,17 @@ fn prepare<E: Example>(args: &[String]) -> (Scene, RenderSettings) {
     parse::<E>(args).prepare().unwrap_or_else(|e| panic!("options {args:?}: {e}"))
 }
 
-/// Renders an example with these options, as its binary does (`--slide` through the slides' reading); the
-/// photon map of the default reading is built again inside the timed part.
+/// Renders an example with these options, as its binary does, in the reading and with the steps they ask
+/// for; the photon map (which `prepare` builds) is built again inside the timed part, so that it counts.
 fn run<E: Example>(args: &[String]) -> Run {
-    let cli = parse::<E>(args);
-    let (mut scene, settings) = cli.prepare().unwrap_or_else(|e| panic!("options {args:?}: {e}"));
+    let (mut scene, settings) = prepare::<E>(args);
     let clock = Clock::start();
-    let result = if cli.common.slide {
-        slide::render(&scene, &settings)
-    } else {
-        if scene.photon_map.is_some() {
-            let pool = thread_pool(settings.threads).expect("thread pool");
-            let map = pool.install(|| PhotonMap::build(&scene, settings.seed)).expect("photon map");
-            scene.photon_map = map.map(Arc::new);
-        }
-        render(&scene, &settings)
-    };
-    let (frame, stats) = result.unwrap_or_else(|e| panic!("render {args:?}: {e}"));
+    if scene.photon_map.is_some() {
+        let pool = thread_pool(settings.threads).expect("thread pool");
+        let map = pool.install(|| PhotonMap::build(&scene, settings.seed)).expect("photon map");
+        scene.photon_map = map.map(Arc::new);
+    }
+    let (frame, stats) = render(&scene, &settings).unwrap_or_else(|e| panic!("render {args:?}: {e}"));
     let (wall, cpu) = clock.stop();
     Run { frame, stats, wall, cpu }
 }
@@ -194,27 +198,16 @@ fn interleaved(plan: &Plan, count: usize, run: impl Fn(usize) -> Run) -> Vec<Tim
         .collect()
 }
 
-/// Renders a prepared scene through the default reading, timed.
-fn run_scene(scene: &Scene, settings: &RenderSettings) -> Run {
-    let clock = Clock::start();
-    let (frame, stats) = render(scene, settings).expect("render");
-    let (wall, cpu) = clock.stop();
-    Run { frame, stats, wall, cpu }
+/// The scene with these steps, prepared for them (outside any timed part).
+fn with_steps(scene: &Scene, steps: Steps) -> Scene {
+    let mut out = scene.clone();
+    out.steps = steps;
+    out.prepared().into_owned()
 }
 
-/// The scene with every `Layered` shader shading every layer, as the slide's loop does.
-fn every_layer(scene: &Scene) -> Option<Scene> {
-    let mut out = scene.clone();
-    let mut found = false;
-    for node in &mut out.nodes {
-        if let Some(layered) = (&*node.shader as &dyn Any).downcast_ref::<Layered>() {
-            let mut every = layered.clone();
-            every.shade_every_layer(true);
-            node.shader = Arc::new(every);
-            found = true;
-        }
-    }
-    found.then_some(out)
+/// Whether a node of the scene has a `Layered` shader.
+fn has_layered(scene: &Scene) -> bool {
+    scene.nodes.iter().any(|node| (&*node.shader as &dyn Any).is::<Layered>())
 }
 
 /// PSNR (dB) and largest difference (8-bit levels) between two pictures as written.
@@ -426,9 +419,16 @@ fn per_ray(plan: &Plan, rays: &[Ray], repeat: usize, fs: &[&dyn Fn(&Ray) -> u64]
     times.into_iter().map(median).collect()
 }
 
+/// The closest hit of the ray in the scene, as its steps find it: the distance and the node's index.
+fn closest(scene: &Scene, ray: &Ray) -> Option<(f32, usize)> {
+    scene.closest_hit(ray).map(|(info, node)| {
+        (info.distance, scene.nodes.iter().position(|n| std::ptr::eq(n, node)).expect("a node of the scene"))
+    })
+}
+
 /// Whether two closest hits are the same: both misses, or the same node at the same distance (within
 /// 1e-5 of it, relative).
-fn same_hit(a: Option<(f32, *const Node)>, b: Option<(f32, *const Node)>) -> bool {
+fn same_hit(a: Option<(f32, usize)>, b: Option<(f32, usize)>) -> bool {
     match (a, b) {
         (None, None) => true,
         (Some((ta, na)), Some((tb, nb))) => na == nb && (ta - tb).abs() <= 1e-5 * ta.abs().max(tb.abs()),
@@ -515,22 +515,48 @@ fn describe_code(code: &Code) -> String {
 // ---------------------------------------------------------------------------------------------------------
 // The steps
 
-/// One row of the ledger.
+/// One row of the ledger: a step of [`Step::ALL`], or something that runs beyond the slides without being
+/// a step.
 struct Row {
-    step: &'static str,
+    step: String,
     slide: &'static str,
     measured: String,
     buys: String,
+    verdict: String,
     code: Vec<Code>,
 }
 
-/// Whether a shader is a glossy mirror, or a layered shader with one among its layers.
-fn has_glossy(shader: &dyn Shader) -> bool {
-    let any = shader as &dyn Any;
-    if let Some(mirror) = any.downcast_ref::<Reflection>() {
-        return mirror.glossiness < 1.0;
-    }
-    any.downcast_ref::<Layered>().is_some_and(|l| l.layers().iter().any(|layer| has_glossy(&*layer.shader)))
+/// A step's name in the ledger: its number in [`Step::ALL`], its name on the command line and what it is.
+fn title(step: Step, what: &str) -> String {
+    let number = Step::ALL.iter().position(|&s| s == step).expect("a step") + 1;
+    format!("{number}. `{}`: {what}", step.name())
+}
+
+const KEPT_FOR_SPEED: &str = "kept for speed";
+const KEPT_FOR_NOISE: &str = "kept for noise";
+const KEPT_AS_GUARD: &str = "kept as a guard (its row shows the scene where it pays)";
+const NOT_A_STEP: &str = "a deviation from the slide, not a step";
+/// The verdict of a step whose figures show no gain beyond the noise on any scene measured: such a step
+/// leaves the code.
+const BUYS_NOTHING: &str = "to be removed: buys nothing beyond the noise";
+
+/// A gain smaller than this factor is not told from the noise of a shared machine.
+const NOISE: f64 = 1.05;
+
+/// The verdict of a step that changes the noise: kept if, at the slide's CPU time, its error is lower by
+/// more than [`NOISE`], or it reaches the slide's error in less time by more than that.
+fn noise_verdict(v: &Versus, step_curve: &[Measurement]) -> String {
+    let fastest = step_curve.iter().min_by(|a, b| a.seconds.total_cmp(&b.seconds)).expect("a curve");
+    let less_error = v.step_rmse.is_some_and(|e| e * NOISE <= v.slide_rmse);
+    let less_time = v.step_seconds.is_some_and(|t| t * NOISE <= v.slide_seconds)
+        || (v.step_seconds.is_none() && fastest.rmse < v.slide_rmse && fastest.seconds * NOISE <= v.slide_seconds);
+    if less_error || less_time { KEPT_FOR_NOISE.to_string() } else { BUYS_NOTHING.to_string() }
+}
+
+/// The geometric mean of the values.
+fn geometric_mean(values: impl IntoIterator<Item = f64>) -> f64 {
+    let (sum, count) = values.into_iter().fold((0.0, 0), |(s, n), v| (s + v.ln(), n + 1));
+    (sum / count as f64).exp()
 }
 
 /// The scene moved by `offset`: every node, the camera and the lights.
@@ -561,59 +587,82 @@ fn changed_pixels(a: &Frame, b: &Frame) -> f64 {
     d.large_pixels as f64 / d.pixels as f64
 }
 
+/// The instructions of one render of the example with these options, counted by callgrind: this bench run
+/// again under `valgrind --tool=callgrind` with `--render-once`, which prints the total it collected. The
+/// count includes the bench's start and the scene's loading, the same for both sides of a comparison.
+/// `None` when valgrind cannot be run.
+fn instructions(name: &str, args: &[String]) -> Option<u64> {
+    let exe = std::env::current_exe().ok()?;
+    let out = Command::new("valgrind")
+        .args(["--tool=callgrind", "--callgrind-out-file=/dev/null"])
+        .arg(exe)
+        .arg("--render-once")
+        .arg(name)
+        .args(args)
+        .output()
+        .ok()?;
+    if !out.status.success() {
+        return None;
+    }
+    String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .find_map(|l| l.split("Collected :").nth(1).and_then(|n| n.trim().parse().ok()))
+}
+
 fn main() {
     let args = Args::parse();
-    let plan = Plan { quick: args.quick, rounds: args.rounds.unwrap_or(if args.quick { 1 } else { 3 }) };
     let all = every_example!(workbook_examples);
+    if let Some((name, options)) = args.render_once.split_first() {
+        (all[example(&all, name)].run)(options);
+        return;
+    }
+    let plan = Plan { quick: args.quick, rounds: args.rounds.unwrap_or(if args.quick { 1 } else { 3 }) };
     let started = Instant::now();
     let mut rows = Vec::new();
     let mut details = String::new();
-    let (examples_table, split_table, split_reached) = slide_against_default(&plan, &all, &mut rows, &mut details);
-    node_bvh(&plan, &mut rows, &mut details);
+    let readings = slide_against_default(&plan, &all, &mut rows, &mut details);
     two_phase_nearest_hit(&plan, &all, &mut rows, &mut details);
+    node_bvh(&plan, &mut rows, &mut details);
     mesh_bvh(&plan, &all, &mut rows);
     bitmap_filtering(&plan, &all, &mut rows, &mut details);
-    stratified_anti_aliasing(&plan, &all, &mut rows, &mut details);
+    stratified_pixels(&plan, &all, &mut rows, &mut details);
     disc_samples(&plan, &all, &mut rows, &mut details);
-    glossy_split_depth(&mut rows, &mut details, &split_table, &split_reached);
     hero_wavelengths(&plan, &all, &mut rows, &mut details);
     photon_map(&plan, &all, &mut rows, &mut details);
     layer_pruning(&plan, &all, &mut rows, &mut details);
     camera_relative(&all, &mut rows, &mut details);
-    static_dispatch(&plan, &all, &mut rows, &mut details);
-    write_ledger(&plan, &rows, &examples_table, &details, started.elapsed().as_secs_f64());
+    branching_bound(&readings, &mut rows, &mut details);
+    end_of_run_report(&plan, &all, &readings, &mut rows, &mut details);
+    deviations(&mut rows);
+    write_ledger(&plan, &rows, &readings.table, &details, started.elapsed().as_secs_f64());
+}
+
+/// What the runs of every example in both readings give the other rows: the table of `--slide` against
+/// the default, each example's default CPU time, and the rays each reading's branching bound shared.
+struct Readings {
+    table: String,
+    default_cpu: Vec<(&'static str, f64)>,
+    /// Per example: the rays, and the rays the bound shared, of the default and of `--slide`.
+    shared: Vec<(&'static str, [u64; 4])>,
 }
 
 /// `--slide` against the default on every example, and `--exhaustive` against the default (step 1) from the
-/// same runs; returns the examples' table and, for step 8, the table of the glossy examples and those whose
-/// depth limit reaches the split.
-fn slide_against_default(
-    plan: &Plan,
-    all: &[Ex],
-    rows: &mut Vec<Row>,
-    details: &mut String,
-) -> (String, String, Vec<&'static str>) {
+/// same runs.
+fn slide_against_default(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) -> Readings {
     eprintln!("every example: default, --exhaustive, --slide");
-    let mut examples_table = String::new();
+    let mut readings = Readings { table: String::new(), default_cpu: Vec::new(), shared: Vec::new() };
+    let table = &mut readings.table;
     writeln!(
-        examples_table,
+        table,
         "| example | default: wall / CPU s | rays | `--slide`: wall / CPU s | rays | `--slide` / default, CPU | PSNR between |"
     )
     .unwrap();
-    writeln!(examples_table, "|---|---:|---:|---:|---:|---:|---:|").unwrap();
+    writeln!(table, "|---|---:|---:|---:|---:|---:|---:|").unwrap();
     let mut adaptive_table = String::new();
     writeln!(adaptive_table, "| example | default CPU s | rays | `--exhaustive` CPU s | rays | time saved | PSNR between | largest difference |").unwrap();
     writeln!(adaptive_table, "|---|---:|---:|---:|---:|---:|---:|---:|").unwrap();
     let mut adaptive_best: Option<(&str, f64, f64, u64, u64)> = None;
     let mut adaptive_worst_level = 0u8;
-    let mut split_table = String::new();
-    let mut split_reached = Vec::new();
-    writeln!(
-        split_table,
-        "| example | glossy mirror | `max_depth` | rays deeper than {GLOSSY_SPLIT_DEPTH} (default) |"
-    )
-    .unwrap();
-    writeln!(split_table, "|---|---|---:|---:|").unwrap();
     for ex in all {
         let base = [&ONE_THREAD[..], &SIZE_320[..]].concat();
         let jobs = [(ex, strings(&base)), (ex, with(&base, &["--exhaustive"])), (ex, with(&base, &["--slide"]))];
@@ -621,7 +670,7 @@ fn slide_against_default(
         let rays = |t: &Timed| t.last.stats.counters.total();
         let (p, _) = psnr(&default.last.frame, &slide.last.frame);
         writeln!(
-            examples_table,
+            table,
             "| {} | {:.3} / {:.3} | {:.2} M | {:.3} / {:.3} | {:.2} M | {:.2}x | {} |",
             ex.name,
             default.wall,
@@ -634,6 +683,9 @@ fn slide_against_default(
             db(p)
         )
         .unwrap();
+        readings.default_cpu.push((ex.name, default.cpu));
+        let shared = |t: &Timed| t.last.stats.counters.shared_rays;
+        readings.shared.push((ex.name, [rays(&default), shared(&default), rays(&slide), shared(&slide)]));
         if rays(&default) != rays(&exhaustive) {
             let (p, level) = psnr(&default.last.frame, &exhaustive.last.frame);
             adaptive_worst_level = adaptive_worst_level.max(level);
@@ -654,27 +706,19 @@ fn slide_against_default(
                 adaptive_best = Some((ex.name, default.cpu, exhaustive.cpu, rays(&default), rays(&exhaustive)));
             }
         }
-        let (scene, _) = (ex.prepare)(&strings(&base));
-        let glossy = scene.nodes.iter().any(|n| has_glossy(&*n.shader));
-        let deep: u64 = default.last.stats.counters.rays_by_depth[(GLOSSY_SPLIT_DEPTH as usize + 1)..].iter().sum();
-        if glossy {
-            writeln!(split_table, "| {} | yes | {} | {deep} |", ex.name, scene.max_depth).unwrap();
-            if scene.max_depth > GLOSSY_SPLIT_DEPTH {
-                split_reached.push(ex.name);
-            }
-        }
     }
     let (name, d_cpu, e_cpu, d_rays, e_rays) = adaptive_best.expect("some example prunes rays");
     rows.push(Row {
-        step: "1. Adaptive ray-tree depth control",
+        step: title(Step::AdaptiveDepth, "adaptive ray-tree depth control"),
         slide: "`raytrace` with `MAX_RAY_DEPTH` only",
-        measured: "every example, `--exhaustive` against the default, 320x240, 1 thread".into(),
+        measured: "every example, `--exhaustive` (`--no-step adaptive-depth`) against the default, 320x240, 1 thread".into(),
         buys: format!(
             "the same picture within {adaptive_worst_level} level(s) in the worst pixel; at equal error, {:.2}x less CPU time on {name} ({d_cpu:.3} s against {e_cpu:.3} s, {:.2} M rays against {:.2} M)",
             e_cpu / d_cpu,
             d_rays as f64 / 1e6,
             e_rays as f64 / 1e6
         ),
+        verdict: if e_cpu / d_cpu >= NOISE { KEPT_FOR_SPEED } else { BUYS_NOTHING }.to_string(),
         code: vec![
             Code::Items("src/lesson/scene.rs", &["fn srgb8_finest_step"]),
             Code::Lines("src/lesson/scene.rs", "min_ray_weight"),
@@ -683,33 +727,144 @@ fn slide_against_default(
         ],
     });
     writeln!(details, "## 1. Adaptive ray-tree depth control\n\nThe examples whose ray count changes with `--exhaustive` (the others trace the same rays):\n\n{adaptive_table}").unwrap();
-    (examples_table, split_table, split_reached)
+    readings
 }
 
-/// Step 2: the node BVH against the loop over the nodes, on N spheres.
+/// Step 2: the two-phase nearest hit against the slide's loop of full intersects: at unit level on each
+/// example's camera rays, and the whole examples, timed with three times the rounds and their instructions
+/// counted.
+fn two_phase_nearest_hit(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
+    eprintln!("two-phase nearest hit");
+    // The two differ by a few percent, less than the load of a shared machine moves one render: more rounds.
+    let more = Plan { quick: plan.quick, rounds: 3 * plan.rounds };
+    let mut unit_table = String::new();
+    writeln!(unit_table, "| example | nodes | two-phase ns/ray | loop ns/ray | loop / two-phase | same hits |")
+        .unwrap();
+    writeln!(unit_table, "|---|---:|---:|---:|---:|---:|").unwrap();
+    let mut whole_table = String::new();
+    writeln!(
+        whole_table,
+        "| example | two-phase CPU s | loop CPU s | loop / two-phase, CPU | two-phase instructions | loop instructions | loop / two-phase, instructions |"
+    )
+    .unwrap();
+    writeln!(whole_table, "|---|---:|---:|---:|---:|---:|---:|").unwrap();
+    let base = [&ONE_THREAD[..], &SIZE_320[..]].concat();
+    let no_step = ["--no-step", Step::TwoPhaseHit.name()];
+    let (mut unit_ratios, mut cpu_ratios, mut instruction_ratios) = (Vec::new(), Vec::new(), Vec::new());
+    for ex in all {
+        let (scene, _) = (ex.prepare)(&strings(&SIZE_320));
+        let two_phase = with_steps(&scene, Steps::ALL);
+        let by_loop = with_steps(&scene, Steps::ALL.without(Step::TwoPhaseHit));
+        let rays = camera_rays(&scene, 320, 240);
+        let same = rays.iter().filter(|r| same_hit(closest(&two_phase, r), closest(&by_loop, r))).count();
+        let t = per_ray(
+            &more,
+            &rays,
+            10,
+            &[&|r| two_phase.closest_hit(r).is_some() as u64, &|r| by_loop.closest_hit(r).is_some() as u64],
+        );
+        unit_ratios.push(t[1] / t[0]);
+        writeln!(
+            unit_table,
+            "| {} | {} | {:.1} | {:.1} | {:.2}x | {:.3}% |",
+            ex.name,
+            scene.nodes.len(),
+            t[0],
+            t[1],
+            t[1] / t[0],
+            100.0 * same as f64 / rays.len() as f64
+        )
+        .unwrap();
+        let jobs = [(ex, strings(&base)), (ex, with(&base, &no_step))];
+        let [with_step, without]: [Timed; 2] = side_by_side(&more, &jobs).try_into().ok().expect("two");
+        cpu_ratios.push((ex.name, without.cpu / with_step.cpu));
+        let counts = (instructions(ex.name, &strings(&base)), instructions(ex.name, &with(&base, &no_step)));
+        let (i_with, i_without) = match counts {
+            (Some(a), Some(b)) => {
+                instruction_ratios.push((ex.name, b as f64 / a as f64));
+                (format!("{:.1} M", a as f64 / 1e6), format!("{:.1} M", b as f64 / 1e6))
+            }
+            _ => ("not counted".to_string(), "not counted".to_string()),
+        };
+        writeln!(
+            whole_table,
+            "| {} | {:.3} | {:.3} | {:.3}x | {i_with} | {i_without} | {} |",
+            ex.name,
+            with_step.cpu,
+            without.cpu,
+            without.cpu / with_step.cpu,
+            instruction_ratios.last().filter(|r| r.0 == ex.name).map_or("".to_string(), |r| format!("{:.3}x", r.1))
+        )
+        .unwrap();
+    }
+    let range = |v: &[f64]| (v.iter().copied().fold(f64::INFINITY, f64::min), v.iter().copied().fold(0.0, f64::max));
+    let (unit_lo, unit_hi) = range(&unit_ratios);
+    let cpu_mean = geometric_mean(cpu_ratios.iter().map(|r| r.1));
+    let cpu_faster = cpu_ratios.iter().filter(|r| r.1 > 1.0).count();
+    let (cpu_lo, cpu_hi) = range(&cpu_ratios.iter().map(|r| r.1).collect::<Vec<_>>());
+    let instructions_figure = if instruction_ratios.len() == all.len() {
+        let mean = geometric_mean(instruction_ratios.iter().map(|r| r.1));
+        let (lo, hi) = range(&instruction_ratios.iter().map(|r| r.1).collect::<Vec<_>>());
+        let fewer = instruction_ratios.iter().filter(|r| r.1 > 1.0).count();
+        Some((
+            mean,
+            format!(
+                "; instructions of one render (callgrind): the loop takes {lo:.3}x to {hi:.3}x the two-phase hit's (geometric mean {mean:.3}x; more on {fewer} of {})",
+                instruction_ratios.len()
+            ),
+        ))
+    } else {
+        None
+    };
+    // Kept only if the instructions (which the load does not move) and the CPU time agree that it gains.
+    let verdict = match &instructions_figure {
+        Some((mean, _)) if *mean >= 1.01 && cpu_mean >= 1.0 => KEPT_FOR_SPEED,
+        None if cpu_mean >= NOISE => KEPT_FOR_SPEED,
+        _ => BUYS_NOTHING,
+    };
+    rows.push(Row {
+        step: title(Step::TwoPhaseHit, "the two-phase nearest hit (`Geometry::hit`, then `surface` of the winner)"),
+        slide: "`Node::intersect` on every node, the full hit description each time",
+        measured: format!(
+            "every example with and without `--no-step two-phase-hit`: whole renders at 320x240 ({} rounds) and their instructions; `Scene::closest_hit` on the camera rays at 320x240",
+            more.rounds
+        ),
+        buys: format!(
+            "the same closest hits; whole renders: the loop takes {cpu_lo:.3}x to {cpu_hi:.3}x the two-phase hit's CPU time (geometric mean {cpu_mean:.3}x; more on {cpu_faster} of {}){}; unit level: {unit_lo:.2}x to {unit_hi:.2}x per camera ray",
+            cpu_ratios.len(),
+            instructions_figure.as_ref().map_or(String::new(), |f| f.1.clone())
+        ),
+        verdict: verdict.to_string(),
+        code: vec![
+            Code::Items("src/lesson/geometry/mod.rs", &["struct Hit", "impl Hit", "fn hit(", "fn surface("]),
+            Code::Items("src/lesson/node.rs", &["fn hit(", "fn hit_transformed", "fn surface(", "fn nearest_hit_linear"]),
+            Code::Items("src/lesson/scene.rs", &["fn nearest_hit", "fn closest_hit"]),
+        ],
+    });
+    writeln!(details, "## 2. The two-phase nearest hit\n\nEach example rendered as it is and with `--no-step two-phase-hit` (every node's full `intersect`, the slide's loop), 320x240, one thread, medians of {} rounds; and one render of each under callgrind, whose instruction count does not move with the machine's load (it includes the bench's start and the scene's loading, alike on both sides).\n\n{whole_table}\nAt unit level: `Scene::closest_hit` on each example's camera rays through the pixel centres, the scene with and without the step. The per-geometry `hit`/`surface` pairs are not counted in the lines.\n\n{unit_table}", more.rounds).unwrap();
+}
+
+/// Step 3: the node BVH against the loop over the nodes, on N spheres.
 fn node_bvh(plan: &Plan, rows: &mut Vec<Row>, details: &mut String) {
     eprintln!("node BVH");
     let mut bvh_table = String::new();
-    writeln!(bvh_table, "| spheres | BVH ns/ray | slide's loop ns/ray | loop / BVH | same hits |").unwrap();
+    writeln!(bvh_table, "| spheres | BVH ns/ray | loop ns/ray | loop / BVH | same hits |").unwrap();
     writeln!(bvh_table, "|---:|---:|---:|---:|---:|").unwrap();
     let counts: Vec<usize> = plan.pick(vec![10, 100, 1000, 10000], vec![10, 100, 1000]);
     let mut bvh_figures = Vec::new();
     for &n in &counts {
         let scene = spheres_scene(n);
-        let tree = NodeTree::build(&scene.nodes).expect("more nodes than the loop takes");
+        let tree = with_steps(&scene, Steps::ALL);
+        let by_loop = with_steps(&scene, Steps::ALL.without(Step::NodeTree));
         let rays = camera_rays(&scene, 160, 120);
-        let nodes = &scene.nodes;
-        let slide_nodes = slide::model_transform::slide_nodes(nodes);
-        let by_tree = |ray: &Ray| {
-            tree.nearest_hit(nodes, ray)
-                .and_then(|(hit, node)| node.surface(ray, &hit).map(|i| (i.distance, node as *const Node)))
-        };
-        let by_loop = |ray: &Ray| {
-            slide::model_transform::closest_hit(&slide_nodes, ray).map(|(i, node)| (i.distance, node as *const Node))
-        };
-        let same = rays.iter().filter(|r| same_hit(by_tree(r), by_loop(r))).count();
+        let same = rays.iter().filter(|r| same_hit(closest(&tree, r), closest(&by_loop, r))).count();
         let repeat = (20_000 / n).clamp(1, 20);
-        let t = per_ray(plan, &rays, repeat, &[&|r| by_tree(r).is_some() as u64, &|r| by_loop(r).is_some() as u64]);
+        let t = per_ray(
+            plan,
+            &rays,
+            repeat,
+            &[&|r| tree.closest_hit(r).is_some() as u64, &|r| by_loop.closest_hit(r).is_some() as u64],
+        );
         writeln!(
             bvh_table,
             "| {n} | {:.0} | {:.0} | {:.1}x | {:.3}% |",
@@ -723,13 +878,14 @@ fn node_bvh(plan: &Plan, rows: &mut Vec<Row>, details: &mut String) {
     }
     let speedups: Vec<String> = bvh_figures.iter().map(|(n, a, b)| format!("{:.1}x at {n}", b / a)).collect();
     rows.push(Row {
-        step: "2. The node BVH (above 8 nodes)",
+        step: title(Step::NodeTree, "the node BVH (above 8 nodes)"),
         slide: "the loop over the nodes",
         measured: "no example (all have at most 8 nodes); N spheres on a plane, camera rays at 160x120".into(),
         buys: format!(
             "the same closest hits; CPU time per camera ray {} spheres, loop over BVH. No example reaches it",
             speedups.join(", ")
         ),
+        verdict: KEPT_AS_GUARD.to_string(),
         code: vec![
             Code::Items(
                 "src/lesson/node.rs",
@@ -744,119 +900,47 @@ fn node_bvh(plan: &Plan, rows: &mut Vec<Row>, details: &mut String) {
                 ],
             ),
             Code::Items("src/lesson/scene.rs", &["fn prepared", "fn intersects"]),
-            Code::Lines("src/lesson/scene.rs", "node_tree"),
         ],
     });
-    writeln!(details, "## 2. The node BVH\n\nThe nearest hit of each camera ray (160x120, pixel centres) through `NodeTree::nearest_hit` and `Node::surface`, against `slide::model_transform::closest_hit`; \"same hits\" counts the rays whose node and distance agree (a tie within `TIE` may go either way).\n\n{bvh_table}").unwrap();
+    writeln!(details, "## 3. The node BVH\n\n`Scene::closest_hit` of each camera ray (160x120, pixel centres), the scene with and without the step (`Steps::without(Step::NodeTree)`: the loop over the nodes); \"same hits\" counts the rays whose node and distance agree (a tie within `TIE` may go either way).\n\n{bvh_table}").unwrap();
 }
 
-/// Step 3: the two-phase nearest hit against the slide's `Node::intersect` loop, on the examples' camera rays.
-fn two_phase_nearest_hit(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
-    eprintln!("two-phase nearest hit");
-    let mut phase_table = String::new();
-    writeln!(
-        phase_table,
-        "| example | nodes | two-phase ns/ray | slide's loop ns/ray | loop / two-phase | same hits |"
-    )
-    .unwrap();
-    writeln!(phase_table, "|---|---:|---:|---:|---:|---:|").unwrap();
-    let mut phase_ratios = Vec::new();
-    for ex in all {
-        let (scene, _) = (ex.prepare)(&strings(&SIZE_320));
-        if scene.nodes.iter().any(|n| (&*n.geometry as &dyn Any).is::<Mesh>()) {
-            continue; // a mesh's triangle loop is step 4's
-        }
-        let rays = camera_rays(&scene, 320, 240);
-        let slide_nodes = slide::model_transform::slide_nodes(&scene.nodes);
-        let two_phase = |ray: &Ray| scene.closest_hit(ray).map(|(i, node)| (i.distance, node as *const Node));
-        let slides = |ray: &Ray| {
-            slide::model_transform::closest_hit(&slide_nodes, ray).map(|(i, node)| (i.distance, node as *const Node))
-        };
-        let same = rays.iter().filter(|r| same_hit(two_phase(r), slides(r))).count();
-        let t = per_ray(plan, &rays, 10, &[&|r| two_phase(r).is_some() as u64, &|r| slides(r).is_some() as u64]);
-        phase_ratios.push((ex.name, t[1] / t[0]));
-        writeln!(
-            phase_table,
-            "| {} | {} | {:.1} | {:.1} | {:.2}x | {:.3}% |",
-            ex.name,
-            scene.nodes.len(),
-            t[0],
-            t[1],
-            t[1] / t[0],
-            100.0 * same as f64 / rays.len() as f64
-        )
-        .unwrap();
-    }
-    let ratios: Vec<f64> = phase_ratios.iter().map(|r| r.1).collect();
-    let (lo, hi) = (ratios.iter().copied().fold(f64::INFINITY, f64::min), ratios.iter().copied().fold(0.0, f64::max));
-    rows.push(Row {
-        step: "3. The two-phase nearest hit (`Geometry::hit`, then `surface` of the winner)",
-        slide: "`Node::intersect` on every node, the full hit description each time",
-        measured: "the examples without a mesh, camera rays at 320x240, unit level".into(),
-        buys: format!(
-            "the same closest hits; the slide's loop takes {lo:.2}x to {hi:.2}x the CPU time per camera ray{}{}",
-            if hi < 1.05 { ": nothing measurable" } else { "" },
-            match ratios.iter().filter(|&&r| r < 0.95).count() {
-                0 => String::new(),
-                faster => format!(" (the slide's loop is the faster on {faster} of {} examples)", ratios.len()),
-            }
-        ),
-        code: vec![
-            Code::Items("src/lesson/geometry/mod.rs", &["struct Hit", "impl Hit", "fn hit(", "fn surface("]),
-            Code::Items(
-                "src/lesson/node.rs",
-                &["fn hit(", "fn hit_transformed", "fn surface(", "fn nearest_hit_linear"],
-            ),
-            Code::Items("src/lesson/scene.rs", &["fn nearest_hit", "fn closest_hit"]),
-        ],
-    });
-    writeln!(details, "## 3. The two-phase nearest hit\n\n`Scene::closest_hit` (every node's `hit`, then the winner's `surface`) against `slide::model_transform::closest_hit` (every node's full `intersect`), on each example's camera rays through the pixel centres. The per-geometry `hit`/`surface` pairs are not counted in the lines.\n\n{phase_table}").unwrap();
-}
-
-/// Step 4: the mesh BVH against the bounding box and every triangle, on model_transform's teapots.
+/// Step 4: the mesh BVH against the mesh's box and its triangles one by one, on model_transform.
 fn mesh_bvh(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>) {
     eprintln!("mesh BVH");
     let mt = &all[example(all, "model_transform")];
     let (scene, _) = (mt.prepare)(&strings(&SIZE_160));
-    let meshes: Vec<&Node> = scene.nodes.iter().filter(|n| (&*n.geometry as &dyn Any).is::<Mesh>()).collect();
-    let triangles: usize = meshes
-        .iter()
-        .map(|n| (&*n.geometry as &dyn Any).downcast_ref::<Mesh>().expect("a mesh").triangle_count())
-        .sum();
+    let meshes: Vec<&Mesh> =
+        scene.nodes.iter().filter_map(|n| (&*n.geometry as &dyn Any).downcast_ref::<Mesh>()).collect();
+    let triangles: usize = meshes.iter().map(|m| m.triangle_count()).sum();
+    let bvh = with_steps(&scene, Steps::ALL);
+    let one_by_one = with_steps(&scene, Steps::ALL.without(Step::MeshBvh));
     let rays = camera_rays(&scene, 160, 120);
-    let slide_meshes: Vec<_> = slide::model_transform::slide_nodes(&scene.nodes)
-        .into_iter()
-        .filter(|n| (&*n.node.geometry as &dyn Any).is::<Mesh>())
-        .collect();
-    let by_bvh = |ray: &Ray| {
-        meshes
-            .iter()
-            .filter_map(|n| n.intersect(ray, f32::INFINITY).map(|i| (i.distance, *n as *const Node)))
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-    };
-    let by_loop = |ray: &Ray| {
-        slide_meshes
-            .iter()
-            .filter_map(|n| {
-                slide::model_transform::intersect(n, ray, f32::INFINITY).map(|i| (i.distance, n.node as *const Node))
-            })
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-    };
-    let same = rays.iter().filter(|r| same_hit(by_bvh(r), by_loop(r))).count();
-    let t = per_ray(plan, &rays, 1, &[&|r| by_bvh(r).is_some() as u64, &|r| by_loop(r).is_some() as u64]);
-    let mt_timed = side_by_side(plan, &[(mt, with(&[&ONE_THREAD[..], &SIZE_320[..]].concat(), &[]))]);
+    let same = rays.iter().filter(|r| same_hit(closest(&bvh, r), closest(&one_by_one, r))).count();
+    let t = per_ray(
+        plan,
+        &rays,
+        1,
+        &[&|r| bvh.closest_hit(r).is_some() as u64, &|r| one_by_one.closest_hit(r).is_some() as u64],
+    );
+    let mt_timed = side_by_side(plan, &[(mt, strings(&[&ONE_THREAD[..], &SIZE_320[..]].concat()))]);
     rows.push(Row {
-        step: "4. The mesh BVH with four-wide watertight triangles",
-        slide: "the mesh's bounding box, then every triangle",
-        measured: format!("model_transform's {} mesh node(s), {triangles} triangles, camera rays at 160x120", meshes.len()),
+        step: title(Step::MeshBvh, "the mesh BVH with four-wide watertight triangles"),
+        slide: "the mesh's bounding box, then its triangles one by one",
+        measured: format!(
+            "model_transform ({} nodes, {} of them meshes, {triangles} triangles), `Scene::closest_hit` of the camera rays at 160x120 with and without the step",
+            scene.nodes.len(),
+            meshes.len()
+        ),
         buys: format!(
-            "{:.3}% of the rays find the same hit; {:.0} ns per camera ray against {:.0} ns: {:.0}x less CPU time at equal error (the whole example: {:.3} CPU s at 320x240). `bvh.rs` also serves the node BVH of step 2",
+            "{:.3}% of the rays find the same hit; {:.0} ns per camera ray against {:.0} ns: {:.0}x less CPU time at equal error (the whole example: {:.3} CPU s at 320x240). `bvh.rs` also serves the node BVH of step 3",
             100.0 * same as f64 / rays.len() as f64,
             t[0],
             t[1],
             t[1] / t[0],
             mt_timed[0].cpu
         ),
+        verdict: if t[1] / t[0] >= NOISE { KEPT_FOR_SPEED } else { BUYS_NOTHING }.to_string(),
         code: vec![
             Code::File("src/lesson/geometry/bvh.rs"),
             Code::File("src/lesson/geometry/triangle4.rs"),
@@ -888,15 +972,16 @@ fn bitmap_filtering(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
     let bias = rmse_linear(&ref_bilinear, &ref_nearest).expect("same size");
     let (bias_psnr, _) = psnr(&ref_bilinear, &ref_nearest);
     rows.push(Row {
-        step: "5. Bilinear texel filtering and the sRGB byte table",
+        step: title(Step::TexelFilter, "bilinear texel filtering and the sRGB byte table"),
         slide: "one texel per look-up",
-        measured: "bitmap_textures, `--filter bilinear|nearest`, 320x240, each against its own converged picture".into(),
+        measured: "bitmap_textures, `--filter bilinear|nearest` (nearest is `Filter::under` without the step), 320x240, each against its own converged picture".into(),
         buys: format!(
             "a different picture (the two converged pictures differ by RMSE {bias:.4}, {}): the texture blended between texels instead of stepping from one to the next. Noise: {}. CPU time per ray of bilinear over nearest: {:.2}x",
             db(bias_psnr),
             v.describe("bilinear", "nearest", &modeled(&bilinear)),
             per_ray
         ),
+        verdict: noise_verdict(&v, &modeled(&bilinear)),
         code: vec![
             Code::Items("src/lesson/bitmap.rs", &["fn neighbours", "fn wrapped_pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "fn decode", "enum Filter"]),
             Code::Items("src/lesson/color.rs", &["fn srgb8_to_linear_table"]),
@@ -906,9 +991,10 @@ fn bitmap_filtering(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
     curve_table(details, "spp", &[("bilinear", &bilinear), ("nearest", &nearest)]);
 }
 
-/// Step 6: stratified pixel samples against random points of the pixel.
-fn stratified_anti_aliasing(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
-    eprintln!("stratified anti-aliasing");
+/// Step 6: stratified pixel samples against random points of the pixel, each example rendered with and
+/// without `--no-step stratified-pixels`.
+fn stratified_pixels(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
+    eprintln!("stratified pixel samples");
     let mut aa_table = String::new();
     writeln!(
         aa_table,
@@ -917,46 +1003,49 @@ fn stratified_anti_aliasing(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, detail
     .unwrap();
     writeln!(aa_table, "|---|---:|---:|---:|---:|---:|---:|").unwrap();
     let mut aa_summary = Vec::new();
+    let mut least = f64::INFINITY;
     for name in ["bitmap_textures", "model_transform", "fresnel"] {
         let ex = &all[example(all, name)];
         let size = [&ONE_THREAD[..], &SIZE_160[..]].concat();
         let converged = reference(ex, &[&size[..], &["--spp", plan.pick("1024", "256"), "--seed", "7"]].concat());
-        let (scene, _) = (ex.prepare)(&strings(&size));
         for spp in plan.pick(vec![4, 16], vec![4]) {
-            let pictures = |stratified: bool| render_aa(&scene, 160, 120, spp, stratified);
-            let mut times = [Vec::new(), Vec::new()];
-            let mut frames = [None, None];
-            for round in 0..plan.rounds {
-                for k in if round % 2 == 0 { [0, 1] } else { [1, 0] } {
-                    let clock = Clock::start();
-                    frames[k] = Some(pictures(k == 0));
-                    times[k].push(clock.stop().1);
-                }
-            }
-            let err = |k: usize| rmse_linear(frames[k].as_ref().expect("rendered"), &converged).expect("same size");
-            let (s, r) = (err(0), err(1));
-            let [ts, tr] = times.map(median);
-            writeln!(aa_table, "| {name} | {spp} | {s:.5} | {r:.5} | {:.2}x | {ts:.3} | {tr:.3} |", r / s).unwrap();
+            let at = with(&size, &["--spp", &spp.to_string()]);
+            let random = [at.clone(), strings(&["--no-step", Step::StratifiedAa.name()])].concat();
+            let [stratified, random]: [Timed; 2] =
+                side_by_side(plan, &[(ex, at), (ex, random)]).try_into().ok().expect("two");
+            let err = |t: &Timed| rmse_linear(&t.last.frame, &converged).expect("same size");
+            let (s, r) = (err(&stratified), err(&random));
+            writeln!(
+                aa_table,
+                "| {name} | {spp} | {s:.5} | {r:.5} | {:.2}x | {:.3} | {:.3} |",
+                r / s,
+                stratified.cpu,
+                random.cpu
+            )
+            .unwrap();
             if spp == 4 {
                 aa_summary.push(format!("{:.2}x on {name}", r / s));
+                least = least.min(r / s);
             }
         }
     }
     rows.push(Row {
-        step: "6. Stratified anti-aliasing (jittered grid / N-rooks)",
+        step: title(Step::StratifiedAa, "stratified anti-aliasing (jittered grid / N-rooks)"),
         slide: "random points in the pixel",
-        measured: "bitmap_textures, model_transform, fresnel at 160x120, the same camera-ray loop with each rule"
-            .into(),
+        measured:
+            "bitmap_textures, model_transform, fresnel at 160x120, with and without `--no-step stratified-pixels`"
+                .into(),
         buys: format!(
             "at equal spp (equal rays, equal time) the random points' RMSE is {} the stratified one's, at 4 spp",
             aa_summary.join(", ")
         ),
+        verdict: if least >= NOISE { KEPT_FOR_NOISE } else { BUYS_NOTHING }.to_string(),
         code: vec![
             Code::Items("src/lesson/render.rs", &["struct Stratifier", "impl Stratifier"]),
             Code::Items("src/lesson/rng.rs", &["fn shuffled_index"]),
         ],
     });
-    writeln!(details, "## 6. Stratified anti-aliasing\n\nEach pixel's camera rays through `Stratifier::offset` or through random points of the pixel, each traced by the default `raytrace`, against the example at {} spp with another seed.\n\n{aa_table}", plan.pick(1024, 256)).unwrap();
+    writeln!(details, "## 6. Stratified anti-aliasing\n\nEach example rendered as it is and with `--no-step stratified-pixels` (random points of the pixel), 160x120, against the example at {} spp with another seed.\n\n{aa_table}", plan.pick(1024, 256)).unwrap();
 }
 
 /// Step 7: stratified and joint disc samples against random points of the disc, on glossy.
@@ -979,15 +1068,17 @@ fn disc_samples(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Stri
     let curves =
         sweep(plan, gl, "--glossy-samples", &[sampler("random"), sampler("stratified"), sampler("joint")], &gl_ref);
     let (random, stratified, joint) = (&curves[0], &curves[1], &curves[2]);
+    let joint_versus = versus(random, joint, 4);
     rows.push(Row {
-        step: "7. Stratified and joint disc samples",
+        step: title(Step::DiscSamples, "stratified and joint disc samples"),
         slide: "random points of the unit disc",
         measured: "glossy, `--sampler random|stratified|joint`, 16 spp, 160x120, `--glossy-samples` swept".into(),
         buys: format!(
             "joint (the default): {}. stratified: {}",
-            versus(random, joint, 4).describe("joint", "random", &modeled(joint)),
+            joint_versus.describe("joint", "random", &modeled(joint)),
             versus(random, stratified, 4).describe("stratified", "random", &modeled(stratified))
         ),
+        verdict: noise_verdict(&joint_versus, &modeled(joint)),
         code: vec![Code::Items(
             "src/lesson/sampling.rs",
             &[
@@ -1038,23 +1129,7 @@ fn disc_samples(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Stri
     curve_table(details, "glossy samples", &[("random", &centre_curves[0]), ("stratified", &centre_curves[1])]);
 }
 
-/// Step 8: whether any example reaches the glossy split depth.
-fn glossy_split_depth(rows: &mut Vec<Row>, details: &mut String, split_table: &str, split_reached: &[&str]) {
-    rows.push(Row {
-        step: format!("8. The glossy split depth (one ray below depth {GLOSSY_SPLIT_DEPTH})").leak(),
-        slide: "`SECONDARY_GLOSSY_SAMPLES` (2) rays at every depth below the first (the course's own rule, kept in both readings)",
-        measured: "every example with a glossy mirror: its depth limit and the rays the default traces deeper than the split".into(),
-        buys: if split_reached.is_empty() {
-            format!("nothing on any example: no glossy example's `max_depth` exceeds {GLOSSY_SPLIT_DEPTH}, so no ray reaches the split. It guards a scene file with facing glossy mirrors and a deep `maxTraceDepth` against 2^depth rays")
-        } else {
-            format!("reached on {}", split_reached.join(", "))
-        },
-        code: vec![Code::Lines("src/lesson/shader/reflection.rs", "GLOSSY_SPLIT_DEPTH"), Code::Lines("src/lesson/shader/reflection.rs", "_ => 1,")],
-    });
-    writeln!(details, "## 8. The glossy split depth\n\n{split_table}").unwrap();
-}
-
-/// Step 9: hero wavelengths against K passes, on dispersion.
+/// Step 8: hero wavelengths against K passes, on dispersion.
 fn hero_wavelengths(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
     eprintln!("dispersion");
     let di = &all[example(all, "dispersion")];
@@ -1075,12 +1150,14 @@ fn hero_wavelengths(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
         values: plan.pick(vec![1, 2, 4, 8, 16], vec![1, 4, 8]),
     };
     let curves = sweep(plan, di, "--spp", &[passes, hero], &di_ref);
+    let hero_versus = versus(&curves[0], &curves[1], 4);
     rows.push(Row {
-        step: "9. Hero-wavelength sampling",
+        step: title(Step::HeroWavelengths, "hero-wavelength sampling"),
         slide: "K = 8 wavelength passes",
         measured: "dispersion, `--spectral hero|passes`, 160x120, `--spp` swept, against a converged hero render"
             .into(),
-        buys: versus(&curves[0], &curves[1], 4).describe("hero", "8 passes", &modeled(&curves[1])),
+        buys: hero_versus.describe("hero", "8 passes", &modeled(&curves[1])),
+        verdict: noise_verdict(&hero_versus, &modeled(&curves[1])),
         code: vec![
             Code::Items(
                 "src/lesson/render.rs",
@@ -1089,11 +1166,12 @@ fn hero_wavelengths(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
             Code::Lines("src/lesson/scene.rs", "met_dispersion"),
         ],
     });
-    writeln!(details, "## 9. Hero wavelengths\n\ndispersion at 160x120 against hero sampling with 8 wavelengths per path at {} spp, another seed (the slide's 8 passes converge to their own 8-band picture, which is part of their error).\n", plan.pick(128, 32)).unwrap();
+    writeln!(details, "## 8. Hero wavelengths\n\ndispersion at 160x120 against hero sampling with 8 wavelengths per path at {} spp, another seed (the slide's 8 passes converge to their own 8-band picture, which is part of their error).\n", plan.pick(128, 32)).unwrap();
     curve_table(details, "spp", &[("8 passes", &curves[0]), ("hero", &curves[1])]);
 }
 
-/// Step 10: the photon grid and aimed emission against all-direction emission and the k-d tree.
+/// Step 9: the photon grid and aimed emission against all-direction emission and the k-d tree, the rest of
+/// the render the default's (`--no-step photon-grid`).
 fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
     eprintln!("photon map");
     let pm = &all[example(all, "photon_map")];
@@ -1104,7 +1182,8 @@ fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String
     );
     let photons: Vec<u32> = plan.pick(vec![25_000, 100_000, 400_000], vec![25_000, 100_000]);
     let default_curve = Curve { label: "grid + aimed", fixed: strings(&pm_base), values: photons.clone() };
-    let slide_curve = Curve { label: "slide", fixed: with(&pm_base, &["--slide"]), values: photons.clone() };
+    let no_step = ["--no-step", Step::PhotonGrid.name()];
+    let slide_curve = Curve { label: "slide", fixed: with(&pm_base, &no_step), values: photons.clone() };
     let jobs: Vec<(&Ex, Vec<String>)> = [&default_curve, &slide_curve]
         .iter()
         .flat_map(|c| {
@@ -1124,7 +1203,7 @@ fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String
         writeln!(
             pm_table,
             "| {} | {value} | {} | {} | {:.4} | {:.3} | {:.3} | {rmse:.5} |",
-            ["default", "`--slide`"][reading],
+            ["default", "`--no-step photon-grid`"][reading],
             stats.emitted,
             stats.stored,
             stats.stored as f64 / stats.emitted as f64,
@@ -1144,8 +1223,8 @@ fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String
             perceptual: None,
         });
     }
-    let without = |slide: &[&str]| (pm.run)(&with(&pm_base, &[&["--photons", "0"][..], slide].concat())).frame;
-    let rest = rmse_linear(&without(&[]), &without(&["--slide"])).expect("same size");
+    let without = |steps: &[&str]| (pm.run)(&with(&pm_base, &[&["--photons", "0"][..], steps].concat())).frame;
+    let rest = rmse_linear(&without(&[]), &without(&no_step)).expect("same size");
     let estimate = |k: usize| {
         let t = &timed[k];
         let stats = t.last.stats.photons.expect("a photon map");
@@ -1153,10 +1232,11 @@ fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String
     };
     let (d_render, d_build, d_stats) = estimate(1);
     let (s_render, s_build, s_stats) = estimate(photons.len() + 1);
+    let grid_versus = versus_measured(&pm_curves[1], &pm_curves[0], photons[1]);
     rows.push(Row {
-        step: "10. The photon grid and the cone-aimed Fibonacci emission",
-        slide: "photons in all directions, the k nearest from a k-d tree",
-        measured: "photon_map, default against `--slide`, 160x120 at 1 spp, `--photons` swept (the rest of the render is the two readings' too)".into(),
+        step: title(Step::PhotonGrid, "the photon grid, the cone-aimed Fibonacci emission and Russian roulette"),
+        slide: "photons in all directions, each followed until it lands or is absorbed, the k nearest from a k-d tree",
+        measured: "photon_map, default against `--no-step photon-grid`, 160x120 at 1 spp, `--photons` swept".into(),
         buys: format!(
             "at {} photons asked: {:.3} of the emitted photons stored against {:.4} ({} against {} emitted), trace and build {d_build:.3} s against {s_build:.3} s, render with the estimates {d_render:.3} s against {s_render:.3} s. Caustic error: {}",
             photons[1],
@@ -1164,39 +1244,42 @@ fn photon_map(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String
             s_stats.stored as f64 / s_stats.emitted as f64,
             d_stats.emitted,
             s_stats.emitted,
-            versus_measured(&pm_curves[1], &pm_curves[0], photons[1]).describe("the grid", "the slide", &pm_curves[0])
+            grid_versus.describe("the grid", "the slide", &pm_curves[0])
         ) + &format!(
-            " (without photons the two readings' pictures differ by RMSE {rest:.5}: the rest of the difference is the caustic's)"
+            " (without photons the two pictures differ by RMSE {rest:.5}: the rest of the difference is the caustic's). Russian roulette, which ends the aimed photons (`emitter.rs`), is part of this step: the slide's photons have none"
         ),
+        verdict: noise_verdict(&grid_versus, &pm_curves[0]),
         code: vec![Code::File("src/lesson/photon_map/grid.rs"), Code::File("src/lesson/photon_map/emitter.rs")],
     });
-    writeln!(details, "## 10. The photon map\n\nphoton_map at 160x120, one ray through each pixel centre, against the default reading with {} photons and k = 400, another seed. The CPU time is the whole render's (photon pass, estimates and the rest). Without photons (`--photons 0`) the two readings' pictures differ by RMSE {rest:.5}: the rest of the difference below is the caustic's. The slide's photons are capped at {} batches, so that asking for 400,000 stores fewer.\n\n{pm_table}", plan.pick("3,200,000", "800,000"), slide::photon_mapping::MAX_BATCHES).unwrap();
+    writeln!(details, "## 9. The photon map\n\nphoton_map at 160x120, one ray through each pixel centre, with and without `--no-step photon-grid`, against the default with {} photons and k = 400, another seed. The CPU time is the whole render's (photon pass, estimates and the rest). Without photons (`--photons 0`) the two pictures differ by RMSE {rest:.5}: the rest of the difference below is the caustic's. The slide's photons are capped at {MAX_BATCHES} batches, so that asking for 400,000 stores fewer.\n\n{pm_table}", plan.pick("3,200,000", "800,000")).unwrap();
 }
 
-/// Step 11: layer pruning against shading every layer, on every example with a layered shader.
+/// Step 10: layer pruning against every layer bottom to top, on every example with a layered shader, each
+/// rendered with and without `--no-step layer-pruning`, by default and with `--exhaustive`.
 fn layer_pruning(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
     eprintln!("layer pruning");
     let mut layer_table = String::new();
     writeln!(layer_table, "| example | pruned: wall / CPU s | rays | every layer: wall / CPU s | rays | every layer / pruned, CPU | PSNR between | largest difference | with `--exhaustive`: every layer / pruned, CPU |").unwrap();
     writeln!(layer_table, "|---|---:|---:|---:|---:|---:|---:|---:|---:|").unwrap();
     let mut layer_ratios = Vec::new();
-    let mut layer_exhaustive = Vec::new();
+    let base = [&ONE_THREAD[..], &SIZE_320[..]].concat();
+    let no_step = ["--no-step", Step::LayerPruning.name()];
     for ex in all {
-        let (scene, settings) =
-            (ex.prepare)(&[&ONE_THREAD[..], &SIZE_320[..]].concat().iter().map(|s| s.to_string()).collect::<Vec<_>>());
-        let Some(every) = every_layer(&scene) else { continue };
-        let exhaustive = |s: &Scene| {
-            let mut s = s.clone();
-            s.min_ray_weight = 0.0;
-            s
-        };
-        let (scene_ex, every_ex) = (exhaustive(&scene), exhaustive(&every));
-        let scenes = [&scene, &every, &scene_ex, &every_ex];
-        // Small renders, much closer in cost than the load of a shared machine moves them: more rounds.
+        let (scene, _) = (ex.prepare)(&strings(&base));
+        if !has_layered(&scene) {
+            continue;
+        }
+        let jobs = [
+            (ex, strings(&base)),
+            (ex, with(&base, &no_step)),
+            (ex, with(&base, &["--exhaustive"])),
+            (ex, with(&base, &[&["--exhaustive"][..], &no_step[..]].concat())),
+        ];
+        // Small renders, close in cost where the step prunes little: more rounds.
         let more = Plan { quick: plan.quick, rounds: 3 * plan.rounds };
-        let [pruned, all_layers, pruned_ex, all_layers_ex]: [Timed; 4] =
-            interleaved(&more, 4, |i| run_scene(scenes[i], &settings)).try_into().ok().expect("four");
-        let (p, level) = psnr(&pruned.last.frame, &all_layers.last.frame);
+        let [pruned, every, pruned_ex, every_ex]: [Timed; 4] =
+            side_by_side(&more, &jobs).try_into().ok().expect("four");
+        let (p, level) = psnr(&pruned.last.frame, &every.last.frame);
         let rays = |t: &Timed| t.last.stats.counters.total() as f64 / 1e6;
         writeln!(
             layer_table,
@@ -1205,50 +1288,193 @@ fn layer_pruning(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Str
             pruned.wall,
             pruned.cpu,
             rays(&pruned),
-            all_layers.wall,
-            all_layers.cpu,
-            rays(&all_layers),
-            all_layers.cpu / pruned.cpu,
+            every.wall,
+            every.cpu,
+            rays(&every),
+            every.cpu / pruned.cpu,
             db(p),
-            all_layers_ex.cpu / pruned_ex.cpu,
-            rays(&all_layers_ex),
+            every_ex.cpu / pruned_ex.cpu,
+            rays(&every_ex),
             rays(&pruned_ex)
         )
         .unwrap();
-        layer_exhaustive.push(format!("{:.2}x on {}", all_layers_ex.cpu / pruned_ex.cpu, ex.name));
-        layer_ratios.push((ex.name, all_layers.cpu / pruned.cpu, rays(&all_layers) / rays(&pruned)));
+        layer_ratios.push((ex.name, every.cpu / pruned.cpu, rays(&every) / rays(&pruned), level));
     }
+    let worst_level = layer_ratios.iter().map(|r| r.3).max().unwrap_or(0);
+    let paying: Vec<&str> = layer_ratios.iter().filter(|r| r.1 >= NOISE && r.2 >= NOISE).map(|r| r.0).collect();
     rows.push(Row {
-        step: "11. Layer pruning (top-down, skip a layer of no weight: zero blend, or under an opaque layer)",
-        slide: "the loop that shades every layer",
-        measured: "every example with a `Layered` shader, each such shader with `shade_every_layer(true)` against the default, 320x240".into(),
+        step: title(
+            Step::LayerPruning,
+            "layer pruning (top-down, skip a layer of no weight: zero blend, or under an opaque layer)",
+        ),
+        slide: "every layer, bottom to top, each layer's rays passed their full weight",
+        measured: "every example with a `Layered` shader, with and without `--no-step layer-pruning`, 320x240".into(),
         buys: format!(
-            "the same picture; shading every layer over pruning: {}{}",
+            "the same picture within {worst_level} level(s); every layer over pruning: {}",
             layer_ratios
                 .iter()
-                .map(|(name, t, r)| format!("{t:.2}x the CPU time and {r:.3}x the rays on {name}"))
+                .map(|(name, t, r, _)| format!("{t:.2}x the CPU time and {r:.2}x the rays on {name}"))
                 .collect::<Vec<_>>()
-                .join(", "),
-            if layer_ratios.iter().all(|(_, _, r)| *r < 1.05)
-                && layer_ratios.iter().map(|(_, t, _)| t.ln()).sum::<f64>() / (layer_ratios.len() as f64) < 1.05f64.ln()
-            {
-                ". Nothing measurable on any example: the rays differ by less than 5% and the CPU time by no more than the machine's noise (their geometric mean is below 1.05x)"
-            } else {
-                ""
-            }
-        ) + &format!(
-            ". It pays only without adaptive depth control (`--exhaustive`, where a hidden layer's rays are traced): {}",
-            layer_exhaustive.join(", ")
+                .join(", ")
         ),
+        verdict: if paying.is_empty() {
+            BUYS_NOTHING.to_string()
+        } else {
+            format!("{KEPT_FOR_SPEED} (on {})", paying.join(", "))
+        },
         code: vec![
             Code::Items("src/lesson/shader/layered.rs", &["fn weights", "fn layer_weight"]),
             Code::Lines("src/lesson/shader/layered.rs", "every_layer"),
         ],
     });
-    writeln!(details, "## 11. Layer pruning\n\nThe scene of each example with a `Layered` shader, rendered as it is and with every layered shader shading every layer (`Layered::shade_every_layer`, what the layered example's `--shade-every-layer` sets), and both again with `--exhaustive`; medians of three times the rounds, since the two differ less than the load of a shared machine moves them.\n\n{layer_table}").unwrap();
+    writeln!(details, "## 10. Layer pruning\n\nEach example with a `Layered` shader rendered as it is and with `--no-step layer-pruning` (every layer bottom to top, as the slide's loop; `Layered::shade_every_layer` asks the same of one shader), and both again with `--exhaustive`; medians of {} rounds.\n\n{layer_table}", 3 * plan.rounds).unwrap();
 }
 
-/// Step 12: camera-relative coordinates against world coordinates, on every example moved far away.
+/// The API page's glossy mirror (docs/homework-api.md, "Randomness in a shader"): `n` rays in the glossy
+/// cone, each passed the tint's full factor.
+#[path = "../docs/homework_glossy.rs"]
+mod homework_glossy;
+
+/// A sky of bright and dark stripes across x, so that what the panels reflect shows.
+struct Stripes;
+
+impl Environment for Stripes {
+    fn get(&self, dir: Vector) -> Color {
+        if (dir.x * 6.0).sin() > 0.0 { Color::new(1.0, 0.95, 0.8) } else { Color::new(0.05, 0.1, 0.3) }
+    }
+}
+
+/// The branching bound: the API page's N-ray glossy mirror on two facing panels (the scene of
+/// tests/workbook/branching.rs), its rays with the bound against the most it would trace without; and the
+/// rays the bound shared on the examples.
+fn branching_bound(readings: &Readings, rows: &mut Vec<Row>, details: &mut String) {
+    eprintln!("branching bound");
+    const N: u32 = 8;
+    const DEPTH: u32 = 6;
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 0.0, 6.0), Vector::new(3.0, 1.0, -10.0), 70.0));
+    for z in [-10.0, 10.0] {
+        let glossy = homework_glossy::TintedGlossy { tint: Color::new(0.95, 0.9, 0.8), glossiness: 0.9, n: N };
+        let panel = Node::new(Cube::new(Vector::ZERO, 1.0), Arc::new(glossy) as Arc<dyn Shader>);
+        scene.add(panel.scale(Vector::new(12.0, 8.0, 0.05)).translate(Vector::new(0.0, 0.0, z)));
+    }
+    scene.environment = Some(Arc::new(Stripes));
+    scene.max_depth = DEPTH;
+    let settings =
+        RenderSettings { width: 160, height: 120, spp: 1, threads: Some(1), progress: false, ..Default::default() };
+    let clock = Clock::start();
+    let (_, stats) = render(&scene, &settings).expect("render");
+    let (_, cpu) = clock.stop();
+    let c = &stats.counters;
+    // Without the bound every shading point traces its N rays: the rays of depth d are at most the rays of
+    // the camera rays' hits (depth 1, which the bound never limits) times N^(d-1).
+    let unbounded: u64 =
+        c.rays_by_depth[0] + (1..=DEPTH).map(|d| c.rays_by_depth[1] * (N as u64).pow(d - 1)).sum::<u64>();
+    let mut depth_table = String::new();
+    writeln!(depth_table, "| depth | rays with the bound | at most without it |").unwrap();
+    writeln!(depth_table, "|---:|---:|---:|").unwrap();
+    for d in 0..=DEPTH as usize {
+        let without = if d == 0 { c.rays_by_depth[0] } else { c.rays_by_depth[1] * (N as u64).pow(d as u32 - 1) };
+        writeln!(depth_table, "| {d} | {} | {without} |", c.rays_by_depth[d]).unwrap();
+    }
+    let (rays_default, shared_default, rays_slide, shared_slide) =
+        readings.shared.iter().fold((0, 0, 0, 0), |a, (_, s)| (a.0 + s[0], a.1 + s[1], a.2 + s[2], a.3 + s[3]));
+    rows.push(Row {
+        step: "The branching bound (`src/lesson/branching.rs`)".into(),
+        slide: "no bound: a shader's N rays at every shading point, N^depth per camera ray",
+        measured: format!(
+            "the API page's {N}-ray glossy mirror (docs/homework_glossy.rs, each ray its full weight) on two facing panels, depth {DEPTH}, 160x120, 1 spp; and every example in both readings"
+        ),
+        buys: format!(
+            "{:.2} M rays in {cpu:.2} CPU s with the bound (another {:.2} M given their siblings' mean colour instead of traced; {} traced at depth {DEPTH}), against at most {:.0} M without it ({:.0} M at depth {DEPTH}: {N}^{} times the camera rays' {} glossy rays; the bound allows {N} rays at a camera ray's hit, {SECONDARY_SPLIT} per shading point down to depth {SPLIT_DEPTH}, then 1). On the examples it shares no ray: {shared_default} of {:.1} M rays by default, {shared_slide} of {:.1} M with `--slide`",
+            c.total() as f64 / 1e6,
+            c.shared_rays as f64 / 1e6,
+            c.rays_by_depth[DEPTH as usize],
+            unbounded as f64 / 1e6,
+            (c.rays_by_depth[1] * (N as u64).pow(DEPTH - 1)) as f64 / 1e6,
+            DEPTH - 1,
+            c.rays_by_depth[1],
+            rays_default as f64 / 1e6,
+            rays_slide as f64 / 1e6
+        ),
+        verdict: format!("{KEPT_AS_GUARD}; not a step: on in both readings"),
+        code: vec![Code::File("src/lesson/branching.rs")],
+    });
+    writeln!(details, "## The branching bound\n\nThe API page's {N}-ray glossy mirror on two panels facing each other, depth limit {DEPTH}, 160x120, one ray per pixel: the rays of each depth with the bound, and the most the same render would trace without it (every shading point tracing its {N} rays, every ray hitting a panel again).\n\n{depth_table}").unwrap();
+}
+
+/// The end-of-run report's cost: its one piece of extra work, the probe for shaders that read the wavelength
+/// without saying so ([`undeclared_dispersion`]), timed on each example against its render.
+fn end_of_run_report(plan: &Plan, all: &[Ex], readings: &Readings, rows: &mut Vec<Row>, details: &mut String) {
+    eprintln!("end-of-run report");
+    let mut table = String::new();
+    writeln!(table, "| example | probe CPU ms | default render CPU s | share of the render |").unwrap();
+    writeln!(table, "|---|---:|---:|---:|").unwrap();
+    let mut worst: (f64, &str) = (0.0, "");
+    for (ex, &(name, render_cpu)) in all.iter().zip(&readings.default_cpu) {
+        let (scene, settings) = (ex.prepare)(&strings(&[&ONE_THREAD[..], &SIZE_320[..]].concat()));
+        let (w, h) = (settings.width, settings.height);
+        let camera = scene.camera.frame(w, h);
+        const REPEAT: usize = 20;
+        let times: Vec<f64> = (0..plan.rounds.max(3))
+            .map(|_| {
+                let clock = Clock::start();
+                for _ in 0..REPEAT {
+                    std::hint::black_box(undeclared_dispersion(&scene, &camera, w, h));
+                }
+                clock.stop().1 / REPEAT as f64
+            })
+            .collect();
+        let probe = median(times);
+        let share = probe / render_cpu;
+        if share > worst.0 {
+            worst = (share, name);
+        }
+        writeln!(table, "| {name} | {:.3} | {render_cpu:.3} | {:.2}% |", 1e3 * probe, 100.0 * share).unwrap();
+    }
+    rows.push(Row {
+        step: "The end-of-run report (`src/lesson/diagnostics.rs`)".into(),
+        slide: "no report: a NaN pixel, a self-hit or a shader's undeclared dispersion goes unnoticed",
+        measured: "every example at 320x240: the report's extra work, the undeclared-dispersion probe (16x16 rays, each shader once), against the render".into(),
+        buys: format!(
+            "the source of a NaN, a self-hit or an undeclared dispersion named after the render; it costs at most {:.2}% of a render's CPU time ({})",
+            100.0 * worst.0,
+            worst.1
+        ),
+        verdict: format!("{KEPT_AS_GUARD}; not a step: on in both readings"),
+        code: vec![Code::File("src/lesson/diagnostics.rs")],
+    });
+    writeln!(details, "## The end-of-run report\n\nThe probe for shaders that read the wavelength without saying so (`undeclared_dispersion`, run once after every render), timed alone on each example's scene (median of {} rounds of {} calls), against the example's default render (the table of `--slide` against the default).\n\n{table}", plan.rounds.max(3), 20).unwrap();
+}
+
+/// What runs beyond the slides' formulas without being a step: the deviations that each file notes.
+fn deviations(rows: &mut Vec<Row>) {
+    rows.push(Row {
+        step: "The Fresnel cosine on leaving glass (`src/lesson/math.rs`, `fresnel`)".into(),
+        slide: "Schlick's formula with the cosine of the incoming ray on both sides of the glass",
+        measured: "not measured: it has no setting".into(),
+        buys: "leaving the denser medium, the cosine of the transmitted angle, as Schlick prescribes, and 1 under total internal reflection, where the slide's cosine lets part of the light be transmitted that cannot be, so a Fresnel glass loses energy".into(),
+        verdict: NOT_A_STEP.to_string(),
+        code: Vec::new(),
+    });
+    rows.push(Row {
+        step: "The light loop's geometric-normal test (`src/lesson/light.rs`, `light_loop`)".into(),
+        slide: "a lamp lights the point when the shading normal faces it",
+        measured: "not measured: it has no setting".into(),
+        buys: "a lamp is skipped, with no shadow ray, when the shading normal and the surface's own normal disagree about its side (a smooth mesh's interpolated normal near its silhouette), which would light a point that faces away from it".into(),
+        verdict: NOT_A_STEP.to_string(),
+        code: Vec::new(),
+    });
+    rows.push(Row {
+        step: "Russian roulette in the photon emitter (`src/lesson/photon_map/emitter.rs`)".into(),
+        slide: "a photon followed until it lands, is absorbed or reaches the depth limit",
+        measured: "with step 9, of which it is part".into(),
+        buys: "ends the aimed photons' paths at random, their power raised to keep the estimate unbiased; `--no-step photon-grid` leaves it out with the rest of the step".into(),
+        verdict: format!("part of step 9 (`{}`)", Step::PhotonGrid.name()),
+        code: Vec::new(),
+    });
+}
+
+/// Step 11: camera-relative coordinates against world coordinates, on every example moved far away.
 fn camera_relative(all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
     eprintln!("camera-relative coordinates");
     let mut far_table = String::new();
@@ -1279,7 +1505,7 @@ fn camera_relative(all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
         writeln!(far_table, "| {} | {ew:.4} | {:.1}% | {er:.4} | {:.1}% |", ex.name, 100.0 * cw, 100.0 * cr).unwrap();
     }
     rows.push(Row {
-        step: "12. Camera-relative coordinates",
+        step: title(Step::CameraRelative, "camera-relative coordinates"),
         slide: "world coordinates",
         measured: "every example moved by (1e6, -5e5, 2.5e5), 160x120, 1 spp, against the example in place".into(),
         buys: format!(
@@ -1290,86 +1516,10 @@ fn camera_relative(all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
             far_summary.1,
             100.0 * far_summary.3
         ),
+        verdict: KEPT_AS_GUARD.to_string(),
         code: vec![Code::Items("src/lesson/scene.rs", &["fn relative_to_camera"]), Code::Lines("src/app/cli/example.rs", "relative_to_camera")],
     });
-    writeln!(details, "## 12. Camera-relative coordinates\n\nEach example's scene moved by (1e6, -5e5, 2.5e5) (camera and lights with it), rendered in world coordinates and relative to the camera, against the scene in place.\n\n{far_table}").unwrap();
-}
-
-/// Step 13: the enum of the workbook's own types against their trait objects, on every example.
-fn static_dispatch(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
-    eprintln!("static dispatch");
-    let mut table = String::new();
-    writeln!(
-        table,
-        "| example | enum: wall / CPU s | trait objects: wall / CPU s | trait objects / enum, CPU | same picture |"
-    )
-    .unwrap();
-    writeln!(table, "|---|---:|---:|---:|---|").unwrap();
-    let mut ratios = Vec::new();
-    let mut all_same = true;
-    for ex in all {
-        let (scene, settings) =
-            (ex.prepare)(&[&ONE_THREAD[..], &SIZE_320[..]].concat().iter().map(|s| s.to_string()).collect::<Vec<_>>());
-        let hidden = through_trait_objects(&scene);
-        let scenes = [&scene, &hidden];
-        let more = Plan { quick: plan.quick, rounds: 3 * plan.rounds };
-        let [enum_run, dyn_run]: [Timed; 2] =
-            interleaved(&more, 2, |i| run_scene(scenes[i], &settings)).try_into().ok().expect("two");
-        let same = enum_run.last.frame.pixels == dyn_run.last.frame.pixels;
-        all_same &= same;
-        let ratio = dyn_run.cpu / enum_run.cpu;
-        writeln!(
-            table,
-            "| {} | {:.3} / {:.3} | {:.3} / {:.3} | {ratio:.2}x | {} |",
-            ex.name,
-            enum_run.wall,
-            enum_run.cpu,
-            dyn_run.wall,
-            dyn_run.cpu,
-            if same { "yes" } else { "no" }
-        )
-        .unwrap();
-        ratios.push((ex.name, ratio));
-    }
-    let mean = (ratios.iter().map(|(_, r)| r.ln()).sum::<f64>() / ratios.len() as f64).exp();
-    rows.push(Row {
-        step: "13. Static dispatch of the workbook's own shapes, shaders, textures and environments",
-        slide: "a virtual call (a trait object) for every shape, shader, texture and environment, and the bookkeeping of a student's shader (its branching budget, the self-hit check) for every hit",
-        measured: "every example, 320x240, 1 thread, against the same scene with every node and the environment behind a type the enum does not know (`dispatch::through_trait_objects`)".into(),
-        buys: format!(
-            "{}; CPU time through the trait objects over the enum: {} (geometric mean {mean:.2}x)",
-            if all_same { "the same picture bit for bit on every example" } else { "A DIFFERENT PICTURE on some example" },
-            ratios.iter().map(|(name, r)| format!("{r:.2}x on {name}")).collect::<Vec<_>>().join(", ")
-        ),
-        code: vec![
-            Code::Items("src/lesson/dispatch.rs", &["enum Shape", "impl Shape", "fn node_hit", "fn node_intersects", "enum Sky", "impl Sky", "enum Tex", "impl Tex", "enum Material", "enum Surface", "struct MaterialLayer", "impl Material", "impl Surface", "impl MaterialLayer", "impl LayerShading for MaterialLayer"]),
-            Code::Items("src/lesson/prepared.rs", &["struct Preparation", "struct PreparedNode", "impl Preparation", "fn environment_identity", "struct PreparedNodes", "impl NodeHits for PreparedNodes"]),
-            Code::Items("src/lesson/branching.rs", &["fn shade_workbook_hit"]),
-        ],
-    });
-    writeln!(details, "## 13. Static dispatch\n\nEach example's scene as it is and with every node's geometry and shader, and the environment, hidden behind a forwarding type of its own (`dispatch::through_trait_objects`), so that the renderer calls them through their trait objects, and keeps a shading point for every hit, as it does for a student's; medians of three times the rounds.\n\n{table}").unwrap();
-}
-
-/// The example's picture through the pixels' camera rays, each traced by the default `raytrace`: at the
-/// `Stratifier`'s positions, or at random points of the pixel.
-fn render_aa(scene: &Scene, w: u32, h: u32, spp: u32, stratified: bool) -> Frame {
-    let camera = scene.camera.frame(w, h);
-    let mut frame = Frame::new(w, h);
-    let mut strata = Stratifier::new(spp);
-    for y in 0..h {
-        for x in 0..w {
-            let mut ctx = TraceContext::new(scene, Rng::for_keys(&[3, x as u64, y as u64]));
-            strata.start_pixel(&mut ctx.rng);
-            let mut sum = Color::BLACK;
-            for s in 0..spp {
-                let (dx, dy) =
-                    if stratified { strata.offset(s, &mut ctx.rng) } else { (ctx.rng.next_f32(), ctx.rng.next_f32()) };
-                sum += ctx.raytrace(&camera.get_screen_ray(x as f32 + dx, y as f32 + dy));
-            }
-            frame.pixels[(y * w + x) as usize] = sum / spp as f32;
-        }
-    }
-    frame
+    writeln!(details, "## 11. Camera-relative coordinates\n\nEach example's scene moved by (1e6, -5e5, 2.5e5) (camera and lights with it), rendered in world coordinates and relative to the camera, against the scene in place.\n\n{far_table}").unwrap();
 }
 
 fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, seconds: f64) {
@@ -1393,22 +1543,28 @@ fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, 
     let mut doc = String::new();
     writeln!(doc, "# Beyond the slides: what each step buys").unwrap();
     writeln!(doc).unwrap();
-    writeln!(doc, "The workbook renders every example in two readings. `--slide` runs the code as the slides write it (every step of `src/lesson/beyond.rs` left out); the default reading adds, beside each slide, the steps below. Each row measures one step against the slide's version of it, side by side in one run: the time at equal error for the steps that leave the picture as it is, the error at equal time (and the time at equal error) for the steps that change the noise; and the lines of code the step costs. A step that buys nothing measurable on any example says so.").unwrap();
+    writeln!(doc, "One renderer reads every example in two ways. `--slide` renders it as the slides write it (every step of `src/lesson/beyond.rs` left out); the default takes, beside each slide's code, the steps below. Each step is a setting: `--no-step NAME` leaves one out of the default, `--step NAME` adds one to `--slide`. Each step's row measures the renderer with the step against the same renderer without it, side by side in one run: the time at equal error for the steps that leave the picture as it is, the error at equal time (and the time at equal error) for the steps that change the noise; and the lines of code the step costs. The verdict says why a step stays (for speed, for noise, or as a guard, its row then showing the scene where it pays) or that it buys nothing beyond the noise. Below the steps, rows for what runs beyond the slides without being a step: the guards that hold in both readings, and the deviations from the slides' formulas.").unwrap();
+    writeln!(doc).unwrap();
+    writeln!(doc, "The glossy split depth and static dispatch are no longer steps: the first reached no example and the core's branching bound now does its job in both readings; the second is the one place that dispatches the course's types (`src/lesson/dispatch.rs`), which both readings go through, so there is nothing left to switch.").unwrap();
     writeln!(doc).unwrap();
     writeln!(doc, "Written by `cargo bench --bench beyond` ({}), in {:.0} s on {date}: {machine}, {cores} cores shared with other work (load average {load} at the end). Every render runs on one thread; each figure is the median of {} interleaved round(s); \"CPU s\" is user plus system time of the whole process. In the equal-time and equal-error comparisons of a sweep, a point's time is its rays times its curve's median CPU time per ray (steadier on a loaded machine than one point's own median, which the tables give). The bench is `benches/beyond.rs`; its doc comment says how each figure is made.", if plan.quick { "`--quick`" } else { "full" }, seconds, plan.rounds).unwrap();
     writeln!(doc).unwrap();
     writeln!(doc, "## The ledger\n").unwrap();
-    writeln!(doc, "| step | the slide's version | measured on | what it buys | lines |").unwrap();
-    writeln!(doc, "|---|---|---|---|---:|").unwrap();
+    writeln!(doc, "| step | the slide's version | measured on | what it buys | verdict | lines |").unwrap();
+    writeln!(doc, "|---|---|---|---|---|---:|").unwrap();
     for row in rows {
-        let lines: usize = row.code.iter().map(lines_of).sum();
-        writeln!(doc, "| {} | {} | {} | {} | {lines} |", row.step, row.slide, row.measured, row.buys).unwrap();
+        let lines = match row.code.is_empty() {
+            true => String::new(),
+            false => row.code.iter().map(lines_of).sum::<usize>().to_string(),
+        };
+        writeln!(doc, "| {} | {} | {} | {} | {} | {lines} |", row.step, row.slide, row.measured, row.buys, row.verdict)
+            .unwrap();
     }
     writeln!(doc).unwrap();
-    writeln!(doc, "## `--slide` against the default, every example\n\nAt 320x240, the examples' default samples, one thread. The two readings differ where the default's steps change the picture: other random numbers (stratified pixel and disc samples, hero wavelengths against 8 passes), bilinear against nearest texels, the photon grid's estimate against the k nearest, and adaptive depth control (within a few levels, see step 1).\n\n{examples_table}").unwrap();
+    writeln!(doc, "## `--slide` against the default, every example\n\nAt 320x240, the examples' default samples, one thread, both readings through the one renderer. The two readings differ where the default's steps change the picture: other random numbers (stratified pixel and disc samples, hero wavelengths against 8 passes), bilinear against nearest texels, the photon grid's estimate against the k nearest, and adaptive depth control (within a few levels, see step 1).\n\n{examples_table}").unwrap();
     doc.push_str(details);
     writeln!(doc, "## What the lines count\n\nNon-blank lines that are not comments, of the step's own items (code the step shares with the slide's version, such as the layered shader's loop that pruning works in, or the render loop that calls a sampler, is not counted):\n").unwrap();
-    for row in rows {
+    for row in rows.iter().filter(|row| !row.code.is_empty()) {
         let parts: Vec<String> = row.code.iter().map(|c| format!("{} ({})", describe_code(c), lines_of(c))).collect();
         writeln!(doc, "- {}: {}", row.step, parts.join("; ")).unwrap();
     }
