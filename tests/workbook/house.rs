@@ -6,23 +6,9 @@
 //!
 //! Print the circle: `cargo test --release --test workbook house -- --nocapture`.
 
-use crate::common::root;
+use crate::common::{root, rust_files};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
-
-/// Every `.rs` file under `dir`.
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    for entry in std::fs::read_dir(dir).unwrap().flatten() {
-        let path = entry.path();
-        if path.is_dir() {
-            out.extend(rust_files(&path));
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-    out
-}
 
 /// The module path of a file of the lesson: `shader/mod.rs` is `["shader"]`, `shader/layered.rs`
 /// `["shader", "layered"]`.

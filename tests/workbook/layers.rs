@@ -1,24 +1,9 @@
-//! The crate's three layers (src/lib.rs): the lesson imports nothing from the instruments or the application
-//! and uses neither the command line's crate (clap) nor the progress bar's (indicatif); the instruments import
-//! nothing from the application. Read from the source tree, as `paths.rs` reads it.
+//! The crate's four layers (src/lib.rs): the files a run reads and writes import nothing from the other three;
+//! the lesson imports nothing from the instruments or the application and uses neither the command line's
+//! crate (clap) nor the progress bar's (indicatif); the instruments import nothing from the application.
+//! Read from the source tree, as `paths.rs` reads it.
 
-use crate::common::root;
-use std::path::{Path, PathBuf};
-
-/// The Rust files under `dir`.
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    for entry in std::fs::read_dir(dir).unwrap().flatten() {
-        let path = entry.path();
-        if path.is_dir() {
-            out.extend(rust_files(&path));
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-    out.sort();
-    out
-}
+use crate::common::{root, rust_files};
 
 /// The code of a Rust file without its comments, each run of white space one space and none around `::`,
 /// braces and commas, so that `crate :: app` and a path broken over lines read as one word. String literals stay (a path in a string is no import, but
@@ -124,6 +109,12 @@ fn violations(layer: &str, words: &[&str], modules: &[&str]) -> Vec<String> {
 fn the_lesson_uses_no_other_layer_and_no_command_line() {
     let found = violations("lesson", &["clap", "indicatif"], &["app", "instruments"]);
     assert!(found.is_empty(), "the lesson layer uses what lies above it:\n{found:#?}");
+}
+
+#[test]
+fn the_files_use_no_other_layer() {
+    let found = violations("files", &["clap", "indicatif"], &["lesson", "app", "instruments"]);
+    assert!(found.is_empty(), "the files layer uses what lies above it:\n{found:#?}");
 }
 
 #[test]

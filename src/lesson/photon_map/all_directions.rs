@@ -16,6 +16,7 @@
 //! how many it took.
 
 use super::{PHOTON_BANDS, StoredPhoton};
+use crate::lesson::color::Color;
 use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
@@ -65,17 +66,36 @@ fn shoot(scene: &Scene, seed: u64, index: u64) -> Option<StoredPhoton> {
         ray.wavelength = Some(band.at(rng.next_f32()));
         power = power * band.color() * PHOTON_BANDS as f32;
     }
+    follow(scene, ray, power, &mut rng, false)
+}
+
+/// Follows a photon sent along `ray` with `power` through the mirrors and glass (each surface says what a
+/// photon does there: [`scatter_photon`]) until it lands on a diffuse surface, is absorbed or passes the
+/// scene's depth limit: the photon as stored, if it landed after at least one reflection or refraction. With
+/// `roulette` (Russian roulette, part of the step [`Step::PhotonGrid`](crate::lesson::beyond::Step::PhotonGrid))
+/// a bounce lets it go on with the probability of its colour's largest channel, its power divided by that.
+pub(crate) fn follow(
+    scene: &Scene,
+    mut ray: Ray,
+    mut power: Color,
+    rng: &mut Rng,
+    roulette: bool,
+) -> Option<StoredPhoton> {
     loop {
         if ray.depth > scene.max_depth.min(RECURSION_SAFETY_CAP) {
             return None;
         }
         let (info, node) = scene.closest_hit(&ray)?;
-        match scatter_photon(&*node.shader, &ray, &info, &mut rng) {
+        match scatter_photon(&*node.shader, &ray, &info, rng) {
             PhotonScatter::Land { scale } => {
                 return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });
             }
             PhotonScatter::Continue { dir, filter } => {
-                power *= filter;
+                let survival = if roulette { filter.max_channel().min(1.0) } else { 1.0 };
+                if roulette && (survival.is_nan() || rng.next_f32() >= survival) {
+                    return None;
+                }
+                power = power * filter / survival;
                 ray = ray.spawn(&info, dir, filter.max_channel());
             }
             PhotonScatter::Absorb => return None,

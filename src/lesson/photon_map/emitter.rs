@@ -7,8 +7,8 @@ use crate::lesson::color::Color;
 use crate::lesson::math::{OrthonormalBasis, Vector};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
-use crate::lesson::scene::{RECURSION_SAFETY_CAP, Scene};
-use crate::lesson::shader::{PhotonScatter, is_caustic_caster, scatter_photon};
+use crate::lesson::scene::Scene;
+use crate::lesson::shader::is_caustic_caster;
 use crate::lesson::spectral::{Band, bands};
 use rayon::prelude::*;
 use std::f32::consts::PI;
@@ -180,28 +180,8 @@ impl Emitter {
 /// as stored, if it landed on a diffuse surface after a reflection or refraction.
 fn trace_photon(scene: &Scene, emitter: &Emitter, seed: u64, index: u32) -> Option<StoredPhoton> {
     let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, index as u64]);
-    let (mut ray, mut power) = emitter.emit(scene, index, &mut rng);
-    loop {
-        if ray.depth > scene.max_depth.min(RECURSION_SAFETY_CAP) {
-            return None;
-        }
-        let (info, node) = scene.closest_hit(&ray)?;
-        match scatter_photon(&*node.shader, &ray, &info, &mut rng) {
-            PhotonScatter::Land { scale } => {
-                return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });
-            }
-            PhotonScatter::Continue { dir, filter } => {
-                // Russian roulette.
-                let survival = filter.max_channel().min(1.0);
-                if survival.is_nan() || rng.next_f32() >= survival {
-                    return None;
-                }
-                power = power * filter / survival;
-                ray = ray.spawn(&info, dir, filter.max_channel());
-            }
-            PhotonScatter::Absorb => return None,
-        }
-    }
+    let (ray, power) = emitter.emit(scene, index, &mut rng);
+    super::all_directions::follow(scene, ray, power, &mut rng, true)
 }
 
 /// Emits the emitter's photons and traces them in parallel (on the current rayon pool); the stored ones, in

@@ -88,3 +88,18 @@ pub fn random_unit(rng: &mut lecture6::lesson::rng::Rng) -> lecture6::lesson::ma
     let s = (1.0 - z * z).max(0.0).sqrt();
     lecture6::lesson::math::Vector::new(s * phi.cos(), s * phi.sin(), z)
 }
+
+/// The Rust files under `dir`, in order.
+pub fn rust_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            out.extend(rust_files(&path));
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+    out.sort();
+    out
+}
