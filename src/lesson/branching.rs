@@ -96,6 +96,9 @@ pub(crate) struct Shading<'a> {
     /// Whether a ray traced since the innermost shading point began came back NaN or infinite (then that
     /// point did not make the first such colour).
     non_finite_below: bool,
+    /// The least depth a ray of the innermost shading point may have: one more than the ray it shades (0 for
+    /// the camera's). A ray made with `Ray::new` (depth 0) is traced at this depth instead.
+    pub(crate) least_depth: u32,
 }
 
 /// The shading point of a shader that may branch past its budget: its rays ([`Siblings`]) and where it is
@@ -148,6 +151,7 @@ impl<'a> Shading<'a> {
             },
             workbook: true,
             non_finite_below: false,
+            least_depth: 0,
         }
     }
 
@@ -177,6 +181,12 @@ impl<'a> Shading<'a> {
         if !color.is_finite() {
             self.non_finite_below = true;
         }
+    }
+
+    /// The node of the innermost shading point, if it is a hit's (not the camera's, and not one of the
+    /// workbook's own nodes, which keep no shading point).
+    pub(crate) fn node(&self) -> Option<&'a Node> {
+        if self.workbook { None } else { self.point.origin.node }
     }
 
     /// One layer of the innermost shading point, seen by `ray`, begins: its rays get a budget of their own
@@ -251,7 +261,12 @@ impl<'a> TraceContext<'a> {
         }
         let outer = std::mem::replace(
             &mut self.shading,
-            Shading { point: ShadingPoint::new(node, ray, info), workbook: false, non_finite_below: false },
+            Shading {
+                point: ShadingPoint::new(node, ray, info),
+                workbook: false,
+                non_finite_below: false,
+                least_depth: ray.depth + 1,
+            },
         );
         let color = match scene.preparation() {
             Some(prepared) if !WATCHED => prepared.shade(i, ray, info, self),

@@ -50,6 +50,9 @@ pub struct Problems {
     pub self_hits: BTreeMap<usize, u64>,
     /// Hits whose normal, as the geometry returned it, is not of unit length (or is NaN), by node.
     pub bad_normals: BTreeMap<usize, u64>,
+    /// Rays a shader traced with a depth below its own ray's (made with `Ray::new`, which starts at depth 0),
+    /// by the node whose shader traced them: `raytrace` counts them at their real depth.
+    pub restarted_depth: BTreeMap<Source, u64>,
     /// The nodes whose shader gave rays of different wavelengths different colours though it says it does not
     /// depend on them ([`undeclared_dispersion`], after the render).
     pub undeclared_dispersion: BTreeSet<usize>,
@@ -69,6 +72,7 @@ impl Problems {
         merge(&mut self.non_finite, &other.non_finite);
         merge(&mut self.self_hits, &other.self_hits);
         merge(&mut self.bad_normals, &other.bad_normals);
+        merge(&mut self.restarted_depth, &other.restarted_depth);
         self.undeclared_dispersion.extend(&other.undeclared_dispersion);
     }
 
@@ -103,6 +107,17 @@ impl Problems {
                  attenuation), not Ray::new(info.ip, dir); a geometry's hit point must lie on the surface, or \
                  its error bound be widened with IntersectionInfo::with_error: {}",
                 listed(&problems.self_hits, |&i| node(i))
+            ));
+        }
+        if !problems.restarted_depth.is_empty() {
+            let sources = listed(&problems.restarted_depth, |s| match *s {
+                Source::Node(i) => format!("the shader of {}", node(i)),
+                Source::Environment => "a shader outside the scene's nodes".to_string(),
+            });
+            lines.push(format!(
+                "rays were traced with a depth below the ray that made them (Ray::new starts at depth 0) and were \
+                 counted at their real depth, so the recursion still stops at the depth limit; make them with \
+                 ray.spawn(info, dir, attenuation), which is one level deeper and off the surface: {sources}"
             ));
         }
         if !problems.bad_normals.is_empty() {

@@ -455,6 +455,16 @@ impl<'a> TraceContext<'a> {
         if WATCHED {
             self.observe(|o| o.ray_begins(ray));
         }
+        // A student's shader's ray is at least one level deeper than the ray it shades: one made with
+        // `Ray::new` (depth 0) cannot restart the count, so the recursion stops at the depth limit whatever
+        // the shader does.
+        let restarted;
+        let ray = if ray.depth < self.shading.least_depth {
+            restarted = self.restarted(ray);
+            &restarted
+        } else {
+            ray
+        };
         if ray.depth > self.scene.max_depth {
             return self.stop::<WATCHED>(Stop::DepthLimit);
         }
@@ -496,6 +506,18 @@ impl<'a> TraceContext<'a> {
             self.observe(|o| o.ray_ends(color, stop));
         }
         color
+    }
+
+    /// `ray`, traced by a student's shader with a depth below its own ray's, at the depth it should have,
+    /// counted against the node whose shader traced it (the rare path, out of line).
+    #[cold]
+    #[inline(never)]
+    fn restarted(&mut self, ray: &Ray) -> Ray {
+        let scene = self.scene;
+        let node = self.shading.node().and_then(|node| scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
+        let source = node.map_or(Source::Environment, Source::Node);
+        Problems::count(&mut self.counters.problems.restarted_depth, source);
+        Ray { depth: self.shading.least_depth, ..*ray }
     }
 
     /// The colour of the hit `hit` of `ray` on node `i`, any node, with its surface described as its shape

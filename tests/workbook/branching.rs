@@ -276,3 +276,37 @@ fn a_shader_without_an_offset_finishes_and_is_named_in_both_readings() {
         assert!(right.warnings.is_empty(), "{:?}", right.warnings);
     }
 }
+
+/// A mirror of a student's whose reflected ray is made with `Ray::new`, as the slide writes it: at depth 0
+/// again, and (with `on_surface`) from the hit point itself, not off the surface.
+struct RestartingMirror {
+    on_surface: bool,
+}
+
+impl Shader for RestartingMirror {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let dir = reflect(ray.dir, faceforward(info.normal, ray.dir));
+        let start = if self.on_surface { info.ip } else { ray.spawn(info, dir, 1.0).start };
+        ctx.raytrace(&Ray::new(start, dir)) * 0.9
+    }
+}
+
+/// Between two facing mirrors such a ray would recurse until the stack overflowed (the depth it carries never
+/// grows): `raytrace` counts it at the depth it is nested at, so the render ends at the depth limit, in
+/// either reading, and the report names the shader and says to use `ray.spawn`.
+#[test]
+fn a_ray_made_with_ray_new_cannot_restart_the_depth_in_either_reading() {
+    for on_surface in [false, true] {
+        for steps in [Steps::ALL, Steps::SLIDES] {
+            let mut scene = facing_panels(|| Arc::new(RestartingMirror { on_surface }));
+            scene.steps = steps;
+            let (frame, stats) = render(&scene, &settings(1)).unwrap();
+            assert!(frame.pixels.iter().all(|c| c.is_finite()));
+            let deepest = stats.counters.rays_by_depth.iter().rposition(|&n| n > 0).unwrap();
+            assert!(deepest <= DEPTH as usize, "rays at depth {deepest}: {:?}", stats.counters.rays_by_depth);
+            let line = stats.warnings.iter().find(|l| l.contains("Ray::new starts at depth 0"));
+            let line = line.unwrap_or_else(|| panic!("{steps:?}: not named: {:?}", stats.warnings));
+            assert!(line.contains("RestartingMirror") && line.contains("ray.spawn"), "{line}");
+        }
+    }
+}
