@@ -4,8 +4,10 @@
 //! All shading happens in *linear* light: adding two colours or scaling one by a light's intensity is
 //! physically meaningful only there. 8-bit images (textures, the PNG output) store sRGB-encoded values,
 //! so bitmap texels are decoded with [`srgb_to_linear`] (through a table of the 256 codes, when each texel is
-//! read: see [`crate::lesson::bitmap`]) and the frame is encoded with [`linear_to_srgb`] when written. The course's C++ code applies a 2.2 gamma; the exact sRGB curve is used
-//! here instead, so that PNGs round-trip.
+//! read: see [`crate::lesson::bitmap`]) and the frame is encoded with [`linear_to_srgb`] when written.
+//!
+//! Deviation from the course: its lecture-6 program applies no curve at all, reading and writing the codes as
+//! light; `--encoding raw` renders its way ([`crate::files::encoding`]).
 
 use glam::Vec3A;
 use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Sub};
@@ -130,6 +132,14 @@ pub fn srgb8_to_linear_table() -> &'static [f32; 256] {
     use std::sync::OnceLock;
     static TABLE: OnceLock<[f32; 256]> = OnceLock::new();
     TABLE.get_or_init(|| std::array::from_fn(|i| srgb_to_linear(i as f32 / 255.0)))
+}
+
+/// The 256 values of the 8-bit codes read as the course's lecture-6 program reads them: the code over 255
+/// as the light itself ([`Encoding::Raw`](crate::files::encoding::Encoding::Raw)).
+pub fn raw8_to_linear_table() -> &'static [f32; 256] {
+    use std::sync::OnceLock;
+    static TABLE: OnceLock<[f32; 256]> = OnceLock::new();
+    TABLE.get_or_init(|| std::array::from_fn(|i| i as f32 / 255.0))
 }
 
 /// Encodes a linear colour as three 8-bit sRGB codes (round to nearest): a channel's code is the number of
