@@ -4,6 +4,7 @@
 //! come to the course's own picture is measured beside its program: `cargo bench --bench speed -- --course`.
 
 use crate::common::examples::fresnel::Options as Fresnel;
+use crate::common::examples::scene_file::Options as SceneFile;
 use crate::common::{parse, render, root, run_example};
 use lecture6::lesson::bitmap::Filter;
 use lecture6::lesson::color::{srgb_to_linear, srgb8_code};
@@ -86,4 +87,20 @@ fn fresnel_takes_its_floor_from_the_command_line() {
         panic!("a missing floor is refused")
     };
     assert!(error.to_string().contains("no-such-floor.bmp"), "{error}");
+}
+
+#[test]
+fn a_scene_files_assumed_gamma_reads_its_texture_alike_under_either_encoding() {
+    // `assumedGamma 2.2` decodes the floor's stored codes with the sRGB curve, as the course does, whichever
+    // way `--encoding` read the file: the linear frames agree (the sky is an HDR cube map, read as it is).
+    let scene = root().join("examples/data/fresnel.qdmg").display().to_string();
+    let frame = |encoding| render::<SceneFile>(&[&scene, "--width", "40", "--height", "30", "--encoding", encoding]);
+    let (srgb, raw) = (frame("srgb"), frame("raw"));
+    let worst = srgb
+        .pixels
+        .iter()
+        .zip(&raw.pixels)
+        .flat_map(|(a, b)| a.to_array().into_iter().zip(b.to_array()).map(|(a, b)| (a - b).abs()))
+        .fold(0.0f32, f32::max);
+    assert!(worst < 1e-4, "the frames differ by up to {worst}");
 }
