@@ -145,10 +145,26 @@ pub fn raw8_to_linear_table() -> &'static [f32; 256] {
 /// Encodes a linear colour as three 8-bit sRGB codes (round to nearest): a channel's code is the number of
 /// codes whose lower edge ([`srgb8_edges`]) it reaches, the same code as [`srgb8_code`] gives, found by a
 /// binary search instead of a `powf` per channel.
+#[inline]
 pub fn to_srgb8(c: Color) -> [u8; 3] {
     let edges = srgb8_edges();
-    // NaN reaches no edge (code 0), as `linear_to_srgb` maps it to 0.
-    c.to_array().map(|v| edges.partition_point(|&edge| edge <= v) as u8)
+    let [r, g, b] = c.to_array();
+    [code_reached(edges, r), code_reached(edges, g), code_reached(edges, b)]
+}
+
+/// How many of the `edges` `v` reaches: a binary search of eight steps without branches (the next half is
+/// picked by a conditional move), written out so that it is inlined into the loop over a frame's pixels.
+/// NaN reaches no edge (code 0), as `linear_to_srgb` maps it to 0.
+#[inline(always)]
+fn code_reached(edges: &[f32; 255], v: f32) -> u8 {
+    // The last edge reached is at `base` or in the `size - 1` after it, if any is reached at all.
+    let (mut base, mut size) = (0, edges.len());
+    while size > 1 {
+        let half = size / 2;
+        base = if edges[base + half] <= v { base + half } else { base };
+        size -= half;
+    }
+    (base + usize::from(edges[base] <= v)) as u8
 }
 
 /// The 8-bit sRGB code of the linear value `v`, rounded to nearest, by the formula: what [`to_srgb8`] gives.
