@@ -492,7 +492,7 @@ fn course_figures(args: &Args, root: &Path) {
 fn course_look_args(data: &Path) -> Vec<String> {
     let env = data.join("env/forest").display().to_string();
     let floor = data.join("floor.bmp").display().to_string();
-    ["--fov", &course_fov().to_string(), "--env", &env, "--env-layout", "course", "--floor", &floor]
+    ["--fov", &format!("{:.2}", course_fov()), "--env", &env, "--env-layout", "course", "--floor", &floor]
         .map(String::from)
         .to_vec()
 }
