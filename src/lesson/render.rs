@@ -256,7 +256,7 @@ pub fn render_with_progress(
     settings: &RenderSettings,
     progress: Option<&dyn Progress>,
 ) -> Result<(Frame, RenderStats)> {
-    RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render(progress)
+    RenderJob::for_scene(scene, settings)?.render(progress)
 }
 
 /// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive, the slide's K
@@ -294,6 +294,14 @@ impl<'a> RenderJob<'a> {
         }
         let camera = scene.camera.frame(settings.width, settings.height);
         Ok(RenderJob { scene: scene.prepared(), settings: *settings, plan, camera })
+    }
+
+    /// [`RenderJob::new`] with the wavelengths [`spectral_plan`] asks for, the scene checked before that
+    /// asks it anything: every Layered shader asks its layers whether they are dispersive, and a graph of
+    /// shared layers past [`crate::lesson::shader::MAX_SHADES_PER_HIT`] would take as long to ask as to render.
+    pub fn for_scene(scene: &'a Scene, settings: &RenderSettings) -> Result<RenderJob<'a>> {
+        scene.check()?;
+        RenderJob::new(scene, settings, spectral_plan(scene, settings))
     }
 
     /// The scene as this job traces it.
@@ -472,14 +480,14 @@ pub fn render_pixel(
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    let job = RenderJob::for_scene(scene, settings)?;
     Ok(job.render_pixels(y, x..x + 1, observer.map(|o| o as &mut dyn Observer)).remove(0))
 }
 
 /// Renders the pixels `xs` of row `y` as [`render`] would (adaptive anti-aliasing included), each with its
 /// own ray counters. The debug views use it.
 pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
-    Ok(RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render_pixels(y, xs, None))
+    Ok(RenderJob::for_scene(scene, settings)?.render_pixels(y, xs, None))
 }
 
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.

@@ -326,3 +326,68 @@ fn a_luminance_only_exr_is_refused_saying_so() {
         refused("bitmap_textures", &[option, s(&path)], &[s(&path), "the channels Y only", "R, G and B"]);
     }
 }
+
+/// The bundled scene whose floor is shaded by `levels` Layered shaders: the lowest one's two layers are the
+/// floor's Lambert and mirror, and each one above has `width` layers that all name the one below it.
+fn shared_layers(levels: usize, width: usize) -> String {
+    let layer = |shader: &str| format!("\tlayer  {shader}  (0.5, 0.5, 0.5)\n");
+    let mut blocks = format!("Layered L0 {{\n{}{}}}\n", layer("tiles"), layer("floor_mirror"));
+    for level in 1..levels {
+        blocks += &format!("Layered L{level} {{\n{}}}\n", layer(&format!("L{}", level - 1)).repeat(width));
+    }
+    let node = "Node floor {\n\tgeometry  floor\n\tshader    ";
+    scene_with(&format!("{node}floor"), &format!("{blocks}\n{node}L{}", levels - 1))
+}
+
+#[test]
+fn layered_shaders_that_share_their_layers_do_bounded_work_per_hit() {
+    // 31 levels of two layers naming the same Layered shader below shade 2^32 - 1 shaders at every hit: no
+    // result in a minute (killed), and with --trace-pixel the ray tree grew past the memory bound.
+    let scene = shared_layers(31, 2);
+    // L10 shades 2^12 - 1 = 4095 shaders at a hit; L11's first layer makes 4096, its second 8191.
+    let line = line_of(&scene, "Layered L11 {") + 2;
+    let needles = [format!("line {line}"), "`L11`".into(), "8191".into(), "at most 4096".into()];
+    let needles: Vec<&str> = needles.iter().map(String::as_str).collect();
+    scene_refused("shared-layers.qdmg", &scene, &needles);
+    let path = file("shared-layers.qdmg", &scene);
+    let trace = run_bounded("scene_file", &[s(&path), "--width", "32", "--height", "24", "--trace-pixel", "16,20"]);
+    trace.assert_refused("--trace-pixel on shared layers", &needles);
+    // A scene that reuses a shader in several layers renders: 4 levels of 3 layers shade 94 shaders a hit.
+    let path = file("reused-layers.qdmg", shared_layers(4, 3));
+    run_to("scene_file", &dir().join("reused-layers.png"), &[s(&path)]).assert_rendered("reused layers");
+}
+
+#[test]
+fn a_rust_scene_whose_layers_multiply_the_work_is_refused_naming_its_node() {
+    // The same graph built with the API hung as the scene file did: Scene::check counted nothing.
+    use lecture6::lesson::render::{RenderSettings, render};
+    use lecture6::lesson::shader::MAX_SHADES_PER_HIT;
+    use lecture6::prelude::*;
+    let lambert: Arc<dyn Shader> = Arc::new(Lambert::new(Color::WHITE));
+    let doubled = |levels: usize| {
+        (0..levels).fold(lambert.clone(), |below, _| {
+            let mut level = Layered::new();
+            level.add_layer(below.clone(), Color::gray(0.5), None).add_layer(below, Color::gray(0.5), None);
+            Arc::new(level) as Arc<dyn Shader>
+        })
+    };
+    let scene_of = |shader: Arc<dyn Shader>| {
+        let mut scene = Scene::new(Camera::default());
+        scene.add(Node::new(Sphere::new(Vector::new(0.0, 0.0, 5.0), 1.0), shader).named("layered ball"));
+        scene
+    };
+    let settings = RenderSettings { width: 4, height: 3, ..RenderSettings::default() };
+    // 11 levels shade 2^12 - 1 = 4095; one layer more over them 4096, the bound; two more 4097.
+    let on_top = |extra: &[Arc<dyn Shader>]| {
+        let mut top = Layered::new();
+        top.add_layer(doubled(11), Color::gray(0.5), None);
+        extra.iter().for_each(|shader| _ = top.add_layer(shader.clone(), Color::gray(0.5), None));
+        scene_of(Arc::new(top))
+    };
+    assert_eq!(MAX_SHADES_PER_HIT, 4096);
+    render(&on_top(&[]), &settings).expect("4096 shaders a hit are within the bound");
+    for scene in [on_top(std::slice::from_ref(&lambert)), scene_of(doubled(31))] {
+        let error = render(&scene, &settings).map(|_| ()).expect_err("refused").to_string();
+        assert!(error.contains("layered ball") && error.contains("at most 4096"), "{error}");
+    }
+}
