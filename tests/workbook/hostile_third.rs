@@ -7,7 +7,7 @@
 use crate::common;
 use crate::hostile_files::{encoded, float_picture};
 use crate::hostile_input::{dir, file, line_of, refused, run_to, s, scene_refused, scene_with};
-use common::hostile::run_bounded;
+use common::hostile::{run_bounded, run_bounded_in};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -390,4 +390,25 @@ fn a_rust_scene_whose_layers_multiply_the_work_is_refused_naming_its_node() {
         let error = render(&scene, &settings).map(|_| ()).expect_err("refused").to_string();
         assert!(error.contains("layered ball") && error.contains("at most 4096"), "{error}");
     }
+}
+
+#[test]
+fn the_threads_a_memory_cap_allows_share_one_pool_and_more_are_refused_naming_their_stacks() {
+    // Under `ulimit -v 4194304`, `--threads 200` was "invalid thread count 200": the run made two pools of
+    // 200 threads, each with a stack of 7.8 MiB.
+    const ULIMIT_V: u64 = 4 << 30;
+    let picture = dir().join("threads.png");
+    let threads = |count: &str| {
+        run_bounded_in(ULIMIT_V, "fresnel", &[&SMALL[..], &["--threads", count, "-o", s(&picture)]].concat())
+    };
+    let r = threads("200");
+    r.assert_rendered("--threads 200 under a 4 GiB cap");
+    assert!(r.stdout.contains("200 threads"), "{}", r.stdout);
+    let r = threads("1000");
+    r.assert_refused("--threads 1000 under a 4 GiB cap", &["--threads 1000", "7.8 MiB", "stack", "ulimit -v"]);
+    // The count it says fits does.
+    let fit = r.stderr.split("at most ").last().and_then(|t| t.split(' ').next()?.parse::<usize>().ok());
+    let fit = fit.unwrap_or_else(|| panic!("no count that fits: {}", r.stderr));
+    assert!(fit >= 200, "{}", r.stderr);
+    threads(&fit.to_string()).assert_rendered(&format!("--threads {fit}, the most that fit"));
 }

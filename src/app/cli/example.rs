@@ -9,7 +9,7 @@ use crate::lesson::environment;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::photon_map::PhotonMap;
-use crate::lesson::render::{Progress, RenderSettings, RenderStats, render_with_progress, thread_pool};
+use crate::lesson::render::{Progress, RenderSettings, RenderStats, on_workers, render_with_progress};
 use crate::lesson::scene::Scene;
 use crate::lesson::spectral::SpectralMode;
 use std::path::{Path, PathBuf};
@@ -206,7 +206,7 @@ impl<E: Example> Cli<E> {
     /// Builds the scene's caustic photon map, if it asks for one.
     fn build_photon_map(&self, scene: &mut Scene) -> Result<()> {
         if scene.photons.count > 0 {
-            let map = thread_pool(self.common.threads)?.install(|| PhotonMap::build(scene, self.common.seed))?;
+            let map = on_workers(self.common.threads, |_| PhotonMap::build(scene, self.common.seed))??;
             scene.photon_map = map.map(Arc::new);
         }
         Ok(())
