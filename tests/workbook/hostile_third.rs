@@ -412,3 +412,29 @@ fn the_threads_a_memory_cap_allows_share_one_pool_and_more_are_refused_naming_th
     assert!(fit >= 200, "{}", r.stderr);
     threads(&fit.to_string()).assert_rendered(&format!("--threads {fit}, the most that fit"));
 }
+
+#[test]
+fn a_real_number_beyond_32_bit_floats_is_named_as_it_was_typed() {
+    // Round two's case: `--ior 1e308` was "invalid --ior inf"; every option read into an f32 turned a
+    // number past 3.4e38 into infinity (and one below 1.4e-45 into 0) before its own check saw it.
+    for (example, option, value, reason) in [
+        ("fresnel", "--ior", "1e308", "beyond the range of the renderer's 32-bit floats"),
+        ("refract", "--ior", "-1e39", "beyond the range"),
+        ("photon_map", "--abbe", "4e38", "beyond the range"),
+        ("dispersion", "--nd", "1e39", "beyond the range"),
+        ("glossy", "--glossiness", "1e-50", "would be read as 0"),
+        ("layered", "--lacquer", "1e39", "beyond the range"),
+        ("reflect_v01", "--multiplier", "1e39", "beyond the range"),
+        ("reflect_v02", "--multiplier", "1e39", "beyond the range"),
+        ("fresnel", "--exposure", "1e39", "beyond the range"),
+        ("fresnel", "--clamp-sample", "1e39", "beyond the range"),
+        ("fresnel", "--radius", "1e-60", "would be read as 0"),
+    ] {
+        refused(example, &[option, value], &[&format!("'{value}' for '{option}'"), reason]);
+    }
+    refused("fresnel", &["--side-by-side", "--ior 1e39"], &["'1e39' for '--ior'", "beyond the range"]);
+    // `inf` is a value of its own, which the option's check judges (`--abbe inf` is a glass that does not
+    // disperse).
+    let picture = dir().join("abbe-inf.png");
+    run_to("dispersion", &picture, &["--glass", "abbe", "--abbe", "inf"]).assert_rendered("--abbe inf");
+}
