@@ -7,7 +7,7 @@
 use crate::common;
 use crate::hostile_files::{encoded, float_picture};
 use crate::hostile_input::{dir, file, line_of, refused, run_to, s, scene_refused, scene_with};
-use common::hostile::{run_bounded, run_bounded_in};
+use common::hostile::{black_png, run_bounded, run_bounded_in};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -437,4 +437,19 @@ fn a_real_number_beyond_32_bit_floats_is_named_as_it_was_typed() {
     // disperse).
     let picture = dir().join("abbe-inf.png");
     run_to("dispersion", &picture, &["--glass", "abbe", "--abbe", "inf"]).assert_rendered("--abbe inf");
+}
+
+#[test]
+fn compare_at_the_largest_size_names_the_reference_that_holds_the_pixel_budget() {
+    // The reference of 8192 x 8192 took the whole budget, and the refusal named the sky's first face as if
+    // it were too large: "it is 128x128 = 16384 pixels ... and 67108864 are held already".
+    let reference = file("largest.png", black_png(8192, 8192));
+    let picture = dir().join("largest-compared.png");
+    let args = ["--width", "8192", "--height", "8192", "--spp", "1", "-o", s(&picture), "--compare", s(&reference)];
+    let needles = [
+        "at most 67108864 pixels together".to_string(),
+        format!("67108864 by the --compare reference '{}'", s(&reference)),
+    ];
+    run_bounded("fresnel", &args).assert_refused("--compare at 8192 x 8192", &needles.each_ref().map(String::as_str));
+    assert!(!picture.exists());
 }
