@@ -11,10 +11,12 @@
 
 use crate::files::error::{Error, Result};
 use crate::files::input;
+use std::collections::BTreeMap;
 use std::fs::File;
 use std::io::{BufReader, Seek};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// The most pixels the images held in memory at once may have together: 2^26 = 67,108,864, an 8192 x 8192
 /// picture, or an 8192 x 4096 panorama with room to spare for textures. At 4 bytes a pixel for 8-bit files
@@ -25,38 +27,65 @@ pub const MAX_IMAGE_PIXELS: u64 = 1 << 26;
 /// budget. A second guard, behind the header check, for a file whose decoder finds more than its header said.
 const MAX_DECODER_BYTES: u64 = MAX_IMAGE_PIXELS * 16;
 
-/// Pixels of the images held in memory now, in this process (see [`PixelCharge`]).
-static HELD_PIXELS: AtomicU64 = AtomicU64::new(0);
+/// The images held in memory now, in this process (see [`PixelCharge`]), by a number of their own: what each
+/// is (a file, or a picture made in memory) and its pixels. A refusal names the ones that hold the budget.
+static HELD: Mutex<BTreeMap<u64, (String, u64)>> = Mutex::new(BTreeMap::new());
+
+/// The number of the next image held.
+static NEXT_HOLDER: AtomicU64 = AtomicU64::new(0);
+
+/// The images held now, locked (a thread that panicked while holding the lock left them whole).
+fn held() -> MutexGuard<'static, BTreeMap<u64, (String, u64)>> {
+    HELD.lock().unwrap_or_else(PoisonError::into_inner)
+}
 
 /// A share of the pixel budget, held by an image in memory and given back when it is dropped.
 #[derive(Debug)]
-pub struct PixelCharge(u64);
+pub struct PixelCharge {
+    pixels: u64,
+    holder: u64,
+}
 
 impl PixelCharge {
-    /// Takes `pixels` from the budget, unless that would take it past [`MAX_IMAGE_PIXELS`].
-    fn reserve(pixels: u64) -> Option<PixelCharge> {
-        let fits = |held: u64| held.checked_add(pixels).filter(|&total| total <= MAX_IMAGE_PIXELS);
-        HELD_PIXELS.fetch_update(Ordering::SeqCst, Ordering::SeqCst, fits).ok().map(|_| PixelCharge(pixels))
+    /// Takes `pixels` from the budget for the image `what`, unless that would take it past
+    /// [`MAX_IMAGE_PIXELS`]: then the pixels held already, and the images that hold the most of them.
+    fn reserve(pixels: u64, what: String) -> std::result::Result<PixelCharge, (u64, String)> {
+        let mut images = held();
+        let total = images.values().map(|(_, n)| n).sum::<u64>();
+        if total.checked_add(pixels).is_none_or(|sum| sum > MAX_IMAGE_PIXELS) {
+            let mut holders: Vec<&(String, u64)> = images.values().collect();
+            holders.sort_by_key(|(_, n)| std::cmp::Reverse(*n));
+            let named: Vec<String> = holders.iter().take(3).map(|(what, n)| format!("{n} by {what}")).collect();
+            return Err((total, named.join(", ")));
+        }
+        Ok(PixelCharge::held_by(&mut images, pixels, what))
     }
 
     /// Counts `pixels` made in memory rather than read from a file: they count against the files read
     /// after them, but are never refused.
     pub(crate) fn count(pixels: u64) -> PixelCharge {
-        HELD_PIXELS.fetch_add(pixels, Ordering::SeqCst);
-        PixelCharge(pixels)
+        PixelCharge::held_by(&mut held(), pixels, "an image made in memory".to_string())
+    }
+
+    fn held_by(images: &mut BTreeMap<u64, (String, u64)>, pixels: u64, what: String) -> PixelCharge {
+        let holder = NEXT_HOLDER.fetch_add(1, Ordering::Relaxed);
+        images.insert(holder, (what, pixels));
+        PixelCharge { pixels, holder }
     }
 }
 
 impl Clone for PixelCharge {
     /// A copy of an image holds as many pixels again.
     fn clone(&self) -> PixelCharge {
-        PixelCharge::count(self.0)
+        let mut images = held();
+        let what = images.get(&self.holder).map_or_else(String::new, |(what, _)| what.clone());
+        PixelCharge::held_by(&mut images, self.pixels, what)
     }
 }
 
 impl Drop for PixelCharge {
     fn drop(&mut self) {
-        HELD_PIXELS.fetch_sub(self.0, Ordering::SeqCst);
+        held().remove(&self.holder);
     }
 }
 
@@ -218,18 +247,27 @@ impl ImageFile {
             return Err(Error::file("cannot use image", path, format!("it has no pixels ({width}x{height})")));
         }
         let pixels = width as u64 * height as u64;
-        let charge = PixelCharge::reserve(pixels).ok_or_else(|| {
-            let held = HELD_PIXELS.load(Ordering::SeqCst);
+        let what = format!("'{}'", path.display());
+        let charge = PixelCharge::reserve(pixels, what).map_err(|(held, holders)| {
             Error::file(
                 "cannot load image",
                 path,
                 format!(
                     "it is {width}x{height} = {pixels} pixels; the images of a run may hold at most {MAX_IMAGE_PIXELS} \
-                     pixels together, and {held} are held already"
+                     pixels together, and {held} are held already ({holders})"
                 ),
             )
         })?;
         Ok(ImageFile { path: path.to_path_buf(), file, rewritten, format, width, height, charge })
+    }
+
+    /// The file, its pixels held as `what` (say "the --compare reference"): a refusal of another image for
+    /// want of pixels names it so.
+    pub fn held_as(self, what: &str) -> ImageFile {
+        if let Some((name, _)) = held().get_mut(&self.charge.holder) {
+            *name = format!("{what} '{}'", self.path.display());
+        }
+        self
     }
 
     /// Width and height in pixels, as the header says.

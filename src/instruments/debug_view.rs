@@ -27,7 +27,7 @@ use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::node::Node;
-use crate::lesson::render::{RenderSettings, render_row, thread_pool};
+use crate::lesson::render::{RenderSettings, on_workers, render_row};
 use crate::lesson::scene::{Counters, Scene};
 use legend::HeatScale;
 use rayon::prelude::*;
@@ -149,52 +149,55 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
     let pixels = w as usize * h as usize;
     let camera = scene.camera.frame(w, h);
     let geometric = matches!(view, DebugView::Normals | DebugView::Uv | DebugView::Depth);
-    let pool = thread_pool(settings.threads)?;
-    let costs: Vec<f32> = if geometric {
-        Vec::new()
-    } else {
-        let row_costs = |y: u32| -> Result<Vec<f32>> {
-            Ok(render_row(scene, settings, y, 0..w)?.iter().map(|p| cost(view, &p.counters)).collect())
+    // On the run's worker threads when it is called on one (one pool for the run), else on a pool of its own.
+    let (bytes, range, heat_scale, sources) = on_workers(settings.threads, |_| -> Result<_> {
+        let costs: Vec<f32> = if geometric {
+            Vec::new()
+        } else {
+            let row_costs = |y: u32| -> Result<Vec<f32>> {
+                Ok(render_row(scene, settings, y, 0..w)?.iter().map(|p| cost(view, &p.counters)).collect())
+            };
+            (0..h).into_par_iter().map(row_costs).collect::<Result<Vec<_>>>()?.concat()
         };
-        pool.install(|| (0..h).into_par_iter().map(row_costs).collect::<Result<Vec<_>>>())?.concat()
-    };
-    let sample = |i: usize| -> Sample {
-        if !geometric {
-            return Sample::Number(costs[i]);
-        }
-        let (x, y) = ((i % w as usize) as f32, (i / w as usize) as f32);
-        let ray = camera.get_screen_ray(x + 0.5, y + 0.5);
-        match scene.closest_hit(&ray) {
-            None => Sample::Nothing,
-            Some((info, node)) => match view {
-                DebugView::Normals => Sample::Normal(info.normal.to_array()),
-                DebugView::Uv => texture_uv(&info, node),
-                _ => Sample::Number(info.distance),
-            },
-        }
-    };
-    let summary = pool.install(|| {
-        (0..pixels).into_par_iter().fold(Summary::new, |s, i| s.add(sample(i))).reduce(Summary::new, Summary::merge)
-    });
-    let range = if summary.lo <= summary.hi { (summary.lo, summary.hi) } else { (0.0, 0.0) };
-    let heat_scale = heat_scale(view, summary.smallest_count, range);
-    let colour = |s: Sample| -> [u8; 3] {
-        match (view, s) {
-            (_, Sample::Nothing) => NO_HIT,
-            (_, Sample::Normal(n)) => n.map(|c| unit_to_u8((c + 1.0) * 0.5)),
-            (_, Sample::TexCoords([u, v], _)) => [unit_to_u8(u), unit_to_u8(v), 0],
-            (DebugView::Depth, Sample::Number(d)) => {
-                let near_to_far = if range.1 > range.0 { (d - range.0) / (range.1 - range.0) } else { 0.0 };
-                [unit_to_u8(1.0 - near_to_far); 3]
+        let sample = |i: usize| -> Sample {
+            if !geometric {
+                return Sample::Number(costs[i]);
             }
-            (_, Sample::Number(v)) => heat_scale.and_then(|scale| scale.position(v)).map_or(NO_HIT, heat),
-        }
-    };
-    let mut bytes = Vec::with_capacity(pixels * 3);
-    pool.install(|| bytes.par_extend((0..pixels).into_par_iter().flat_map_iter(|i| colour(sample(i)))));
-    drop(costs);
+            let (x, y) = ((i % w as usize) as f32, (i / w as usize) as f32);
+            let ray = camera.get_screen_ray(x + 0.5, y + 0.5);
+            match scene.closest_hit(&ray) {
+                None => Sample::Nothing,
+                Some((info, node)) => match view {
+                    DebugView::Normals => Sample::Normal(info.normal.to_array()),
+                    DebugView::Uv => texture_uv(&info, node),
+                    _ => Sample::Number(info.distance),
+                },
+            }
+        };
+        let summary = (0..pixels)
+            .into_par_iter()
+            .fold(Summary::new, |s, i| s.add(sample(i)))
+            .reduce(Summary::new, Summary::merge);
+        let range = if summary.lo <= summary.hi { (summary.lo, summary.hi) } else { (0.0, 0.0) };
+        let heat_scale = heat_scale(view, summary.smallest_count, range);
+        let colour = |s: Sample| -> [u8; 3] {
+            match (view, s) {
+                (_, Sample::Nothing) => NO_HIT,
+                (_, Sample::Normal(n)) => n.map(|c| unit_to_u8((c + 1.0) * 0.5)),
+                (_, Sample::TexCoords([u, v], _)) => [unit_to_u8(u), unit_to_u8(v), 0],
+                (DebugView::Depth, Sample::Number(d)) => {
+                    let near_to_far = if range.1 > range.0 { (d - range.0) / (range.1 - range.0) } else { 0.0 };
+                    [unit_to_u8(1.0 - near_to_far); 3]
+                }
+                (_, Sample::Number(v)) => heat_scale.and_then(|scale| scale.position(v)).map_or(NO_HIT, heat),
+            }
+        };
+        let mut bytes = Vec::with_capacity(pixels * 3);
+        bytes.par_extend((0..pixels).into_par_iter().flat_map_iter(|i| colour(sample(i))));
+        Ok((bytes, range, heat_scale, summary.sources))
+    })??;
     let image = image::RgbImage::from_raw(w, h, bytes).expect("one colour per pixel");
-    let scale = describe(view, range, heat_scale, &summary.sources);
+    let scale = describe(view, range, heat_scale, &sources);
     let (picture, ticks) = match heat_scale {
         Some(heat_scale) => legend::with_legend(&image, heat_scale, &legend_caption(view))?,
         None => (image.clone(), Vec::new()),

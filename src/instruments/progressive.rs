@@ -20,7 +20,7 @@
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::frame::Frame;
-use crate::lesson::render::{RenderJob, RenderSettings, RenderStats, spectral_plan};
+use crate::lesson::render::{RenderJob, RenderSettings, RenderStats};
 use crate::lesson::scene::{Counters, Scene};
 use rayon::prelude::*;
 use std::sync::Mutex;
@@ -124,7 +124,7 @@ pub fn preview_settings(settings: &RenderSettings) -> RenderSettings {
 /// the coarse pass, and the picture the viewer shows while the camera moves. Returns the frame and the rays
 /// traced, or `None` if cancelled.
 pub fn quick_frame(scene: &Scene, settings: &RenderSettings, cancel: &AtomicBool) -> Result<Option<(Frame, Counters)>> {
-    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    let job = RenderJob::for_scene(scene, settings)?;
     Ok(quick_frame_of(&job, settings, cancel))
 }
 
@@ -154,7 +154,7 @@ pub fn render_progressive(
     cancel: &AtomicBool,
     on_update: &(dyn Fn(Update) + Sync),
 ) -> Result<Outcome> {
-    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    let job = RenderJob::for_scene(scene, settings)?;
     let scene = job.scene();
     let coarse = coarse_settings(settings);
     let coarse_job = RenderJob::new(scene, &coarse, job.plan().clone())?;

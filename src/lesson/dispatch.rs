@@ -42,6 +42,7 @@ use crate::lesson::shader::{
 use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, Texture};
 use crate::lesson::transform::Transform;
 use std::any::Any;
+use std::collections::HashMap;
 use std::sync::Arc;
 
 /// A node's geometry: one of the workbook's shapes without a transform, a mesh tested triangle by triangle
@@ -248,6 +249,30 @@ impl Tex {
             Tex::Dyn(texture) => texture.get_tex_color(ray, info),
         }
     }
+}
+
+/// How many shaders one hit of `shader` shades ([`crate::lesson::shader::MAX_SHADES_PER_HIT`]): 1, and for a
+/// `Layered` 1 more than its layers' shaders together, each as often as a layer names it (saturating). Each
+/// shader is counted once and its count kept in `counted`, by address (the shaders must live as long as it
+/// does), so that Layered shaders sharing their layers' shaders are counted in time linear in their layers;
+/// the count recurses through a list, not the stack, so a chain of thousands of Layered shaders is counted
+/// too. A student's shader counts 1: what it calls cannot be seen.
+pub fn shades_per_hit(shader: &Arc<dyn Shader>, counted: &mut HashMap<usize, u64>) -> u64 {
+    let address = |shader: &Arc<dyn Shader>| Arc::as_ptr(shader) as *const () as usize;
+    let mut todo = vec![shader.clone()];
+    while let Some(top) = todo.last().cloned() {
+        let layers = (&*top as &dyn Any).downcast_ref::<Layered>().map_or(&[][..], Layered::layers);
+        let uncounted = layers.iter().map(|layer| &layer.shader).filter(|s| !counted.contains_key(&address(s)));
+        let uncounted: Vec<_> = uncounted.cloned().collect();
+        if uncounted.is_empty() {
+            let shades = layers.iter().fold(1u64, |n, layer| n.saturating_add(counted[&address(&layer.shader)]));
+            counted.insert(address(&top), shades);
+            todo.pop();
+        } else {
+            todo.extend(uncounted);
+        }
+    }
+    counted[&address(shader)]
 }
 
 /// A node's shader: one of the workbook's single shaders, one of its `Layered` shaders made of them, or

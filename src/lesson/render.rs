@@ -176,14 +176,43 @@ pub struct RenderStats {
     pub warnings: Vec<String>,
 }
 
+thread_local! {
+    /// The `threads` asked of the [`thread_pool`] whose worker this thread is, if it is one.
+    static WORKER_OF: std::cell::Cell<Option<Option<usize>>> = const { std::cell::Cell::new(None) };
+}
+
 /// The worker threads the renderer uses: `threads` of them, or one per core, each with a stack of
-/// [`WORKER_STACK_SIZE`].
+/// [`WORKER_STACK_SIZE`]. A refusal names the stacks: they are what a limit on the address space runs out of.
 pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .stack_size(WORKER_STACK_SIZE)
+        .start_handler(move |_| WORKER_OF.set(Some(threads)))
         .build()
-        .map_err(|e| Error::parameter("thread count", threads.unwrap_or(0), e))
+        .map_err(|e| {
+            let count = threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+            Error::parameter("thread count", count, format!("cannot start them ({e}): {}", worker_stacks(count)))
+        })
+}
+
+/// What the stacks of `count` worker threads need, in words: each [`WORKER_STACK_SIZE`] of address space.
+pub fn worker_stacks(count: usize) -> String {
+    let mib = WORKER_STACK_SIZE as f64 / (1 << 20) as f64;
+    format!(
+        "each worker thread needs {mib:.1} MiB of address space for its stack (room for {RECURSION_SAFETY_CAP} nested \
+         bounces, the recursion's safety cap), {:.1} GiB for {count}",
+        count as f64 * mib / 1024.0
+    )
+}
+
+/// Runs `work` on `threads` worker threads ([`thread_pool`]): on the pool the calling thread is a worker of,
+/// if it was made for `threads` (one pool for a whole run: each of its threads holds a stack of
+/// [`WORKER_STACK_SIZE`]), else on a new one. `work` is given the number of workers.
+pub fn on_workers<R: Send>(threads: Option<usize>, work: impl FnOnce(usize) -> R + Send) -> Result<R> {
+    if WORKER_OF.get() == Some(threads) {
+        return Ok(work(rayon::current_num_threads()));
+    }
+    Ok(thread_pool(threads)?.install(|| work(rayon::current_num_threads())))
 }
 
 /// Where in its pixel each anti-aliasing sample goes: through its centre for one sample; for more, random
@@ -256,7 +285,7 @@ pub fn render_with_progress(
     settings: &RenderSettings,
     progress: Option<&dyn Progress>,
 ) -> Result<(Frame, RenderStats)> {
-    RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render(progress)
+    RenderJob::for_scene(scene, settings)?.render(progress)
 }
 
 /// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive, the slide's K
@@ -296,6 +325,14 @@ impl<'a> RenderJob<'a> {
         Ok(RenderJob { scene: scene.prepared(), settings: *settings, plan, camera })
     }
 
+    /// [`RenderJob::new`] with the wavelengths [`spectral_plan`] asks for, the scene checked before that
+    /// asks it anything: every Layered shader asks its layers whether they are dispersive, and a graph of
+    /// shared layers past [`crate::lesson::shader::MAX_SHADES_PER_HIT`] would take as long to ask as to render.
+    pub fn for_scene(scene: &'a Scene, settings: &RenderSettings) -> Result<RenderJob<'a>> {
+        scene.check()?;
+        RenderJob::new(scene, settings, spectral_plan(scene, settings))
+    }
+
     /// The scene as this job traces it.
     pub fn scene(&self) -> &Scene {
         &self.scene
@@ -309,15 +346,14 @@ impl<'a> RenderJob<'a> {
     /// The whole frame, rows in parallel on a pool of `settings.threads` workers, then the course's adaptive
     /// anti-aliasing if the settings ask for it.
     pub fn render(&self, progress: Option<&dyn Progress>) -> Result<(Frame, RenderStats)> {
-        let pool = thread_pool(self.settings.threads)?;
         let start = Instant::now();
         let (w, h) = (self.settings.width, self.settings.height);
-        let mut frame = pool.install(|| Frame::new(w, h));
-        if let Some(progress) = progress {
-            progress.begin(w as u64 * h as u64 * self.settings.spp as u64);
-        }
-        let mut counters = pool.install(|| {
-            frame
+        let (frame, counters, threads) = on_workers(self.settings.threads, |threads| {
+            let mut frame = Frame::new(w, h);
+            if let Some(progress) = progress {
+                progress.begin(w as u64 * h as u64 * self.settings.spp as u64);
+            }
+            let mut counters = frame
                 .pixels
                 .par_chunks_mut(w as usize)
                 // One row per task: rows cost very different amounts (sky against glass), and rayon's default
@@ -328,15 +364,16 @@ impl<'a> RenderJob<'a> {
                 .reduce(Counters::default, |mut a, b| {
                     a.add(&b);
                     a
-                })
-        });
-        if let Some(progress) = progress {
-            progress.end();
-        }
-        if self.settings.adaptive_aa {
-            counters.add(&pool.install(|| self.refine(&mut frame)));
-        }
-        Ok((frame, self.stats(start.elapsed(), pool.current_num_threads(), counters)))
+                });
+            if let Some(progress) = progress {
+                progress.end();
+            }
+            if self.settings.adaptive_aa {
+                counters.add(&self.refine(&mut frame));
+            }
+            (frame, counters, threads)
+        })?;
+        Ok((frame, self.stats(start.elapsed(), threads, counters)))
     }
 
     /// The course's adaptive anti-aliasing over a frame of this job's single samples (on the current rayon
@@ -472,14 +509,14 @@ pub fn render_pixel(
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let job = RenderJob::new(scene, settings, spectral_plan(scene, settings))?;
+    let job = RenderJob::for_scene(scene, settings)?;
     Ok(job.render_pixels(y, x..x + 1, observer.map(|o| o as &mut dyn Observer)).remove(0))
 }
 
 /// Renders the pixels `xs` of row `y` as [`render`] would (adaptive anti-aliasing included), each with its
 /// own ray counters. The debug views use it.
 pub fn render_row(scene: &Scene, settings: &RenderSettings, y: u32, xs: Range<u32>) -> Result<Vec<PixelTrace>> {
-    Ok(RenderJob::new(scene, settings, spectral_plan(scene, settings))?.render_pixels(y, xs, None))
+    Ok(RenderJob::for_scene(scene, settings)?.render_pixels(y, xs, None))
 }
 
 /// A salt for the random streams of wavelength passes, so that they differ from the white pass's.

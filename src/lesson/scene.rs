@@ -17,8 +17,9 @@ use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::diagnostics::{Problems, Source};
+use crate::lesson::dispatch::shades_per_hit;
 use crate::lesson::environment::Environment;
-use crate::lesson::error::Result;
+use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::{Hit, IntersectionInfo};
 use crate::lesson::light::PointLight;
 use crate::lesson::math::{Vector, max_abs};
@@ -28,9 +29,10 @@ use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::prepared::Preparation;
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
-use crate::lesson::shader::Layer;
+use crate::lesson::shader::{Layer, MAX_SHADES_PER_HIT};
 use crate::lesson::spectral::Illuminant;
 use std::borrow::Cow;
+use std::collections::HashMap;
 use std::sync::Arc;
 
 /// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
@@ -170,9 +172,26 @@ impl Scene {
         point + self.world_origin
     }
 
-    /// Checks what can only be checked once the scene is complete: every node's transform is invertible.
+    /// Checks what can only be checked once the scene is complete: every node's transform is invertible, and
+    /// no node's shader shades more than [`MAX_SHADES_PER_HIT`] shaders at a hit (Layered shaders whose layers
+    /// share the shaders below them multiply the work with each level).
     pub fn check(&self) -> Result<()> {
-        self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())
+        self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())?;
+        let mut counted = HashMap::new();
+        for node in &self.nodes {
+            let shades = shades_per_hit(&node.shader, &mut counted);
+            if shades > MAX_SHADES_PER_HIT {
+                return Err(Error::parameter(
+                    "node",
+                    self.node_name(node),
+                    format!(
+                        "its shader shades {shades} shaders at every hit (the layers of its Layered shaders, theirs \
+                         and so on, each as often as a layer names it); a hit may shade at most {MAX_SHADES_PER_HIT}"
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// Whether a photon map can add light to this scene: some node is a caustic caster (a mirror or glass,

@@ -7,7 +7,7 @@
 use crate::common;
 use crate::hostile_files::{encoded, float_picture};
 use crate::hostile_input::{dir, file, line_of, refused, run_to, s, scene_refused, scene_with};
-use common::hostile::run_bounded;
+use common::hostile::{black_png, run_bounded, run_bounded_in};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -325,4 +325,131 @@ fn a_luminance_only_exr_is_refused_saying_so() {
     for option in ["--env", "--texture"] {
         refused("bitmap_textures", &[option, s(&path)], &[s(&path), "the channels Y only", "R, G and B"]);
     }
+}
+
+/// The bundled scene whose floor is shaded by `levels` Layered shaders: the lowest one's two layers are the
+/// floor's Lambert and mirror, and each one above has `width` layers that all name the one below it.
+fn shared_layers(levels: usize, width: usize) -> String {
+    let layer = |shader: &str| format!("\tlayer  {shader}  (0.5, 0.5, 0.5)\n");
+    let mut blocks = format!("Layered L0 {{\n{}{}}}\n", layer("tiles"), layer("floor_mirror"));
+    for level in 1..levels {
+        blocks += &format!("Layered L{level} {{\n{}}}\n", layer(&format!("L{}", level - 1)).repeat(width));
+    }
+    let node = "Node floor {\n\tgeometry  floor\n\tshader    ";
+    scene_with(&format!("{node}floor"), &format!("{blocks}\n{node}L{}", levels - 1))
+}
+
+#[test]
+fn layered_shaders_that_share_their_layers_do_bounded_work_per_hit() {
+    // 31 levels of two layers naming the same Layered shader below shade 2^32 - 1 shaders at every hit: no
+    // result in a minute (killed), and with --trace-pixel the ray tree grew past the memory bound.
+    let scene = shared_layers(31, 2);
+    // L10 shades 2^12 - 1 = 4095 shaders at a hit; L11's first layer makes 4096, its second 8191.
+    let line = line_of(&scene, "Layered L11 {") + 2;
+    let needles = [format!("line {line}"), "`L11`".into(), "8191".into(), "at most 4096".into()];
+    let needles: Vec<&str> = needles.iter().map(String::as_str).collect();
+    scene_refused("shared-layers.qdmg", &scene, &needles);
+    let path = file("shared-layers.qdmg", &scene);
+    let trace = run_bounded("scene_file", &[s(&path), "--width", "32", "--height", "24", "--trace-pixel", "16,20"]);
+    trace.assert_refused("--trace-pixel on shared layers", &needles);
+    // A scene that reuses a shader in several layers renders: 4 levels of 3 layers shade 94 shaders a hit.
+    let path = file("reused-layers.qdmg", shared_layers(4, 3));
+    run_to("scene_file", &dir().join("reused-layers.png"), &[s(&path)]).assert_rendered("reused layers");
+}
+
+#[test]
+fn a_rust_scene_whose_layers_multiply_the_work_is_refused_naming_its_node() {
+    // The same graph built with the API hung as the scene file did: Scene::check counted nothing.
+    use lecture6::lesson::render::{RenderSettings, render};
+    use lecture6::lesson::shader::MAX_SHADES_PER_HIT;
+    use lecture6::prelude::*;
+    let lambert: Arc<dyn Shader> = Arc::new(Lambert::new(Color::WHITE));
+    let doubled = |levels: usize| {
+        (0..levels).fold(lambert.clone(), |below, _| {
+            let mut level = Layered::new();
+            level.add_layer(below.clone(), Color::gray(0.5), None).add_layer(below, Color::gray(0.5), None);
+            Arc::new(level) as Arc<dyn Shader>
+        })
+    };
+    let scene_of = |shader: Arc<dyn Shader>| {
+        let mut scene = Scene::new(Camera::default());
+        scene.add(Node::new(Sphere::new(Vector::new(0.0, 0.0, 5.0), 1.0), shader).named("layered ball"));
+        scene
+    };
+    let settings = RenderSettings { width: 4, height: 3, ..RenderSettings::default() };
+    // 11 levels shade 2^12 - 1 = 4095; one layer more over them 4096, the bound; two more 4097.
+    let on_top = |extra: &[Arc<dyn Shader>]| {
+        let mut top = Layered::new();
+        top.add_layer(doubled(11), Color::gray(0.5), None);
+        extra.iter().for_each(|shader| _ = top.add_layer(shader.clone(), Color::gray(0.5), None));
+        scene_of(Arc::new(top))
+    };
+    assert_eq!(MAX_SHADES_PER_HIT, 4096);
+    render(&on_top(&[]), &settings).expect("4096 shaders a hit are within the bound");
+    for scene in [on_top(std::slice::from_ref(&lambert)), scene_of(doubled(31))] {
+        let error = render(&scene, &settings).map(|_| ()).expect_err("refused").to_string();
+        assert!(error.contains("layered ball") && error.contains("at most 4096"), "{error}");
+    }
+}
+
+#[test]
+fn the_threads_a_memory_cap_allows_share_one_pool_and_more_are_refused_naming_their_stacks() {
+    // Under `ulimit -v 4194304`, `--threads 200` was "invalid thread count 200": the run made two pools of
+    // 200 threads, each with a stack of 7.8 MiB.
+    const ULIMIT_V: u64 = 4 << 30;
+    let picture = dir().join("threads.png");
+    let threads = |count: &str| {
+        run_bounded_in(ULIMIT_V, "fresnel", &[&SMALL[..], &["--threads", count, "-o", s(&picture)]].concat())
+    };
+    let r = threads("200");
+    r.assert_rendered("--threads 200 under a 4 GiB cap");
+    assert!(r.stdout.contains("200 threads"), "{}", r.stdout);
+    let r = threads("1000");
+    r.assert_refused("--threads 1000 under a 4 GiB cap", &["--threads 1000", "7.8 MiB", "stack", "ulimit -v"]);
+    // The count it says fits does.
+    let fit = r.stderr.split("at most ").last().and_then(|t| t.split(' ').next()?.parse::<usize>().ok());
+    let fit = fit.unwrap_or_else(|| panic!("no count that fits: {}", r.stderr));
+    assert!(fit >= 200, "{}", r.stderr);
+    threads(&fit.to_string()).assert_rendered(&format!("--threads {fit}, the most that fit"));
+}
+
+#[test]
+fn a_real_number_beyond_32_bit_floats_is_named_as_it_was_typed() {
+    // Round two's case: `--ior 1e308` was "invalid --ior inf"; every option read into an f32 turned a
+    // number past 3.4e38 into infinity (and one below 1.4e-45 into 0) before its own check saw it.
+    for (example, option, value, reason) in [
+        ("fresnel", "--ior", "1e308", "beyond the range of the renderer's 32-bit floats"),
+        ("refract", "--ior", "-1e39", "beyond the range"),
+        ("photon_map", "--abbe", "4e38", "beyond the range"),
+        ("dispersion", "--nd", "1e39", "beyond the range"),
+        ("glossy", "--glossiness", "1e-50", "would be read as 0"),
+        ("layered", "--lacquer", "1e39", "beyond the range"),
+        ("reflect_v01", "--multiplier", "1e39", "beyond the range"),
+        ("reflect_v02", "--multiplier", "1e39", "beyond the range"),
+        ("fresnel", "--exposure", "1e39", "beyond the range"),
+        ("fresnel", "--clamp-sample", "1e39", "beyond the range"),
+        ("fresnel", "--radius", "1e-60", "would be read as 0"),
+    ] {
+        refused(example, &[option, value], &[&format!("'{value}' for '{option}'"), reason]);
+    }
+    refused("fresnel", &["--side-by-side", "--ior 1e39"], &["'1e39' for '--ior'", "beyond the range"]);
+    // `inf` is a value of its own, which the option's check judges (`--abbe inf` is a glass that does not
+    // disperse).
+    let picture = dir().join("abbe-inf.png");
+    run_to("dispersion", &picture, &["--glass", "abbe", "--abbe", "inf"]).assert_rendered("--abbe inf");
+}
+
+#[test]
+fn compare_at_the_largest_size_names_the_reference_that_holds_the_pixel_budget() {
+    // The reference of 8192 x 8192 took the whole budget, and the refusal named the sky's first face as if
+    // it were too large: "it is 128x128 = 16384 pixels ... and 67108864 are held already".
+    let reference = file("largest.png", black_png(8192, 8192));
+    let picture = dir().join("largest-compared.png");
+    let args = ["--width", "8192", "--height", "8192", "--spp", "1", "-o", s(&picture), "--compare", s(&reference)];
+    let needles = [
+        "at most 67108864 pixels together".to_string(),
+        format!("67108864 by the --compare reference '{}'", s(&reference)),
+    ];
+    run_bounded("fresnel", &args).assert_refused("--compare at 8192 x 8192", &needles.each_ref().map(String::as_str));
+    assert!(!picture.exists());
 }

@@ -3,7 +3,7 @@
 //! own frame size and anti-aliasing included), hands them to its instrument, writes what it makes and returns
 //! the lines to print.
 
-use super::example::{Cli, Example};
+use super::example::{Cli, Example, matches_within_f32};
 use crate::files::output::{check_output, save_atomically};
 use crate::instruments::debug_view::{DebugView, render_view};
 use crate::instruments::ray_tree::{self, PixelPos};
@@ -91,9 +91,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     }
     let parse = |extra: &[OsString]| -> Result<Cli<E>> {
         let argv = std::iter::once(OsString::from(name)).chain(base.iter().cloned()).chain(extra.iter().cloned());
-        let matches = Cli::<E>::command_named(name)
-            .args_override_self(true)
-            .try_get_matches_from(argv)
+        let matches = matches_within_f32(Cli::<E>::command_named(name).args_override_self(true), argv)
             .and_then(|m| <Cli<E> as clap::FromArgMatches>::from_arg_matches(&m));
         matches.map_err(|e| Error::parameter("--side-by-side", alternative, e.to_string().lines().next().unwrap_or("")))
     };

@@ -10,9 +10,11 @@ use crate::lesson::environment;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::photon_map::PhotonMap;
-use crate::lesson::render::{Progress, RenderSettings, RenderStats, render_with_progress, thread_pool};
+use crate::lesson::render::{Progress, RenderSettings, RenderStats, on_workers, render_with_progress};
 use crate::lesson::scene::Scene;
 use crate::lesson::spectral::SpectralMode;
+use clap::parser::ValueSource;
+use std::any::TypeId;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -107,7 +109,7 @@ impl<E: Example> Cli<E> {
         T: Into<std::ffi::OsString> + Clone,
     {
         let argv = std::iter::once(std::ffi::OsString::from(name)).chain(args.into_iter().map(Into::into));
-        let matches = Self::command_named(name).try_get_matches_from(argv)?;
+        let matches = matches_within_f32(Self::command_named(name), argv)?;
         <Cli<E> as clap::FromArgMatches>::from_arg_matches(&matches)
     }
 
@@ -213,7 +215,7 @@ impl<E: Example> Cli<E> {
     /// Builds the scene's caustic photon map, if it asks for one.
     fn build_photon_map(&self, scene: &mut Scene) -> Result<()> {
         if scene.photons.count > 0 {
-            let map = thread_pool(self.common.threads)?.install(|| PhotonMap::build(scene, self.common.seed))?;
+            let map = on_workers(self.common.threads, |_| PhotonMap::build(scene, self.common.seed))??;
             scene.photon_map = map.map(Arc::new);
         }
         Ok(())
@@ -313,6 +315,47 @@ impl<E: Example> Cli<E> {
     pub fn output_path_for(&self, name: &str, suffix: &str) -> PathBuf {
         let picture = self.example.picture_name(name);
         self.common.output.clone().unwrap_or_else(|| Path::new("out").join(format!("{picture}{suffix}.png")))
+    }
+}
+
+/// `command`'s matches of `argv`, every real number given to an option of type `f32` (the example's own, such
+/// as `--ior`, and the common ones) within the 32-bit floats: clap reads `1e308` as infinity and `1e-50` as 0
+/// without a word, and the option's own check would then refuse a value that was never typed ("invalid
+/// --ior inf"). A value out of that range is refused as it was typed; `inf` itself is left to the option.
+pub(super) fn matches_within_f32(
+    mut command: clap::Command,
+    argv: impl IntoIterator<Item = std::ffi::OsString>,
+) -> std::result::Result<clap::ArgMatches, clap::Error> {
+    let matches = command.try_get_matches_from_mut(argv)?;
+    let f32_options = command.get_arguments().filter(|arg| arg.get_value_parser().type_id() == TypeId::of::<f32>());
+    let typed = f32_options.filter(|arg| matches.value_source(arg.get_id().as_str()) == Some(ValueSource::CommandLine));
+    let mut out_of_range = typed.flat_map(|arg| {
+        let values = matches.get_raw(arg.get_id().as_str()).into_iter().flatten().filter_map(|v| v.to_str());
+        let long = arg.get_long().map_or_else(|| arg.get_id().to_string(), |long| format!("--{long}"));
+        values.filter_map(move |text| Some(format!("invalid value '{text}' for '{long}': {}", beyond_f32(text)?)))
+    });
+    let first = out_of_range.next();
+    drop(out_of_range); // it borrows the command, which makes the error
+    if let Some(message) = first {
+        return Err(command.error(clap::error::ErrorKind::ValueValidation, message));
+    }
+    Ok(matches)
+}
+
+/// Why the number `text` is not a 32-bit float as it was typed: it is finite and reads as infinity, or is
+/// not zero and reads as 0. `None` for a number that is one, for `inf` and for text that is no number.
+fn beyond_f32(text: &str) -> Option<String> {
+    let value = text.trim().parse::<f32>().ok()?;
+    let mantissa = text.split(['e', 'E']).next().unwrap_or_default();
+    if value.is_infinite() && !text.to_ascii_lowercase().contains("inf") {
+        Some(format!("{text} is beyond the range of the renderer's 32-bit floats (at most ±{:.1e})", f32::MAX))
+    } else if value == 0.0 && mantissa.contains(|c: char| c.is_ascii_digit() && c != '0') {
+        let smallest = f32::from_bits(1);
+        Some(format!(
+            "{text} is too small for the renderer's 32-bit floats and would be read as 0 (the smallest is {smallest:.1e})"
+        ))
+    } else {
+        None
     }
 }
 

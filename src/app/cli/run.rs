@@ -10,7 +10,7 @@ use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
-use crate::lesson::render::thread_pool;
+use crate::lesson::render::{WORKER_STACK_SIZE, thread_pool, worker_stacks};
 use crate::lesson::spectral::SpectralPlan;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -48,10 +48,62 @@ pub fn run<E: Example>() -> ExitCode {
     }
     // Everything runs on `--threads` threads: the scene's loading and the picture's encoding are parallel
     // too (the render builds its own pool of the same size).
-    match thread_pool(args.common.threads).and_then(|pool| pool.install(|| run_parsed(&name, &args))) {
+    match workers(args.common.threads).and_then(|pool| pool.install(|| run_parsed(&name, &args))) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => refuse(&format!("{name}: error: {e}")),
     }
+}
+
+/// The address space the C allocator (glibc's) may reserve for a run of `threads` worker threads: an arena for
+/// each thread that allocates, the main thread's included, up to 8 arenas per core, each made by mapping
+/// 128 MiB and keeping the 64 MiB aligned within it. The workers make theirs as they start, while the next
+/// ones' stacks are mapped; a worker whose stack takes the last of the address space cannot make its signal
+/// stack, and the process aborts.
+fn allocator_arenas(threads: usize) -> u64 {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    (threads + 1).min(8 * cores) as u64 * (128 << 20)
+}
+
+/// The run's worker threads, `--threads` of them (the render, the photon map and the views run on them too),
+/// each with a stack of [`WORKER_STACK_SIZE`]. Where the system limits the address space (`ulimit -v`, as
+/// `/proc/self/limits` says), a count whose stacks do not fit beside what the process has taken and the
+/// allocator's arenas ([`allocator_arenas`]) is refused before any thread starts, naming the option, what the
+/// stacks need and how many threads fit.
+fn workers(threads: Option<usize>) -> Result<rayon::ThreadPool> {
+    if let (Some(count), Some((limit, taken))) = (threads, address_space()) {
+        let fits = |n: usize| taken + n as u64 * WORKER_STACK_SIZE as u64 + allocator_arenas(n) <= limit;
+        if !fits(count) {
+            let gib = |bytes: u64| bytes as f64 / (1u64 << 30) as f64;
+            return Err(Error::parameter(
+                "--threads",
+                count,
+                format!(
+                    "{}; this process may take {:.1} GiB of address space (ulimit -v), {:.1} GiB are taken and the \
+                     C allocator may reserve {:.1} GiB for the threads: at most {} fit",
+                    worker_stacks(count),
+                    gib(limit),
+                    gib(taken),
+                    gib(allocator_arenas(count)),
+                    (1..count).take_while(|&n| fits(n)).last().unwrap_or(0)
+                ),
+            ));
+        }
+    }
+    thread_pool(threads).map_err(|e| match (e, threads) {
+        (Error::Parameter { reason, .. }, Some(count)) => Error::parameter("--threads", count, reason),
+        (e, _) => e,
+    })
+}
+
+/// The address space this process may take (its soft limit) and has taken, in bytes, where the system
+/// limits it and says so (Linux's `/proc/self/limits` and `/proc/self/status`).
+fn address_space() -> Option<(u64, u64)> {
+    let field = |file: &str, name: &str| -> Option<u64> {
+        let text = std::fs::read_to_string(file).ok()?;
+        text.lines().find_map(|line| line.strip_prefix(name)?.split_whitespace().next()?.parse().ok())
+    };
+    let limit = field("/proc/self/limits", "Max address space")?;
+    Some((limit, field("/proc/self/status", "VmSize:")? * 1024))
 }
 
 /// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
@@ -173,7 +225,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     let reference_file = match &args.common.compare {
         Some(path) => {
             check_not_the_reference(path, &output, &heat_path)?;
-            Some((path, ImageFile::open(path)?))
+            Some((path, ImageFile::open(path)?.held_as("the --compare reference")))
         }
         None => None,
     };

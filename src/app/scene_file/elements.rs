@@ -9,12 +9,13 @@ use super::*;
 use crate::files::encoding::{self, Encoding};
 use crate::lesson::camera::{Camera, FOV_LIMITS, FovAxis};
 use crate::lesson::color::{Color, linear_to_srgb, srgb_to_linear};
+use crate::lesson::dispatch::shades_per_hit;
 use crate::lesson::environment::{CubemapEnvironment, CubemapLayout, Environment};
 use crate::lesson::error::Result;
 use crate::lesson::geometry::{Cube, Geometry, Mesh, Plane, Sphere};
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
-use crate::lesson::shader::{ColorSource, Lambert, Layered, Phong, Reflection, Refraction, Shader};
+use crate::lesson::shader::{ColorSource, Lambert, Layered, MAX_SHADES_PER_HIT, Phong, Reflection, Refraction, Shader};
 use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
 use crate::lesson::transform::Transform;
 use rayon::prelude::*;
@@ -291,8 +292,12 @@ impl Loader<'_> {
 
     /// A Layered shader from its `layer SHADER COLOR [TEXTURE]` lines (spec 3.7); every other line is
     /// ignored without a warning, as in the course.
+    /// The shaders one hit of it shades (the Layered itself, and every layer's count) may not pass
+    /// [`MAX_SHADES_PER_HIT`]: the layer that takes the count past it is refused at its line.
     pub(super) fn layered(&mut self, blocks: &[Block], b: &Block) -> Result<Layered> {
         let mut layered = Layered::new();
+        let mut shades = 1u64;
+        let (name, line) = (b.name.as_deref().unwrap_or(""), b.line);
         let syntax = "expected `layer SHADER (r, g, b) [TEXTURE]`";
         for p in b.properties.iter().filter(|p| p.name == "layer") {
             let (first, rest) = p.value.split_once(is_space).unwrap_or((&p.value, ""));
@@ -342,6 +347,18 @@ impl Loader<'_> {
                     format!("more than {} layers: this one is dropped, as in the course", COURSE_MAX_LAYERS),
                 );
                 continue;
+            }
+            let layer_shades = shades_per_hit(&shader, &mut self.counted_shades);
+            shades = shades.saturating_add(layer_shades);
+            if shades > MAX_SHADES_PER_HIT {
+                return Err(self.error(
+                    p.line,
+                    format!(
+                        "the Layered shader `{name}` (line {line}) would shade {shades} shaders at every hit with this layer, \
+                         whose `{shader_name}` shades {layer_shades} (its layers, theirs and so on, each as often as \
+                         a layer names it): a hit may shade at most {MAX_SHADES_PER_HIT}"
+                    ),
+                ));
             }
             layered.add_layer(shader, blend, texture);
         }

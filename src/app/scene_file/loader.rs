@@ -36,6 +36,9 @@ pub(super) struct Loader<'a> {
     pub(super) shaders: Built<Arc<dyn Shader>>,
     /// Shaders being built, to report a Layered that contains itself.
     pub(super) building: Vec<usize>,
+    /// How many shaders one hit of each built shader shades, by its address
+    /// ([`crate::lesson::dispatch::shades_per_hit`]; the shaders live in `shaders`).
+    pub(super) counted_shades: HashMap<usize, u64>,
     /// The largest channel of the light a surface a unit from a lamp gets (the lamp's colour times its
     /// power), or of the ambient light, over the scene's lights: they are read before the textures and
     /// shaders, whose colours and multipliers scale it ([`Reader::surface_color`]).
@@ -68,6 +71,7 @@ impl<'a> Loader<'a> {
             textures: HashMap::new(),
             shaders: HashMap::new(),
             building: Vec::new(),
+            counted_shades: HashMap::new(),
             brightest_light: 0.0,
         }
     }

@@ -47,7 +47,10 @@
 //!   can square them. A Plane's `limit` beyond the 32-bit floats means no limit, as its default 1e99 does.
 //! - Hostile files are refused: a scene file larger than [`MAX_SCENE_BYTES`], anything but a regular file
 //!   (a FIFO, `/dev/zero`) where a file is named, images over the pixel budget
-//!   ([`crate::lesson::image_file::MAX_IMAGE_PIXELS`]), Layered shaders nested more than 32 deep.
+//!   ([`crate::lesson::image_file::MAX_IMAGE_PIXELS`]), Layered shaders nested more than 32 deep, and Layered
+//!   shaders whose layers, theirs and so on make a hit shade more than
+//!   [`crate::lesson::shader::MAX_SHADES_PER_HIT`] shaders (Layered shaders that share a shader of the level
+//!   below in two layers double the work with each level), refused at the layer that passes it.
 //! - Paths are resolved against the scene file's folder; an absolute path is used as it is (an extension).
 
 mod elements;

@@ -140,6 +140,13 @@ pub fn layer_weight(uncovered: Color, blend: Color) -> Color {
 /// The most layers a `Layered` may have (the slide's `MAX_LAYERS`).
 pub const MAX_LAYERS: usize = 32;
 
+/// The most shaders one hit may shade: the node's shader and, for a `Layered`, the shaders of its layers,
+/// theirs and so on, each as often as a layer names it (the slide's loop shades every layer). A `Layered` of
+/// [`MAX_LAYERS`] layers that are each a `Layered` of as many shades 1,057. Layered shaders whose two layers
+/// name one shader of the level below, 31 levels deep, would shade 2^32 - 1 at every hit: such a scene is
+/// refused ([`crate::lesson::scene::Scene::check`]) rather than rendered for days.
+pub const MAX_SHADES_PER_HIT: u64 = 4096;
+
 /// A surface made of layers, bottom to top, each blended over the ones below (slide "Layered Shader").
 #[derive(Clone, Default)]
 pub struct Layered {

@@ -12,7 +12,7 @@ mod refraction;
 
 pub use glass::fresnel_glass;
 pub use lambert::Lambert;
-pub use layered::{Layer, Layered, MAX_LAYERS};
+pub use layered::{Layer, Layered, MAX_LAYERS, MAX_SHADES_PER_HIT};
 pub(crate) use layered::{LayerShading, shade_bottom_up, shade_pruned};
 pub use phong::Phong;
 #[allow(deprecated)]

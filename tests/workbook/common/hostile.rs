@@ -59,6 +59,22 @@ pub fn run_bounded_with<S: AsRef<OsStr>>(
     args: &[S],
     before: impl FnMut() -> std::io::Result<()> + Send + Sync + 'static,
 ) -> Run {
+    run_within(MEMORY, name, args, before)
+}
+
+/// [`run_bounded`] with the address space limited to `memory` bytes instead of [`MEMORY`] (a user's
+/// `ulimit -v`).
+pub fn run_bounded_in<S: AsRef<OsStr>>(memory: u64, name: &str, args: &[S]) -> Run {
+    run_within(memory, name, args, || Ok(()))
+}
+
+/// [`run_bounded_with`], the address space limited to `memory` bytes.
+fn run_within<S: AsRef<OsStr>>(
+    memory: u64,
+    name: &str,
+    args: &[S],
+    before: impl FnMut() -> std::io::Result<()> + Send + Sync + 'static,
+) -> Run {
     use std::os::unix::process::CommandExt;
     let mut command = Command::new(super::example_binary(name));
     command.args(args).current_dir(super::root()).stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
@@ -67,7 +83,7 @@ pub fn run_bounded_with<S: AsRef<OsStr>>(
     #[allow(unsafe_code)] // Sound: see the SAFETY comment.
     unsafe {
         command.pre_exec(move || {
-            let limit = libc::rlimit { rlim_cur: MEMORY as libc::rlim_t, rlim_max: MEMORY as libc::rlim_t };
+            let limit = libc::rlimit { rlim_cur: memory as libc::rlim_t, rlim_max: memory as libc::rlim_t };
             if libc::setrlimit(libc::RLIMIT_AS, &limit) != 0 {
                 return Err(std::io::Error::last_os_error());
             }
