@@ -57,7 +57,7 @@ pub use lesson::math::Vector;
 
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
-    pub use crate::app::cli::{Example, run};
+    pub use crate::app::cli::{Example, render_for_test, run};
     pub use crate::app::scenes;
     pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
     pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};

@@ -10,9 +10,11 @@ use lecture6::lesson::sampling::DiscSampler;
 use lecture6::prelude::*;
 
 /// The API page's glossy mirror (docs/homework-api.md, "Randomness in a shader"), the file
-/// docs/homework_glossy.rs: each ray passed the tint's full factor.
+/// docs/homework_glossy.rs: each ray passed the tint's full factor. The file is a whole homework: its own
+/// test (the page's recipe, `homework_glossy::tests`) runs here too.
+#[allow(dead_code)] // its `main` is a homework binary's
 #[path = "../../docs/homework_glossy.rs"]
-mod homework_glossy;
+pub mod homework_glossy;
 
 use homework_glossy::TintedGlossy;
 

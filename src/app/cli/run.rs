@@ -8,9 +8,10 @@ use super::help::help_command;
 use crate::files::output::{check_output, keeps_linear_light, save_atomically};
 use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
+use crate::lesson::frame::Frame;
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
-use crate::lesson::render::thread_pool;
+use crate::lesson::render::{render, thread_pool};
 use crate::lesson::spectral::SpectralPlan;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -52,6 +53,36 @@ pub fn run<E: Example>() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => refuse(&format!("{name}: error: {e}")),
     }
+}
+
+/// A homework's own test (`cargo test --release --example hw1`, a `#[cfg(test)] mod tests` in its file):
+/// renders the example `E` with the options `args`, as its binary would but without writing anything, and
+/// returns its picture. Panics, failing the test, if the options are refused, the scene cannot be built, or
+/// the end-of-run report says anything: a NaN or infinite sample, a ray that found the surface it left, a
+/// ray made with `Ray::new` in a shader, a shader that returns more light than its rays and its light loop
+/// brought it (N rays added up and not divided by N), a normal that is not of unit length, a shader that
+/// reads the wavelength without saying so. A correct shader, of one ray or of N, passes.
+///
+/// ```no_run
+/// # use lecture6::prelude::*;
+/// # #[derive(clap::Args, Clone, Debug)]
+/// # pub struct Options {}
+/// # impl Example for Options {
+/// #     const DEFAULT_SPP: u32 = 1;
+/// #     fn scene(&self) -> Result<Scene> { Ok(Scene::new(Camera::default())) }
+/// # }
+/// let picture = render_for_test::<Options>(&["--width", "80", "--height", "60", "--spp", "1"]);
+/// assert_eq!(picture.width, 80);
+/// ```
+pub fn render_for_test<E: Example>(args: &[&str]) -> Frame {
+    let cli =
+        Cli::<E>::parse_args("homework", args).unwrap_or_else(|e| panic!("{args:?}: {}", one_line(&e.to_string())));
+    let (frame, stats) = cli
+        .prepare()
+        .and_then(|(scene, settings)| render(&scene, &settings))
+        .unwrap_or_else(|e| panic!("{args:?}: {e}"));
+    assert!(stats.warnings.is_empty(), "the end-of-run report of {args:?}:\n{}", stats.warnings.join("\n"));
+    frame
 }
 
 /// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
