@@ -5,6 +5,8 @@
 //! - The API page's homework, docs/homework_glossy.rs (a glossy mirror averaging N rays, as the page says to
 //!   write one), with every doc comment taken out, builds without a warning (no lint holds a student's
 //!   example to the library's documentation rules) and passes its own test.
+//! - The same homework with the naive sum (its N rays added up and not divided by N) fails its own test,
+//!   which prints the end-of-run report's line on the shader that made the light.
 //!
 //! A test program of its own, apart from tests/workbook/: each test puts its homework in `examples/` for as
 //! long as it runs, and cargo runs its test programs one after another, so no other test sees the file. The
@@ -16,6 +18,10 @@ use std::process::{Command, Output};
 
 /// The API page's homework, as the page shows it.
 const HOMEWORK: &str = include_str!("../docs/homework_glossy.rs");
+
+/// The line of the homework that averages its rays, and the naive sum a student writes instead.
+const MEAN: &str = "sum * self.tint / kept as f32";
+const NAIVE_SUM: &str = "sum * self.tint";
 
 /// A homework file in `examples/`, removed when dropped.
 struct Homework {
@@ -75,4 +81,18 @@ fn a_homework_without_a_doc_comment_builds_without_a_warning_and_passes_its_own_
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("warning"), "{stderr}");
     assert!(String::from_utf8_lossy(&out.stdout).contains("test tests::renders_without_a_warning ... ok"));
+}
+
+#[test]
+fn the_naive_sum_fails_the_homeworks_own_test_naming_the_shader() {
+    assert_eq!(HOMEWORK.matches(MEAN).count(), 1);
+    let homework = Homework::new("zz_student_naive_sum", &HOMEWORK.replace(MEAN, NAIVE_SUM));
+    let out = homework.test();
+    assert!(!out.status.success(), "{}", printed(&out));
+    let text = printed(&out);
+    assert!(text.contains("test tests::renders_without_a_warning ... FAILED"), "{text}");
+    assert!(
+        text.contains("adds up N rays without dividing by N") && text.contains("glossy ball (TintedGlossy)"),
+        "{text}"
+    );
 }
