@@ -360,6 +360,35 @@ fn the_naive_sum_of_n_rays_is_named_and_the_mean_is_not_in_both_readings() {
     }
 }
 
+/// The summary line an example prints says how many rays the branching bound shared (not traced, given their
+/// siblings' mean colour), the number the render counted, and says nothing of it when there are none: a scene
+/// file of a glossy floor under a glossy ceiling, 2 deep (every ray within its budget) and 12 deep.
+#[test]
+fn the_summary_line_says_how_many_rays_the_bound_shared_when_any() {
+    use crate::common::{examples::scene_file, parse, root, run_example, temp_file};
+    let output = root().join("target/branching-test/glossy.png");
+    for depth in [2, 12] {
+        let scene = format!(
+            "GlobalSettings {{\n frameWidth 64\n frameHeight 48\n maxTraceDepth {depth}\n}}\n\
+             Camera {{\n position (0, 0, 0)\n pitch -10\n}}\n\
+             Plane below {{\n y -5\n}}\nPlane above {{\n y 5\n}}\n\
+             Refl glossy {{\n glossiness 0.9\n numSamples 8\n}}\n\
+             Node {{\n geometry below\n shader glossy\n}}\nNode {{\n geometry above\n shader glossy\n}}\n"
+        );
+        let file = temp_file("branching-test", &format!("glossy-{depth}.qdmg"), &scene);
+        let args = [file.to_str().unwrap(), "--spp", "1"];
+        let (_, stats) = parse::<scene_file::Options>(&args).render().unwrap();
+        let shared = stats.counters.shared_rays;
+        assert_eq!(shared > 0, depth > 2, "depth {depth}: {shared} rays shared");
+        let out = run_example("scene_file", &[&args[..], &["-o", output.to_str().unwrap()]].concat());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let summary = String::from_utf8_lossy(&out.stdout);
+        let said = format!(" M rays, {shared} more shared by the branching bound, ");
+        assert_eq!(summary.contains(&said), depth > 2, "depth {depth}: {summary}");
+        assert_eq!(summary.contains("shared"), depth > 2, "depth {depth}: {summary}");
+    }
+}
+
 /// The API page's picture of the naive sum, docs/naive-sum.png, is the page's homework (docs/homework_glossy.rs)
 /// rendered as it is, its glossy ball the mean of 8 rays, beside the same ball adding up its 8 rays without
 /// dividing by 8, which washes it out to white: 200x150 each, 4 samples a pixel, captioned. The picture must be

@@ -241,8 +241,13 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             SpectralPlan::White => String::new(),
             plan => format!(" ({plan})"),
         };
+        // The rays the branching bound did not trace (they took their siblings' mean colour), when there are any.
+        let shared = match stats.counters.shared_rays {
+            0 => String::new(),
+            n => format!(", {n} more shared by the branching bound"),
+        };
         print_stdout(&format!(
-            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays, {:.2} Mrays/s -> {}\n",
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays{shared}, {:.2} Mrays/s -> {}\n",
             name,
             settings.width,
             settings.height,
