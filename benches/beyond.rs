@@ -1331,7 +1331,9 @@ fn layer_pruning(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut Str
 }
 
 /// The API page's glossy mirror (docs/homework-api.md, "Randomness in a shader"): `n` rays in the glossy
-/// cone, each passed the tint's full factor.
+/// cone, each passed the tint's full factor. (The file is a whole homework: its `main` and its own test are
+/// not this benchmark's.)
+#[allow(dead_code, unused_imports)]
 #[path = "../docs/homework_glossy.rs"]
 mod homework_glossy;
 

@@ -42,6 +42,10 @@
 //! An example, or a homework, starts with `use lecture6::prelude::*;`, which brings in everything it needs to
 //! build a scene and run it (see [`app::cli::Example`] for a whole example in 25 lines).
 
+// A public item without a doc comment is warned about: students learn the library from its API pages. The
+// library's own lint, not the package's (Cargo.toml's `[lints]`), which would hold a student's examples to it.
+#![warn(missing_docs)]
+
 pub mod app;
 pub mod files;
 pub mod instruments;
@@ -53,7 +57,7 @@ pub use lesson::math::Vector;
 
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
-    pub use crate::app::cli::{Example, run};
+    pub use crate::app::cli::{Example, render_for_test, run};
     pub use crate::app::scenes;
     pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
     pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};

@@ -37,6 +37,16 @@
 //! and 1 below it: at most `N * 2^SPLIT_DEPTH` rays per camera ray at any depth (at depth `SPLIT_DEPTH + 1`
 //! and below), a ray count linear in the depth limit.
 //!
+//! The energy check. A shading point also keeps what its shader had to make its colour of (`Income`): the
+//! brightest colour, channel by channel, that one of its rays brought back, how many rays it traced, and
+//! the light its light loops gathered ([`crate::lesson::light::light_loop`]: irradiance and highlights). A
+//! shader that returns more than the brightest ray plus that light, in some channel, made light: a mean of
+//! rays, a mirror's or a glass's weighted rays, a diffuse colour times the light, a Layered blend of these
+//! never can. Only the hits whose shader traced two rays or more are weighed: the mistake it catches is the
+//! naive sum of N rays (each at full weight, added up and not divided by N), and a shader of no rays (a
+//! flat colour, one that glows) or of one (a mirror) is left alone. [`Problems::report`] names a node whose
+//! shader gains on at least 1% of those hits.
+//!
 //! Nor does it cost the workbook's own nodes anything: where the renderer knows a node's shape and every
 //! shader of it ([`crate::lesson::dispatch`]), the point needs no budget (those shaders stay within theirs)
 //! and no check for rays that find their own surface (those shapes describe their hits exactly and those
@@ -44,13 +54,14 @@
 //! skip the bookkeeping, and only what they bring back NaN or infinite is noted (`Shading`).
 
 use crate::lesson::color::Color;
-use crate::lesson::diagnostics::{Problems, Source};
+use crate::lesson::diagnostics::{Gains, Problems, Source};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::Node;
 use crate::lesson::prepared::Preparation;
-use crate::lesson::ray::Ray;
+use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::scene::TraceContext;
+use glam::Vec3A;
 use std::collections::BTreeMap;
 
 /// The deepest ray whose shading point may still pass its rays twice its own weight; a deeper one passes
@@ -83,6 +94,11 @@ const SQRT_EPSILON: f32 = 3.452_669_8e-4;
 /// twice that is allowed, so that such a split is never taken for an average.
 const ROUNDING: f32 = 1.0 + 4.0 * f32::EPSILON;
 
+/// The least factor by which a shader's colour exceeds its brightest ray plus its light for the energy check
+/// to count the hit: one 8-bit level at white, 1 + 1/255. Rounding makes a mean of equal colours exceed each
+/// by a few units in the last place, which is far below it; a naive sum of N rays exceeds it by up to N.
+const VISIBLE_GAIN: f32 = 1.0 + 1.0 / 255.0;
+
 /// What `raytrace` keeps of the shaders running, innermost first: the shading point whose rays share a
 /// budget, whether the innermost shader is the workbook's own, and whether a ray came back NaN or infinite.
 #[derive(Clone, Copy)]
@@ -99,14 +115,27 @@ pub(crate) struct Shading<'a> {
     /// The least depth a ray of the innermost shading point may have: one more than the ray it shades (0 for
     /// the camera's). A ray made with `Ray::new` (depth 0) is traced at this depth instead.
     pub(crate) least_depth: u32,
+    /// How many rays the shader of the innermost shading point traced, or was given their siblings' mean
+    /// colour, over all its layers (the energy check weighs it from two on).
+    rays: u32,
 }
 
-/// The shading point of a shader that may branch past its budget: its rays ([`Siblings`]) and where it is
-/// ([`Origin`]).
+/// The shading point of a shader that may branch past its budget: its rays ([`Siblings`]), what they and its
+/// light loops brought ([`Income`]) and where it is ([`Origin`]).
 #[derive(Clone, Copy)]
 pub(crate) struct ShadingPoint<'a> {
     siblings: Siblings,
+    income: Income,
     origin: Origin<'a>,
+}
+
+/// What the shader of a shading point had to make its colour of, over all its layers (the energy check).
+#[derive(Clone, Copy, Default)]
+struct Income {
+    /// The brightest colour, channel by channel, that one of its rays brought back.
+    brightest: Color,
+    /// The light its light loops gathered.
+    light: Color,
 }
 
 /// The rays of one shading point: what they may still weigh and what they brought back.
@@ -131,6 +160,9 @@ struct Origin<'a> {
     near: f32,
     /// The surface's own normal at the hit.
     normal: Vector,
+    /// The hit point, and its error bound (where [`Ray::spawn`] starts a ray).
+    ip: Vector,
+    error: f32,
 }
 
 impl Siblings {
@@ -147,11 +179,13 @@ impl<'a> Shading<'a> {
         Shading {
             point: ShadingPoint {
                 siblings: Siblings::new(0, 1.0),
-                origin: Origin { node: None, near: 0.0, normal: Vector::ZERO },
+                income: Income::default(),
+                origin: Origin { node: None, near: 0.0, normal: Vector::ZERO, ip: Vector::ZERO, error: 0.0 },
             },
             workbook: true,
             non_finite_below: false,
             least_depth: 0,
+            rays: 0,
         }
     }
 
@@ -167,6 +201,7 @@ impl<'a> Shading<'a> {
         if s.traced == 0 || s.remaining >= 0.0 {
             return None;
         }
+        self.rays += 1;
         Some(s.sum / s.traced as f32)
     }
 
@@ -177,9 +212,20 @@ impl<'a> Shading<'a> {
             let s = &mut self.point.siblings;
             s.traced += 1;
             s.sum += color;
+            let income = &mut self.point.income;
+            income.brightest = Color(income.brightest.0.max(color.0));
+            self.rays += 1;
         }
         if !color.is_finite() {
             self.non_finite_below = true;
+        }
+    }
+
+    /// A light loop of the innermost shader gathered `light` (its irradiance and highlights).
+    #[inline(always)]
+    pub(crate) fn lit(&mut self, light: Color) {
+        if !self.workbook {
+            self.point.income.light += light;
         }
     }
 
@@ -206,10 +252,13 @@ impl<'a> ShadingPoint<'a> {
     fn new(node: &'a Node, ray: &Ray, info: &IntersectionInfo) -> ShadingPoint<'a> {
         ShadingPoint {
             siblings: Siblings::new(ray.depth, ray.weight),
+            income: Income::default(),
             origin: Origin {
                 node: Some(node),
                 near: SQRT_EPSILON * max_abs(info.ip).max(info.error),
                 normal: info.geometric_normal,
+                ip: info.ip,
+                error: info.error,
             },
         }
     }
@@ -229,6 +278,16 @@ impl<'a> ShadingPoint<'a> {
         origin.node.is_some_and(|n| std::ptr::eq(n, node))
             && hit.distance <= origin.near
             && ray.dir.dot(origin.normal) * ray.dir.dot(hit.geometric_normal) > 0.0
+    }
+}
+
+impl Origin<'_> {
+    /// Whether `ray` starts nearer the surface than [`Ray::spawn`] starts a ray in its direction (at the hit
+    /// point itself: `Ray::new(info.ip, dir)`): then a ray that finds the surface again is the shader's
+    /// mistake, not the geometry's.
+    fn starts_on_the_surface(&self, ray: &Ray) -> bool {
+        let spawned = spawn_point(self.ip, self.normal, self.error, ray.dir);
+        (ray.start - self.ip).dot(self.normal).abs() < (spawned - self.ip).dot(self.normal).abs()
     }
 }
 
@@ -255,8 +314,11 @@ impl<'a> TraceContext<'a> {
         if !self.shading.workbook && self.shading.point.finds_its_own_surface(node, ray, info) {
             // Not followed: shaded, it would leave the same surface from the same point again, down to the
             // depth limit (a shader's ray started without an offset). Black shows the mistake, and the
-            // end-of-run report names it.
-            self.note(i, |p| &mut p.self_hits);
+            // end-of-run report names it: the shader's, if the ray started on the hit point, else the geometry's.
+            match self.shading.point.origin.starts_on_the_surface(ray) {
+                true => self.note(i, |p| &mut p.unspawned_rays),
+                false => self.note(i, |p| &mut p.self_hits),
+            }
             return Color::BLACK;
         }
         let outer = std::mem::replace(
@@ -266,6 +328,7 @@ impl<'a> TraceContext<'a> {
                 workbook: false,
                 non_finite_below: false,
                 least_depth: ray.depth + 1,
+                rays: 0,
             },
         );
         let color = match scene.preparation() {
@@ -273,8 +336,33 @@ impl<'a> TraceContext<'a> {
             _ => node.shader.shade(ray, info, self),
         };
         self.note_non_finite(i, color);
+        if self.shading.rays >= 2 && color.is_finite() {
+            self.weigh_energy(i, color);
+        }
         self.shading = outer;
         color
+    }
+
+    /// The energy check of node `i`'s hit, whose shader traced two rays or more and gave `color` (finite):
+    /// counted, and counted as a gain if some channel exceeds the brightest ray plus the light by
+    /// [`VISIBLE_GAIN`]. A channel that received nothing is left out: light the shader makes of its own (a
+    /// glow) is no gain of its rays. Kept out of `shade_hit`.
+    #[inline(never)]
+    fn weigh_energy(&mut self, i: usize, color: Color) {
+        let income = self.shading.point.income;
+        let bound = (income.brightest + income.light).0;
+        let gain = Vec3A::select(bound.cmpgt(Vec3A::ZERO), color.0 / bound, Vec3A::ZERO).max_element();
+        // By node index, not in a map: a lookup per weighed hit was 1% of the glossy example's instructions.
+        let nodes = &mut self.counters.problems.energy_gains;
+        if nodes.len() <= i {
+            nodes.resize(i + 1, Gains::default());
+        }
+        let gains = &mut nodes[i];
+        gains.hits += 1;
+        if gain > VISIBLE_GAIN {
+            gains.gained += 1;
+            gains.largest = gains.largest.max(gain);
+        }
     }
 
     /// The colour of the hit `info` of `ray` on node `i`, one of the workbook's own shapes under the

@@ -5,9 +5,12 @@
 //! ([`TraceContext::raytrace`](crate::lesson::scene::TraceContext::raytrace)), at the cost of a few comparisons per ray:
 //! - a colour that came back NaN or infinite, at the deepest shading point that made it (the first one
 //!   whose rays all came back finite), or from the environment;
-//! - a ray that found the surface it left again, right where it left it (a hit point off its surface by
-//!   more than its error bound: the same node, closer than `sqrt(EPSILON)` times the point's coordinates,
-//!   and crossed from the side the ray left, see [`crate::lesson::branching`]);
+//! - a ray that found the surface it left again, right where it left it (the same node, closer than
+//!   `sqrt(EPSILON)` times the point's coordinates, and crossed from the side the ray left, see
+//!   [`crate::lesson::branching`]): the shader's mistake if the ray started on the hit point itself (not
+//!   made with `Ray::spawn`), else the geometry's (a hit point off its surface by more than its error bound);
+//! - a shader that returned more light than its rays and its light loop brought it (the energy check of
+//!   [`crate::lesson::branching`]: a sum of N rays not divided by N);
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`](crate::lesson::node::Node::surface));
 //!
 //! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
@@ -42,12 +45,19 @@ pub enum Source {
 }
 
 /// What `raytrace` saw go wrong, counted by node (indices into `Scene::nodes`). Empty in a sound render.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Problems {
     /// Colours that came back NaN or infinite, by where they were first made.
     pub non_finite: BTreeMap<Source, u64>,
-    /// Rays that hit the surface they left, right where they left it, by node.
+    /// Rays started off the surface (as `Ray::spawn` starts them) that hit the surface they left, right where
+    /// they left it, by node: its hit point lies off the surface.
     pub self_hits: BTreeMap<usize, u64>,
+    /// Rays a shader started on the hit point itself (not off the surface, as `Ray::spawn` does) that hit the
+    /// surface they left, right where they left it, by node.
+    pub unspawned_rays: BTreeMap<usize, u64>,
+    /// The energy check, by node index (up to the last node weighed): the hits whose shader traced two rays
+    /// or more, and those where it returned more than its brightest ray plus its light loop's light.
+    pub energy_gains: Vec<Gains>,
     /// Hits whose normal, as the geometry returned it, is not of unit length (or is NaN), by node.
     pub bad_normals: BTreeMap<usize, u64>,
     /// Rays a shader traced with a depth below its own ray's (made with `Ray::new`, which starts at depth 0),
@@ -56,6 +66,17 @@ pub struct Problems {
     /// The nodes whose shader gave rays of different wavelengths different colours though it says it does not
     /// depend on them ([`undeclared_dispersion`], after the render).
     pub undeclared_dispersion: BTreeSet<usize>,
+}
+
+/// The energy check of one node ([`Problems::energy_gains`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Gains {
+    /// Hits whose shader traced two rays or more.
+    pub hits: u64,
+    /// Those where it returned, in some channel, more than its brightest ray plus its light loop's light.
+    pub gained: u64,
+    /// The largest factor by which it did.
+    pub largest: f32,
 }
 
 impl Problems {
@@ -71,6 +92,14 @@ impl Problems {
         }
         merge(&mut self.non_finite, &other.non_finite);
         merge(&mut self.self_hits, &other.self_hits);
+        merge(&mut self.unspawned_rays, &other.unspawned_rays);
+        if self.energy_gains.len() < other.energy_gains.len() {
+            self.energy_gains.resize(other.energy_gains.len(), Gains::default());
+        }
+        for (mine, g) in self.energy_gains.iter_mut().zip(&other.energy_gains) {
+            (mine.hits, mine.gained, mine.largest) =
+                (mine.hits + g.hits, mine.gained + g.gained, mine.largest.max(g.largest));
+        }
         merge(&mut self.bad_normals, &other.bad_normals);
         merge(&mut self.restarted_depth, &other.restarted_depth);
         self.undeclared_dispersion.extend(&other.undeclared_dispersion);
@@ -100,15 +129,6 @@ impl Problems {
                 counters.non_finite_samples
             ));
         }
-        if !problems.self_hits.is_empty() {
-            lines.push(format!(
-                "rays hit the surface they left, right where they left it, and were not followed (black; \
-                 self-intersection): a shader's ray must start off the surface, made with ray.spawn(info, dir, \
-                 attenuation), not Ray::new(info.ip, dir); a geometry's hit point must lie on the surface, or \
-                 its error bound be widened with IntersectionInfo::with_error: {}",
-                listed(&problems.self_hits, |&i| node(i))
-            ));
-        }
         if !problems.restarted_depth.is_empty() {
             let sources = listed(&problems.restarted_depth, |s| match *s {
                 Source::Node(i) => format!("the shader of {}", node(i)),
@@ -120,11 +140,26 @@ impl Problems {
                  ray.spawn(info, dir, attenuation), which is one level deeper and off the surface: {sources}"
             ));
         }
-        if !problems.bad_normals.is_empty() {
-            lines.push(format!(
-                "a geometry returned a normal that is not of unit length, or NaN (normalise it): {}",
-                listed(&problems.bad_normals, |&i| node(i))
-            ));
+        let gains = problems.energy_gains.iter().enumerate().filter(|(_, g)| g.gained > 0 && 100 * g.gained >= g.hits);
+        let gaining: BTreeMap<usize, u64> = gains.map(|(i, g)| (i, g.gained)).collect();
+        for (counts, what, energy) in [
+            (&problems.unspawned_rays, UNSPAWNED_RAYS, false),
+            (&problems.self_hits, SELF_HITS, false),
+            (&gaining, ENERGY_GAINS, true),
+            (&problems.bad_normals, BAD_NORMALS, false),
+        ] {
+            if !counts.is_empty() {
+                lines.push(format!(
+                    "{what}: {}",
+                    listed(counts, |&i| match problems.energy_gains.get(i).filter(|_| energy) {
+                        Some(g) => {
+                            let share = 100.0 * g.gained as f64 / g.hits as f64;
+                            format!("{}, up to {:.2} times, on {share:.0}% of its hits", node(i), g.largest)
+                        }
+                        None => node(i),
+                    })
+                ));
+            }
         }
         if !problems.undeclared_dispersion.is_empty() {
             let nodes: Vec<String> = problems.undeclared_dispersion.iter().map(|&i| node(i)).collect();
@@ -147,6 +182,24 @@ impl Problems {
         lines
     }
 }
+
+/// The report's line on rays a shader started on the hit point itself that found their own surface.
+const UNSPAWNED_RAYS: &str = "rays a shader started on the hit point itself found the surface they left, right where \
+     they left it, and were not followed (black; self-intersection): make them with ray.spawn(info, dir, \
+     attenuation), which starts them off the surface, not Ray::new(info.ip, dir)";
+
+/// The report's line on rays started off the surface that found it again: the geometry's hit point is off it.
+const SELF_HITS: &str = "rays started off the surface found it again, right where they left it, and were not \
+     followed (black; self-intersection): the geometry's hit point lies off its surface by more than its error \
+     bound; put it back on the surface, or widen the bound with IntersectionInfo::with_error";
+
+/// The report's line on shaders that return more light than their rays and light loop brought them.
+const ENERGY_GAINS: &str = "a shader returned more light than its brightest ray and its light loop brought it, in \
+     some channel, on 1% of its hits or more: most likely it adds up N rays without dividing by N; return their \
+     mean (the sum over N), each ray still made with the full attenuation";
+
+/// The report's line on normals that are not of unit length.
+const BAD_NORMALS: &str = "a geometry returned a normal that is not of unit length, or NaN (normalise it)";
 
 /// How many probe rays across, and how many down, [`undeclared_dispersion`] aims over the picture.
 pub const PROBE_RAYS: u32 = 16;

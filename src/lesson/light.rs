@@ -98,6 +98,8 @@ pub fn light_loop(
         irradiance += caustic;
         ctx.observe(|o| o.light_found(LightTerm::Photons, caustic));
     }
+    // What the shader has to make its colour of (the end-of-run report's energy check).
+    ctx.shading.lit(irradiance + highlights);
     Lighting { irradiance, highlights }
 }
 

@@ -342,7 +342,7 @@ impl Scene {
 }
 
 /// Rays traced, for the summary line and for tests that count them.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Counters {
     /// Rays passed to `raytrace`, by depth (the last entry counts every depth from there on).
     pub rays_by_depth: [u64; 16],

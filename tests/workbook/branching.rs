@@ -10,9 +10,11 @@ use lecture6::lesson::sampling::DiscSampler;
 use lecture6::prelude::*;
 
 /// The API page's glossy mirror (docs/homework-api.md, "Randomness in a shader"), the file
-/// docs/homework_glossy.rs: each ray passed the tint's full factor.
+/// docs/homework_glossy.rs: each ray passed the tint's full factor. The file is a whole homework: its own
+/// test (the page's recipe, `homework_glossy::tests`) runs here too.
+#[allow(dead_code)] // its `main` is a homework binary's
 #[path = "../../docs/homework_glossy.rs"]
-mod homework_glossy;
+pub mod homework_glossy;
 
 use homework_glossy::TintedGlossy;
 
@@ -224,26 +226,57 @@ fn a_students_average_on_the_workbooks_own_shape_is_bounded_too() {
     }
 }
 
-/// The student's mirror with its rays started on the surface, not off it (`Ray { start: info.ip, .. }`, as
-/// `Ray::new(info.ip, dir)` would, but keeping the depth): a ray that finds the surface it left again.
+/// The API page's glossy mirror with one mistake a student makes: `no_offset`, its rays started on the hit
+/// point itself (`Ray { start: info.ip, .. }`, as `Ray::new(info.ip, dir)` would, but keeping the depth), or
+/// `no_division`, its rays added up and not divided by their number (the naive sum).
+fn mistaken_glossy(
+    glossy: &TintedGlossy,
+    (no_offset, no_division): (bool, bool),
+    ray: &Ray,
+    info: &IntersectionInfo,
+    ctx: &mut TraceContext,
+) -> Color {
+    let normal = faceforward(info.normal, ray.dir);
+    let cone = lecture6::lesson::shader::GlossyCone::new(ray.dir, normal, glossy.glossiness);
+    let mut sum = Color::BLACK;
+    for _ in 0..glossy.n {
+        let point = lecture6::lesson::sampling::random_unit_disc_point(&mut ctx.rng);
+        if let Some(dir) = cone.direction(point) {
+            let spawned = ray.spawn(info, dir, glossy.tint.max_channel());
+            let start = if no_offset { info.ip } else { spawned.start };
+            sum += ctx.raytrace(&Ray { start, ..spawned });
+        }
+    }
+    if no_division { sum * glossy.tint } else { sum * glossy.tint / glossy.n as f32 }
+}
+
+/// The student's mirror with its rays started on the surface, not off it.
 struct NoOffset(TintedGlossy);
 
 impl Shader for NoOffset {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let on_surface = IntersectionInfo { error: 0.0, ..*info };
-        let shader = &self.0;
-        let normal = faceforward(info.normal, ray.dir);
-        let cone = lecture6::lesson::shader::GlossyCone::new(ray.dir, normal, shader.glossiness);
-        let mut sum = Color::BLACK;
-        for _ in 0..shader.n {
-            let point = lecture6::lesson::sampling::random_unit_disc_point(&mut ctx.rng);
-            if let Some(dir) = cone.direction(point) {
-                let spawned = ray.spawn(&on_surface, dir, shader.tint.max_channel());
-                sum += ctx.raytrace(&Ray { start: info.ip, ..spawned });
-            }
-        }
-        sum * shader.tint / shader.n as f32
+        mistaken_glossy(&self.0, (true, false), ray, info, ctx)
     }
+}
+
+/// The student's mirror adding up its rays, each at the full weight, without dividing by their number.
+pub struct NaiveSum(pub TintedGlossy);
+
+impl Shader for NaiveSum {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        mistaken_glossy(&self.0, (false, true), ray, info, ctx)
+    }
+}
+
+/// A glossy ball on a glossy floor (a sphere too, large), each made by `shader`, under the stripes, in the
+/// reading `steps`: curved surfaces, whose hit points lie on either side of the surface by a rounding.
+fn ball_on_floor(shader: &dyn Fn() -> Arc<dyn Shader>, steps: Steps) -> Scene {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 10.0, -40.0), Vector::ZERO, 50.0));
+    scene.add(Node::new(Sphere::new(Vector::ZERO, 10.0), shader()));
+    scene.add(Node::new(Sphere::new(Vector::new(0.0, -1010.0, 0.0), 1000.0), shader()));
+    scene.environment = Some(Arc::new(Stripes));
+    (scene.max_depth, scene.steps) = (DEPTH, steps);
+    scene
 }
 
 /// A shader whose rays start on the surface finishes, in either reading, with no more than 3 times the rays
@@ -252,19 +285,9 @@ impl Shader for NoOffset {
 #[test]
 fn a_shader_without_an_offset_finishes_and_is_named_in_both_readings() {
     let glossy = || TintedGlossy { tint: TINT, glossiness: GLOSSINESS, n: N };
-    // A glossy ball on a glossy floor, under the stripes: curved surfaces, whose hit points lie on either
-    // side of the surface by a rounding.
-    let scene = |shader: &dyn Fn() -> Arc<dyn Shader>, steps| {
-        let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 10.0, -40.0), Vector::ZERO, 50.0));
-        scene.add(Node::new(Sphere::new(Vector::ZERO, 10.0), shader()));
-        scene.add(Node::new(Sphere::new(Vector::new(0.0, -1010.0, 0.0), 1000.0), shader()));
-        scene.environment = Some(Arc::new(Stripes));
-        (scene.max_depth, scene.steps) = (DEPTH, steps);
-        scene
-    };
     for steps in [Steps::ALL, Steps::SLIDES] {
-        let right = scene(&|| Arc::new(glossy()), steps);
-        let wrong = scene(&|| Arc::new(NoOffset(glossy())), steps);
+        let right = ball_on_floor(&|| Arc::new(glossy()), steps);
+        let wrong = ball_on_floor(&|| Arc::new(NoOffset(glossy())), steps);
         let (_, right) = render(&right, &settings(1)).unwrap();
         let (_, wrong) = render(&wrong, &settings(1)).unwrap();
         let (a, b) = (right.counters.total(), wrong.counters.total());
@@ -272,7 +295,9 @@ fn a_shader_without_an_offset_finishes_and_is_named_in_both_readings() {
         let line = wrong.warnings.iter().find(|l| l.contains("self-intersection"));
         let line =
             line.unwrap_or_else(|| panic!("{steps:?}: no self-hit named ({a} and {b} rays): {:?}", wrong.warnings));
-        assert!(line.contains("NoOffset") && line.contains("ray.spawn"), "{line}");
+        // The advice is the shader's fix, not the geometry's.
+        assert!(line.contains("NoOffset") && line.contains("ray.spawn") && !line.contains("with_error"), "{line}");
+        assert_eq!(wrong.warnings.len(), 1, "{:?}", wrong.warnings);
         assert!(right.warnings.is_empty(), "{:?}", right.warnings);
     }
 }
@@ -307,6 +332,158 @@ fn a_ray_made_with_ray_new_cannot_restart_the_depth_in_either_reading() {
             let line = stats.warnings.iter().find(|l| l.contains("Ray::new starts at depth 0"));
             let line = line.unwrap_or_else(|| panic!("{steps:?}: not named: {:?}", stats.warnings));
             assert!(line.contains("RestartingMirror") && line.contains("ray.spawn"), "{line}");
+        }
+    }
+}
+
+/// The naive sum of N rays (each at the full weight, added up, not divided by N) is named by the end-of-run
+/// report, with the factor by which it gains (at most N, since each ray brings at most the brightest's
+/// colour; N where all its rays see the same stripe), for N = 2, 4 and 8 and a white tint, in either
+/// reading; the same mirror done right (the rays' mean) gives no warning.
+#[test]
+fn the_naive_sum_of_n_rays_is_named_and_the_mean_is_not_in_both_readings() {
+    for n in [2, 4, 8] {
+        let glossy = || TintedGlossy { tint: Color::WHITE, glossiness: GLOSSINESS, n };
+        for steps in [Steps::ALL, Steps::SLIDES] {
+            let (_, right) = render(&ball_on_floor(&|| Arc::new(glossy()), steps), &settings(1)).unwrap();
+            assert!(right.warnings.is_empty(), "N = {n}, {steps:?}: {:?}", right.warnings);
+            let (_, wrong) = render(&ball_on_floor(&|| Arc::new(NaiveSum(glossy())), steps), &settings(1)).unwrap();
+            let line = wrong.warnings.iter().find(|l| l.contains("adds up N rays without dividing by N"));
+            let line = line.unwrap_or_else(|| panic!("N = {n}, {steps:?}: not named: {:?}", wrong.warnings));
+            assert!(line.contains("Sphere #0 (NaiveSum)") && line.contains("Sphere #1 (NaiveSum)"), "{line}");
+            let ball = &wrong.counters.problems.energy_gains[0];
+            assert!(100 * ball.gained >= ball.hits, "N = {n}, {steps:?}: {ball:?}");
+            let n = n as f32;
+            assert!(ball.largest > 0.99 * n && ball.largest < 1.001 * n, "N = {n}, {steps:?}: {ball:?}");
+            assert!(line.contains(&format!("up to {:.2} times", ball.largest)), "{line}");
+        }
+    }
+}
+
+/// The summary line an example prints says how many rays the branching bound shared (not traced, given their
+/// siblings' mean colour), the number the render counted, and says nothing of it when there are none: a scene
+/// file of a glossy floor under a glossy ceiling, 2 deep (every ray within its budget) and 12 deep.
+#[test]
+fn the_summary_line_says_how_many_rays_the_bound_shared_when_any() {
+    use crate::common::{examples::scene_file, parse, root, run_example, temp_file};
+    let output = root().join("target/branching-test/glossy.png");
+    for depth in [2, 12] {
+        let scene = format!(
+            "GlobalSettings {{\n frameWidth 64\n frameHeight 48\n maxTraceDepth {depth}\n}}\n\
+             Camera {{\n position (0, 0, 0)\n pitch -10\n}}\n\
+             Plane below {{\n y -5\n}}\nPlane above {{\n y 5\n}}\n\
+             Refl glossy {{\n glossiness 0.9\n numSamples 8\n}}\n\
+             Node {{\n geometry below\n shader glossy\n}}\nNode {{\n geometry above\n shader glossy\n}}\n"
+        );
+        let file = temp_file("branching-test", &format!("glossy-{depth}.qdmg"), &scene);
+        let args = [file.to_str().unwrap(), "--spp", "1"];
+        let (_, stats) = parse::<scene_file::Options>(&args).render().unwrap();
+        let shared = stats.counters.shared_rays;
+        assert_eq!(shared > 0, depth > 2, "depth {depth}: {shared} rays shared");
+        let out = run_example("scene_file", &[&args[..], &["-o", output.to_str().unwrap()]].concat());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let summary = String::from_utf8_lossy(&out.stdout);
+        let said = format!(" M rays, {shared} more shared by the branching bound, ");
+        assert_eq!(summary.contains(&said), depth > 2, "depth {depth}: {summary}");
+        assert_eq!(summary.contains("shared"), depth > 2, "depth {depth}: {summary}");
+    }
+}
+
+/// The API page's picture of the naive sum, docs/naive-sum.png, is the page's homework (docs/homework_glossy.rs)
+/// rendered as it is, its glossy ball the mean of 8 rays, beside the same ball adding up its 8 rays without
+/// dividing by 8, which washes it out to white: 200x150 each, 4 samples a pixel, captioned. The picture must be
+/// this render within the regression tolerance; `UPDATE_EXPECTED=1` writes it.
+#[test]
+fn the_pages_picture_of_the_naive_sum_is_what_the_homework_renders() {
+    use lecture6::instruments::compare::difference;
+    use lecture6::instruments::side_by_side::{Panel, compose};
+    let (scene, settings) =
+        crate::common::parse::<homework_glossy::Options>(&["--width", "200", "--height", "150"]).prepare().unwrap();
+    let (right, right_stats) = render(&scene, &settings).unwrap();
+    assert!(right_stats.warnings.is_empty(), "{:?}", right_stats.warnings);
+    let mut naive = scene.clone();
+    let ball = naive.nodes.iter_mut().find(|n| n.name.as_deref() == Some("glossy ball")).unwrap();
+    let glossy = (&*ball.shader as &dyn std::any::Any).downcast_ref::<TintedGlossy>().unwrap();
+    let (tint, glossiness, n) = (glossy.tint, glossy.glossiness, glossy.n);
+    ball.shader = Arc::new(NaiveSum(TintedGlossy { tint, glossiness, n }));
+    let (wrong, wrong_stats) = render(&naive, &settings).unwrap();
+    assert!(wrong_stats.warnings.iter().any(|l| l.contains("glossy ball (NaiveSum)")), "{:?}", wrong_stats.warnings);
+    // The ball is what changes, and it is brighter: the picture shows the sum's gain.
+    let mean = |f: &Frame| f.pixels.iter().map(|c| c.luminance()).sum::<f32>() / f.pixels.len() as f32;
+    assert!(mean(&wrong) > 1.2 * mean(&right), "{} against {}", mean(&wrong), mean(&right));
+    let picture = compose(&[
+        Panel { image: right.to_rgb8(), caption: format!("the mean of {n} rays: sum * tint / kept") },
+        Panel { image: wrong.to_rgb8(), caption: format!("the naive sum: sum * tint, {n} rays not divided by {n}") },
+    ])
+    .unwrap();
+    let path = crate::common::root().join("docs/naive-sum.png");
+    if std::env::var_os("UPDATE_EXPECTED").is_some_and(|v| v == "1") {
+        picture.save(&path).unwrap();
+        return;
+    }
+    let page = image::open(&path).unwrap_or_else(|e| panic!("{}: {e} (UPDATE_EXPECTED=1 writes it)", path.display()));
+    let d = difference(&picture, &page.to_rgb8()).unwrap();
+    assert!(d.within_regression_tolerance(), "docs/naive-sum.png is not the homework's render: {d}");
+}
+
+/// A clear coat as the issue's student wrote it: a glossy base of `n` rays averaged, under a mirror ray weighted
+/// by Schlick's Fresnel factor (0.04 head-on): two unlike rays, each given the factor its colour is multiplied
+/// by.
+struct ClearCoat(TintedGlossy);
+
+impl Shader for ClearCoat {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let normal = faceforward(info.normal, ray.dir);
+        let fresnel = 0.04 + 0.96 * (1.0 + ray.dir.dot(normal)).powi(5);
+        let mirror = ctx.raytrace(&ray.spawn(info, reflect(ray.dir, normal), fresnel));
+        let base = Ray { weight: ray.weight * (1.0 - fresnel), ..*ray };
+        mirror * fresnel + self.0.shade(&base, info, ctx) * (1.0 - fresnel)
+    }
+}
+
+/// A shader that glows: a colour of its own, brighter than white, and no ray or light.
+struct Glow;
+
+impl Shader for Glow {
+    fn shade(&self, _: &Ray, _: &IntersectionInfo, _: &mut TraceContext) -> Color {
+        Color::new(3.0, 2.0, 1.0)
+    }
+}
+
+/// The energy check leaves correct shaders alone, in either reading: the clear coat (a Fresnel-weighted mirror
+/// ray over an N-ray glossy base), a workbook `Layered` of a matte base lit by a lamp under the student's glossy
+/// coat (its light loop's light counted, else the lit base under a coat that sees the dark stripes would gain),
+/// a shader that glows and a matte surface of albedo 2 (light from nowhere, or a texture brighter than white:
+/// no rays to weigh), on a ball over a glossy floor, lit. The ball's hits are weighed where it traces two rays.
+#[test]
+fn the_energy_check_leaves_correct_shaders_alone_in_both_readings() {
+    let glossy = || TintedGlossy { tint: TINT, glossiness: GLOSSINESS, n: 4 };
+    let coated = || {
+        let mut layered = Layered::new();
+        layered.add_layer(Lambert::new(Color::new(0.9, 0.6, 0.3)), Color::WHITE, None).add_layer(
+            glossy(),
+            Color::gray(0.5),
+            None,
+        );
+        layered
+    };
+    let shaders: [(&str, Arc<dyn Shader>, bool); 4] = [
+        ("clear coat", Arc::new(ClearCoat(glossy())), true),
+        ("lit base under a glossy coat", Arc::new(coated()), true),
+        ("glow", Arc::new(Glow), false),
+        ("albedo 2", Arc::new(Lambert::new(Color::gray(2.0))), false),
+    ];
+    for (what, shader, weighed) in shaders {
+        for steps in [Steps::ALL, Steps::SLIDES] {
+            let mut scene = ball_on_floor(&|| Arc::new(glossy()), steps);
+            scene.nodes[0].shader = shader.clone();
+            scene.ambient = Color::gray(0.2);
+            scene.lights.push(PointLight::new(Vector::new(-20.0, 40.0, -30.0), Color::WHITE, 3000.0));
+            let (_, stats) = render(&scene, &settings(1)).unwrap();
+            assert!(stats.warnings.is_empty(), "{what}, {steps:?}: {:?}", stats.warnings);
+            let ball = stats.counters.problems.energy_gains.first().copied().unwrap_or_default();
+            assert_eq!(ball.gained, 0, "{what}, {steps:?}: {ball:?}");
+            assert_eq!(ball.hits > 1000, weighed, "{what}, {steps:?}: {ball:?}");
         }
     }
 }

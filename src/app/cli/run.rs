@@ -8,9 +8,10 @@ use super::help::help_command;
 use crate::files::output::{check_output, keeps_linear_light, save_atomically};
 use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
+use crate::lesson::frame::Frame;
 use crate::lesson::image_file::ImageFile;
 use crate::lesson::input;
-use crate::lesson::render::{WORKER_STACK_SIZE, thread_pool, worker_stacks};
+use crate::lesson::render::{WORKER_STACK_SIZE, render, thread_pool, worker_stacks};
 use crate::lesson::spectral::SpectralPlan;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -104,6 +105,36 @@ fn address_space() -> Option<(u64, u64)> {
     };
     let limit = field("/proc/self/limits", "Max address space")?;
     Some((limit, field("/proc/self/status", "VmSize:")? * 1024))
+}
+
+/// A homework's own test (`cargo test --release --example hw1`, a `#[cfg(test)] mod tests` in its file):
+/// renders the example `E` with the options `args`, as its binary would but without writing anything, and
+/// returns its picture. Panics, failing the test, if the options are refused, the scene cannot be built, or
+/// the end-of-run report says anything: a NaN or infinite sample, a ray that found the surface it left, a
+/// ray made with `Ray::new` in a shader, a shader that returns more light than its rays and its light loop
+/// brought it (N rays added up and not divided by N), a normal that is not of unit length, a shader that
+/// reads the wavelength without saying so. A correct shader, of one ray or of N, passes.
+///
+/// ```no_run
+/// # use lecture6::prelude::*;
+/// # #[derive(clap::Args, Clone, Debug)]
+/// # pub struct Options {}
+/// # impl Example for Options {
+/// #     const DEFAULT_SPP: u32 = 1;
+/// #     fn scene(&self) -> Result<Scene> { Ok(Scene::new(Camera::default())) }
+/// # }
+/// let picture = render_for_test::<Options>(&["--width", "80", "--height", "60", "--spp", "1"]);
+/// assert_eq!(picture.width, 80);
+/// ```
+pub fn render_for_test<E: Example>(args: &[&str]) -> Frame {
+    let cli =
+        Cli::<E>::parse_args("homework", args).unwrap_or_else(|e| panic!("{args:?}: {}", one_line(&e.to_string())));
+    let (frame, stats) = cli
+        .prepare()
+        .and_then(|(scene, settings)| render(&scene, &settings))
+        .unwrap_or_else(|e| panic!("{args:?}: {e}"));
+    assert!(stats.warnings.is_empty(), "the end-of-run report of {args:?}:\n{}", stats.warnings.join("\n"));
+    frame
 }
 
 /// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
@@ -262,8 +293,13 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
             SpectralPlan::White => String::new(),
             plan => format!(" ({plan})"),
         };
+        // The rays the branching bound did not trace (they took their siblings' mean colour), when there are any.
+        let shared = match stats.counters.shared_rays {
+            0 => String::new(),
+            n => format!(", {n} more shared by the branching bound"),
+        };
         print_stdout(&format!(
-            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays, {:.2} Mrays/s -> {}\n",
+            "{}: {}x{}, {} spp{}{}, {:.3} s, {} thread{}, {:.2} M rays{shared}, {:.2} Mrays/s -> {}\n",
             name,
             settings.width,
             settings.height,

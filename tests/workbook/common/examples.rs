@@ -2,8 +2,9 @@
 //! the regression, determinism, stress and bad-input tests, the benchmarks and the study render the very
 //! scene a student reads in `examples/<name>.rs`. `every_example!(m)` expands `m! { name, name, ... }`.
 //!
-//! A file of the student's own in `examples/` is not in this list, so it never makes `cargo test` fail;
-//! `tests/workbook/regression.rs` checks that every example listed here exists and has its expected picture.
+//! A file of the student's own in `examples/` is not in this list: no test renders it or compares its picture
+//! (`cargo test` still compiles it, as every example); `tests/workbook/regression.rs` checks that every
+//! example listed here exists and has its expected picture.
 
 macro_rules! registry {
     ($($name:ident => $path:literal),* $(,)?) => {
