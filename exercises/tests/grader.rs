@@ -11,8 +11,11 @@ use exercises::{Face, Vector};
 use glam::Affine3A;
 use grading::{Exercise, Verdict, facts, grade, workbook};
 use lecture6::app::cli::{Cli, Example};
+use lecture6::app::limits::Limits;
 use lecture6::lesson::exercise_hooks::{Hook, answer, drawing_with_the_workbooks_own};
 use lecture6::lesson::frame::Frame;
+use std::process::{Command, Stdio};
+use std::time::Duration;
 
 /// A picture check that finds every picture as expected, so that only the facts decide.
 fn pictures_as_expected(_example: &str) -> Result<(), String> {
@@ -171,6 +174,61 @@ fn an_exercise_that_panics_fails_and_one_not_handed_out_is_skipped() {
     assert_eq!(verdicts[1], Verdict::NotHandedOut);
     assert_eq!(verdicts[2], Verdict::Failed("it panicked: index out of bounds".into()));
     assert!(!grading::all_passed(&verdicts));
+}
+
+/// The workbook's exercises with `refract` looping forever and `faceforward` recursing until its stack
+/// overflows, as both the test below and the grading steps it starts see them.
+fn with_a_loop_and_a_stack_overflow() -> Vec<Exercise> {
+    #[allow(unconditional_recursion)]
+    fn deeper(depth: u64) -> u64 {
+        std::hint::black_box(deeper(std::hint::black_box(depth + 1))) + 1
+    }
+    let mut exercises = with("refract", || {
+        facts::refract(|_, _, _| {
+            loop {
+                std::hint::spin_loop();
+            }
+        })
+    });
+    let faceforward = exercises.iter_mut().find(|e| e.name == "faceforward").expect("an exercise of that name");
+    faceforward.facts = Box::new(|| facts::faceforward(|n, _| n * deeper(0) as f32));
+    exercises
+}
+
+/// A step of `a_looping_exercise_is_stopped_at_its_limit_and_fails`, in a process of its own.
+#[test]
+#[ignore = "a step of another test, which runs it in a process of its own"]
+fn grading_step() {
+    grading::run_step_if_asked(&with_a_loop_and_a_stack_overflow(), &pictures_as_expected);
+}
+
+#[test]
+fn a_looping_exercise_is_stopped_at_its_limit_and_fails() {
+    let limits = Limits { time: Duration::from_secs(5), memory: None, output: None };
+    let this = std::env::current_exe().expect("the test's own program");
+    let child = || {
+        let mut command = Command::new(&this);
+        command.args(["--exact", "grading_step", "--ignored", "--test-threads", "1"]);
+        command.stdout(Stdio::null()).stderr(Stdio::null());
+        command
+    };
+    let exercises = with_a_loop_and_a_stack_overflow();
+    let verdicts = grading::grade_isolated(&exercises, &limits, &child);
+    for (exercise, verdict) in exercises.iter().zip(&verdicts) {
+        match exercise.name {
+            "refract" => assert_eq!(
+                *verdict,
+                Verdict::Failed(
+                    "stopped at its time limit of 5 s before its facts were all checked (does it loop forever?)".into()
+                )
+            ),
+            "faceforward" => assert!(
+                matches!(verdict, Verdict::Failed(m) if m.contains("crashed (it aborted: a stack overflow")),
+                "{verdict:?}"
+            ),
+            _ => assert!(matches!(verdict, Verdict::Passed { .. }), "{}: {verdict:?}", exercise.name),
+        }
+    }
 }
 
 /// Runs a fact check that must fail, and returns its message.
