@@ -231,6 +231,49 @@ fn a_looping_exercise_is_stopped_at_its_limit_and_fails() {
     }
 }
 
+/// Schlick's reflectance in f64, for a ray `theta_i` from the normal, with the workbook's rule for rays
+/// leaving the denser medium: the formula of the facts' table (which holds numbers only, so that the grader a
+/// student receives holds no answer).
+fn schlick_reference(theta_i: f64, eta: f64) -> f64 {
+    let f0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
+    let cos_i = theta_i.cos();
+    let cos = if eta > 1.0 {
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        if sin2_t >= 1.0 {
+            return 1.0;
+        }
+        (1.0 - sin2_t).sqrt()
+    } else {
+        cos_i
+    };
+    f0 + (1.0 - f0) * (1.0 - cos).powi(5)
+}
+
+/// The exact Fresnel reflectance in f64, for a ray `theta_i` from the normal: the formula of the facts' table.
+fn exact_reference(theta_i: f64, eta: f64) -> f64 {
+    let cos_i = theta_i.cos();
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if sin2_t >= 1.0 {
+        return 1.0;
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    let rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    0.5 * (rs * rs + rp * rp)
+}
+
+#[test]
+fn the_facts_tables_hold_the_formulas_values() {
+    let near = |table: f32, formula: f64, what: &str| assert!((table as f64 - formula).abs() < 1e-6, "{what}: {table}");
+    for degrees in 0..90 {
+        let theta = (degrees as f64).to_radians();
+        near(facts::SCHLICK_ENTERING_GLASS[degrees], schlick_reference(theta, 1.0 / 1.5), "Schlick");
+        near(facts::EXACT_ENTERING_GLASS[degrees], exact_reference(theta, 1.0 / 1.5), "exact");
+    }
+    near(facts::SCHLICK_LEAVING_GLASS_AT_30, schlick_reference(30f64.to_radians(), 1.5), "Schlick leaving");
+    near(facts::EXACT_AT_BREWSTER, exact_reference(1.5f64.atan(), 1.0 / 1.5), "Brewster");
+}
+
 /// Runs a fact check that must fail, and returns its message.
 fn fails(check: facts::Facts) -> String {
     check.expect_err("a wrong answer held every fact")
@@ -266,6 +309,14 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
         (face, u, v)
     }));
     assert!(message.contains("should land in the middle of NegX"), "{message}");
+    // The cube map letting x win over a z not much larger.
+    let message = fails(facts::cube_map(|d| {
+        let (face, u, v) = cube_map::cube_face_uv(d);
+        let a = d.abs();
+        let x_wins = a.x >= a.y && a.x < a.z && a.x >= 0.6 * a.z;
+        (if x_wins { if d.x >= 0.0 { Face::PosX } else { Face::NegX } } else { face }, u, v)
+    }));
+    assert!(message.contains("should land on the face of its largest component"), "{message}");
     // faceforward the wrong way round.
     let message = fails(facts::faceforward(|n, i| -faceforward::faceforward(n, i)));
     assert!(message.contains("sees its normal n = (0, 1, 0) as it is"), "{message}");
