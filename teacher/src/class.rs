@@ -121,14 +121,20 @@ pub fn grade(settings: &Settings, mut progress: impl FnMut(Progress)) -> Result<
     if let Some(source) = teachers {
         sources.push(("reference".to_string(), source.clone()));
     }
-    let package =
-        ClassPackage::create(&out.join("build"), &settings.workbook, &settings.target, &sources, settings.opt_level)?;
-    progress(Progress::Preparing("building the workbook's library for the class (once)"));
-    package.build_library(&PREPARATION_LIMIT, &out.join("logs").join("library.build.txt"))?;
-    let reference = match &settings.reference {
-        None => None,
-        Some(_) if teachers.is_some() => Some(render_reference(settings, &package)?),
-        Some(picture) => {
+    // The package, when there is an example to build in it.
+    let package = if sources.is_empty() {
+        None
+    } else {
+        let dir = out.join("build");
+        let package = ClassPackage::create(&dir, &settings.workbook, &settings.target, &sources, settings.opt_level)?;
+        progress(Progress::Preparing("building the workbook's library for the class (once)"));
+        package.build_library(&PREPARATION_LIMIT, &out.join("logs").join("library.build.txt"))?;
+        Some(package)
+    };
+    let reference = match (&settings.reference, &package) {
+        (None, _) => None,
+        (Some(_), Some(package)) if teachers.is_some() => Some(render_reference(settings, package)?),
+        (Some(picture), _) => {
             let image = lecture6::instruments::compare::load_reference(picture).map_err(|e| e.to_string())?;
             let shown = out.join(REFERENCE_PICTURE);
             image.save(&shown).map_err(|e| format!("cannot write {}: {e}", shown.display()))?;
@@ -151,8 +157,8 @@ pub fn grade(settings: &Settings, mut progress: impl FnMut(Progress)) -> Result<
         None
     };
     for (row, student) in rows.iter_mut().zip(owners.iter().map(|&i| &students[i])) {
-        if let Some(source) = row.source.clone() {
-            build_and_run(settings, &package, row, &source, student.folder.as_deref(), reference.as_deref())?;
+        if let (Some(source), Some(package)) = (row.source.clone(), &package) {
+            build_and_run(settings, package, row, &source, student.folder.as_deref(), reference.as_deref())?;
         }
         if let (Some(copy), Some(grades)) = (&copy, &mut row.grades) {
             let log = out.join("logs").join(format!("{}.exercises.txt", row.id));
@@ -182,8 +188,11 @@ fn rows(students: &[Student]) -> (Vec<Row>, Vec<usize>) {
                 }
                 _ => student.name.clone(),
             };
-            let grades =
-                (k == 0 && !student.exercises.is_empty()).then(|| Grades { verdicts: Vec::new(), failure: None });
+            let grades = (k == 0 && !student.exercises.is_empty()).then(|| Grades {
+                verdicts: Vec::new(),
+                failure: None,
+                seconds: 0.0,
+            });
             let id = id(rows.len() + 1, &student.name);
             rows.push(Row { id, student: name, source, built: None, run: None, score: None, grades });
             owners.push(index);

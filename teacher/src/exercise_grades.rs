@@ -23,12 +23,14 @@ pub struct GradingCopy {
 }
 
 /// A student's grades.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Grades {
     /// Each exercise handed out and the grader's verdict (`passed: ...`, `FAILED: ...`, ...).
     pub verdicts: Vec<(String, String)>,
     /// Why there are no verdicts: the first compiler error, or the limit that stopped the grader.
     pub failure: Option<String>,
+    /// How long building and running the grader took, in seconds.
+    pub seconds: f64,
 }
 
 impl Grades {
@@ -109,7 +111,7 @@ impl GradingCopy {
                     .unwrap_or_else(|| format!("the grader ended without a report ({ending:?})")),
             ),
         };
-        Ok(Grades { verdicts, failure })
+        Ok(Grades { verdicts, failure, seconds: finished.elapsed.as_secs_f64() })
     }
 }
 
@@ -165,7 +167,7 @@ mod tests {
         let report = "\nGrading the lecture-6 exercises: ...\n\n  refract            passed: every fact holds\n  \
             fresnel_schlick    FAILED: Head-on ...\n  fresnel_exact      not handed out\n\n1 of 2 exercises handed out passed\n";
         let blanks = [("refract".to_string(), String::new()), ("fresnel_schlick".to_string(), String::new())];
-        let grades = Grades { verdicts: verdicts(report, &blanks), failure: None };
+        let grades = Grades { verdicts: verdicts(report, &blanks), failure: None, seconds: 0.0 };
         assert_eq!(
             grades.verdicts,
             [

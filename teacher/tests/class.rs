@@ -3,13 +3,34 @@
 //! looping, a runaway sample count, NaN light, a shader that gains energy, a memory hog. Each row of the
 //! gradebook says what happened to that student, and nothing that happened to one stopped another.
 //!
-//! It builds real submissions against the workbook (a few seconds each, after one build of the library for
-//! the class) and waits out two time limits, so it is run on its own: `cargo test --release -p teacher
-//! --test class -- --ignored` (`.ci/run` does).
+//! A second test grades exercise files: a right answer, one that loops forever, one that does not compile.
+//!
+//! They build real submissions against the workbook (a few seconds each, after one build of the library for
+//! the class; the exercises' grader in a handed-out copy, once, in the dev profile) and wait out time
+//! limits, so they are run on their own: `cargo test --release -p teacher --test class -- --ignored`
+//! (`.ci/run` does). They run one at a time: they share the target folder.
 
 use std::collections::HashMap;
 use std::path::Path;
 use std::process::Command;
+use std::sync::Mutex;
+
+/// Held by each test while it runs the class command: cargo builds one package at a time in a target
+/// folder, and a build waiting for the other test's would count against its time limit.
+static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+
+/// Runs the class command on the folder `class` with `options`, its output into `out`.
+fn run_class(class: &Path, out: &Path, options: &[&str]) {
+    let _alone = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let status = Command::new(env!("CARGO_BIN_EXE_class"))
+        .arg(class)
+        .args(options)
+        .arg("--out")
+        .arg(out)
+        .status()
+        .expect("the class command runs");
+    assert!(status.success(), "{status:?}");
+}
 
 /// The time limit of each render: long enough for the real ones on a busy machine, the wait of the two
 /// that never end.
@@ -114,15 +135,20 @@ fn every_kind_of_submission_gets_its_own_row() {
     }
     let out = dir.path().join("graded");
     let reference = teacher::workbook().join("examples/refract.rs");
-    let status = Command::new(env!("CARGO_BIN_EXE_class"))
-        .arg(&class)
-        .arg("--reference")
-        .arg(&reference)
-        .args(["--width", "160", "--height", "120", "--time-limit", TIME_LIMIT, "--memory-limit", "1024", "--out"])
-        .arg(&out)
-        .status()
-        .expect("the class command runs");
-    assert!(status.success(), "{status:?}");
+    let reference = reference.to_string_lossy();
+    let options = [
+        "--reference",
+        &reference,
+        "--width",
+        "160",
+        "--height",
+        "120",
+        "--time-limit",
+        TIME_LIMIT,
+        "--memory-limit",
+        "1024",
+    ];
+    run_class(&class, &out, &options);
     let rows = gradebook(&out.join("gradebook.csv"));
     let row = |student: &str| rows.get(student).unwrap_or_else(|| panic!("no row for {student}"));
 
@@ -168,6 +194,38 @@ fn every_kind_of_submission_gets_its_own_row() {
         }
     }
     assert!(out.join("pictures/reference.png").exists());
+}
+
+#[test]
+#[ignore = "builds the exercises' grader in a handed-out copy (minutes, once): cargo test --release -p teacher --test class -- --ignored"]
+fn exercise_files_are_graded_in_a_handed_out_copy_each_under_its_time_limit() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let class = dir.path().join("exercises");
+    let workbook = teacher::workbook();
+    let blank = std::fs::read_to_string(workbook.join("exercises/src/refract.rs")).expect("the blank");
+    let solution = std::fs::read_to_string(workbook.join("exercises/src/solutions/refract.rs")).expect("the answer");
+    let submissions = [
+        ("judy/refract.rs", solution),
+        ("kim/exercises/src/refract.rs", blank.replace("todo!(\"refract\")", "loop {}")),
+        ("lee/src/refract.rs", blank.replace("todo!(\"refract\")", "i * eta1_over_eta2 +")),
+    ];
+    for (file, source) in submissions {
+        let path = class.join(file);
+        std::fs::create_dir_all(path.parent().expect("a folder")).expect("the student's folder");
+        std::fs::write(path, source).expect("a submission");
+    }
+    let out = dir.path().join("graded");
+    run_class(&class, &out, &["--exercises", "refract", "--exercise-time-limit", "5"]);
+    let rows = gradebook(&out.join("gradebook.csv"));
+    let row = |student: &str| rows.get(student).unwrap_or_else(|| panic!("no row for {student}"));
+    assert_eq!(row("judy")["exercises_passed"], "1/1", "{:?}", row("judy"));
+    assert!(row("judy")["refract"].starts_with("passed: every fact holds"), "{:?}", row("judy"));
+    assert_eq!(row("kim")["exercises_passed"], "0/1", "{:?}", row("kim"));
+    assert!(row("kim")["refract"].starts_with("FAILED: stopped at its time limit of 5 s"), "{:?}", row("kim"));
+    assert!(row("lee")["exercises_passed"].starts_with("exercises/src/refract.rs:"), "{:?}", row("lee"));
+    assert!(row("lee")["exercises_passed"].contains(": error"), "{:?}", row("lee"));
+    // No example, nothing built or run for them.
+    assert!(rows.values().all(|fields| fields["built"].is_empty() && fields["run"].is_empty()));
 }
 
 /// The gradebook's rows by student, each as its fields by column.

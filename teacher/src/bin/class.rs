@@ -96,7 +96,7 @@ fn progress(step: Progress) {
     if let Some(grades) = &row.grades {
         parts.push(match &grades.failure {
             Some(why) => format!("exercises not graded: {why}"),
-            None => format!("exercises {}/{} passed", grades.passed(), grades.verdicts.len()),
+            None => format!("exercises {}/{} passed ({:.1} s)", grades.passed(), grades.verdicts.len(), grades.seconds),
         });
     }
     println!("{}: {}", row.student, parts.join("; "));
