@@ -6,6 +6,8 @@
 //! cargo bench --bench speed                      # against commit 49c9843, 3 rounds, 1 and 2 threads
 //! cargo bench --bench speed -- --base REV --rounds 5 --examples fresnel,glossy
 //! cargo bench --bench speed -- --base REV --threads 1 --no-curve --instructions 320x240
+//! cargo bench --bench speed -- --base REV --threads 1 --no-curve --rounds 5 --way "" --way --exhaustive --way --slide
+//! cargo bench --bench speed -- --course --course-base --base REV --course-cpp /tmp/qd/qd_O2 --rounds 5
 //! cargo bench --bench speed -- --course --course-cpp /tmp/qd/qd_O2 --rounds 5   # the course's figures only
 //! ```
 //!
@@ -13,7 +15,8 @@
 //!   examples built there (into `target/bench-base-target`, so this build's binaries stay as they are); both
 //!   are kept for the next run. Nothing of it is committed. (`target/` is `CARGO_TARGET_DIR` when set.)
 //! - Every example of both builds (the ones both have) is run at its default settings with each thread count,
-//!   its picture written under `target/bench-out/`. The runs are interleaved: in each round every example runs
+//!   its picture written under `target/bench-out/`, once for each `--way` (the options it is given: by
+//!   default none, its default settings). The runs are interleaved: in each round every example runs
 //!   once in each build, the build that goes first alternating from round to round, so that a machine shared
 //!   with other work slows both builds alike. Each figure is the median over the rounds.
 //! - CPU time is that of the child process (`getrusage(RUSAGE_CHILDREN)`, user plus system), wall time is
@@ -33,7 +36,8 @@
 //!   this build's `fresnel` once each by default, with `--exhaustive` (every ray traced, as the C++ does) and
 //!   with `--slide` (the slides' plain code), each at the C++'s framing (`--fov 112.62`: the same picture,
 //!   and with `--exhaustive` the same rays) and at its own, all on one thread at 640x480, 5 spp; the C++
-//!   goes first in one round and last in the next. Two ratios per
+//!   goes first in one round and last in the next (with `--course-base`, the earlier build's `fresnel` runs
+//!   its six ways in the same rounds, so that both builds' ratios come from one run). Two ratios per
 //!   way: whole-process CPU (getrusage of each; the C++'s includes starting SDL and reading its textures,
 //!   the workbook's reading its textures and writing the PNG) and render only, wall against wall (the
 //!   C++'s own clock around render(), the workbook's summary-line time; on one thread on an idle core
@@ -72,6 +76,14 @@ struct Args {
     /// Only these examples [default: all that both builds have].
     #[arg(long, value_delimiter = ',')]
     examples: Vec<String>,
+    /// The ways every example runs in both builds, each the options it is given (repeatable:
+    /// `--way "" --way --exhaustive --way --slide`) [default: its default settings only].
+    #[arg(long, allow_hyphen_values = true)]
+    way: Vec<String>,
+    /// With `--course`: the earlier build's (`--base`) `fresnel` runs its six ways too, interleaved with this
+    /// build's and the C++ in every round, and the table gives both builds' ratios.
+    #[arg(long)]
+    course_base: bool,
     /// Sphere counts of the object-count curve.
     #[arg(long, value_delimiter = ',', default_value = "1,10,100,1000,10000")]
     spheres: Vec<usize>,
@@ -201,13 +213,15 @@ fn summary_of(bin: &Path, output: &std::process::Output) -> (f64, f64) {
         .unwrap_or_else(|| panic!("no time and ray count in the summary of {}: {stdout}", bin.display()))
 }
 
-/// Instructions of one run of an example under callgrind, at `size` on one thread, and the rays it traced.
-fn count_instructions(bin: &Path, (width, height): (u32, u32), out: &Path) -> (f64, f64) {
+/// Instructions of one run of an example with the `extra` options under callgrind, at `size` on one
+/// thread, and the rays it traced.
+fn count_instructions(bin: &Path, extra: &[String], (width, height): (u32, u32), out: &Path) -> (f64, f64) {
     let output = run(
         &format!("callgrind of {}", bin.display()),
         Command::new("valgrind")
             .args(["--tool=callgrind", "--callgrind-out-file=/dev/null"])
             .arg(bin)
+            .args(extra)
             .args(["--threads", "1", "--width", &width.to_string(), "--height", &height.to_string(), "--output"])
             .arg(out),
     );
@@ -241,6 +255,28 @@ fn figures(samples: &[Sample]) -> Figures {
     }
 }
 
+/// One example run one way: its label in the tables (`fresnel --slide`), its binary's name and its options.
+struct Case {
+    label: String,
+    name: String,
+    args: Vec<String>,
+}
+
+/// Every example both builds have (or those `--examples` names), each in every `--way`.
+fn cases(args: &Args, names: &[String]) -> Vec<Case> {
+    let ways = if args.way.is_empty() { vec![String::new()] } else { args.way.clone() };
+    names
+        .iter()
+        .flat_map(|name| {
+            ways.iter().map(move |way| Case {
+                label: if way.is_empty() { name.clone() } else { format!("{name} {way}") },
+                name: name.clone(),
+                args: way.split_whitespace().map(String::from).collect(),
+            })
+        })
+        .collect()
+}
+
 fn compare_examples(args: &Args, root: &Path) {
     let base_dir = base_build(root, &args.base);
     let new_dir = target_dir(root).join("release/examples");
@@ -251,20 +287,22 @@ fn compare_examples(args: &Args, root: &Path) {
         names.retain(|n| args.examples.contains(n));
     }
     assert!(!names.is_empty(), "no examples to compare: run `cargo build --release --examples` first");
+    let cases = cases(args, &names);
     let out_dir = bench_out(root);
     let builds = [("base", &base_dir), ("new", &new_dir)];
-    // samples[example][thread count][build]
+    // samples[case][thread count][build]
     let mut samples: Vec<Vec<[Vec<Sample>; 2]>> =
-        names.iter().map(|_| args.threads.iter().map(|_| [Vec::new(), Vec::new()]).collect()).collect();
+        cases.iter().map(|_| args.threads.iter().map(|_| [Vec::new(), Vec::new()]).collect()).collect();
     for round in 0..args.rounds {
         eprintln!("round {} of {}", round + 1, args.rounds);
-        for (e, name) in names.iter().enumerate() {
+        for (e, case) in cases.iter().enumerate() {
+            let extra: Vec<&str> = case.args.iter().map(String::as_str).collect();
             for (t, &threads) in args.threads.iter().enumerate() {
                 for k in 0..2 {
                     let b = (k + round) % 2;
                     let (label, dir) = builds[b];
-                    let out = out_dir.join(format!("{name}-{label}-{threads}t.png"));
-                    samples[e][t][b].push(run_example(&dir.join(name), threads, &[], &out));
+                    let out = out_dir.join(format!("{}-{e}-{label}-{threads}t.png", case.name));
+                    samples[e][t][b].push(run_example(&dir.join(&case.name), threads, &extra, &out));
                 }
             }
         }
@@ -275,13 +313,14 @@ fn compare_examples(args: &Args, root: &Path) {
     );
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut all = Vec::new();
-    for (e, name) in names.iter().enumerate() {
+    for (e, case) in cases.iter().enumerate() {
         let per_thread: Vec<[Figures; 2]> = samples[e].iter().map(|s| [figures(&s[0]), figures(&s[1])]).collect();
         for (t, &threads) in args.threads.iter().enumerate() {
             let [b, n] = per_thread[t];
             let (b_rate, n_rate) = (b.rays / b.cpu / 1e6, n.rays / n.cpu / 1e6);
             println!(
-                "| {name} | {threads} | {:.3} | {:.3} | {:.2}x | {:.3} | {:.3} | {:.2} | {:.2} | {:.2}x |",
+                "| {} | {threads} | {:.3} | {:.3} | {:.2}x | {:.3} | {:.3} | {:.2} | {:.2} | {:.2}x |",
+                case.label,
                 b.cpu,
                 n.cpu,
                 b.cpu / n.cpu,
@@ -300,20 +339,20 @@ fn compare_examples(args: &Args, root: &Path) {
         println!("\n## Thread scaling: wall time at 1 thread over wall time at 2 threads\n");
         println!("| example | base | new |");
         println!("|---|---:|---:|");
-        for (name, per_thread) in names.iter().zip(&all) {
+        for (case, per_thread) in cases.iter().zip(&all) {
             let scaling = |b: usize| per_thread[one][b].wall / per_thread[two][b].wall;
-            println!("| {name} | {:.2}x | {:.2}x |", scaling(0), scaling(1));
+            println!("| {} | {:.2}x | {:.2}x |", case.label, scaling(0), scaling(1));
         }
     }
     if let Some(size) = args.instructions {
-        instruction_table(args, &names, &builds, &all, size, &out_dir);
+        instruction_table(args, &cases, &builds, &all, size, &out_dir);
     }
 }
 
 /// Instructions per ray of every example in both builds (callgrind), beside their CPU time on one thread.
 fn instruction_table(
     args: &Args,
-    names: &[String],
+    cases: &[Case],
     builds: &[(&str, &PathBuf); 2],
     figures: &[Vec<[Figures; 2]>],
     (width, height): (u32, u32),
@@ -329,15 +368,17 @@ fn instruction_table(
         "| example | base M instructions | new M instructions | base M rays | new M rays | base instructions/ray | new instructions/ray | ratio | base CPU s (default size, 1 thread) | new CPU s (default size, 1 thread) |"
     );
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
-    for (e, name) in names.iter().enumerate() {
+    for (e, case) in cases.iter().enumerate() {
         let [(bi, br), (ni, nr)] = [0, 1].map(|b| {
             let (label, dir) = builds[b];
-            eprintln!("callgrind: {name} ({label})");
-            count_instructions(&dir.join(name), (width, height), &out_dir.join(format!("{name}-{label}-callgrind.png")))
+            eprintln!("callgrind: {} ({label})", case.label);
+            let out = out_dir.join(format!("{}-{e}-{label}-callgrind.png", case.name));
+            count_instructions(&dir.join(&case.name), &case.args, (width, height), &out)
         });
         let cpu = |b: usize| one.map_or("-".to_string(), |t| format!("{:.3}", figures[e][t][b].cpu));
         println!(
-            "| {name} | {:.0} | {:.0} | {:.2} | {:.2} | {:.0} | {:.0} | {:.2}x | {} | {} |",
+            "| {} | {:.0} | {:.0} | {:.2} | {:.2} | {:.0} | {:.0} | {:.2}x | {} | {} |",
+            case.label,
             bi * 1e-6,
             ni * 1e-6,
             br * 1e-6,
@@ -430,25 +471,119 @@ fn course_figures(args: &Args, root: &Path) {
     let fresnel = target_dir(root).join("release/examples/fresnel");
     assert!(fresnel.exists(), "no {}: run `cargo build --release --examples` first", fresnel.display());
     let out_dir = bench_out(root);
+    let mut builds = vec![("this build".to_string(), fresnel.clone())];
+    if args.course_base {
+        builds.insert(0, (format!("{} (base)", args.base), base_build(root, &args.base).join("fresnel")));
+    }
     match course_cpp(args) {
-        Some(cpp) => against_course_cpp(args, &cpp, &fresnel, &out_dir),
+        Some(cpp) => against_course_cpp(args, &cpp, &builds, &out_dir),
         None => println!(
             "\nThe course's C++: skipped. Build it with `../shared/bench/course-cpp/build.sh REPO OUTDIR` (REPO: a clone of anrieff/quaddamage) and pass `--course-cpp OUTDIR/qd_O2` or set QD_COURSE_CPP."
         ),
     }
+    if let Some(cpp) = course_cpp(args) {
+        course_look(&cpp, &fresnel, &out_dir);
+    }
     fresnel_threads(args, &fresnel, &out_dir);
 }
 
-/// The course's C++ and `fresnel` the six ways of [`fresnel_ways`], on one thread at 640x480, 5 spp,
-/// interleaved: in each round each runs once, the C++ first in one round and last in the next.
-fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
+/// The options that give `fresnel` the course's look: the course's forest and floor from its repository
+/// (beside its program, in `data/`), its framing, and its raw codes.
+fn course_look_args(data: &Path) -> Vec<String> {
+    let env = data.join("env/forest").display().to_string();
+    let floor = data.join("floor.bmp").display().to_string();
+    ["--fov", &format!("{:.2}", course_fov()), "--env", &env, "--env-layout", "course", "--floor", &floor]
+        .map(String::from)
+        .to_vec()
+}
+
+/// The picture the course's C++ writes (`QD_PPM`, its frame as raw 8-bit codes), and `fresnel` given the
+/// course's look ([`course_look_args`]) compared with it: PSNR, with `--slide` and by default, with the
+/// course's raw codes and with sRGB.
+fn course_look(cpp: &Path, fresnel: &Path, out_dir: &Path) {
+    let cpp = cpp.canonicalize().unwrap_or_else(|e| panic!("--course-cpp {}: {e}", cpp.display()));
+    let folder = cpp.parent().expect("a file has a folder");
+    let ppm = out_dir.join("course-cpp.ppm");
+    run(
+        "the course's C++",
+        Command::new(&cpp)
+            .current_dir(folder)
+            .env("SDL_VIDEODRIVER", "dummy")
+            .env("QD_NOROWDISPLAY", "1")
+            .env("QD_PPM", &ppm),
+    );
+    let reference = out_dir.join("course-cpp.png");
+    ppm_to_png(&ppm, &reference);
+    println!("\n## The course's look: `fresnel` against the picture the course's C++ writes, 640x480, 5 spp\n");
+    println!("| fresnel {} and | PSNR against the course's picture |", course_look_args(Path::new("DATA")).join(" "));
+    println!("|---|---:|");
+    for way in [["--slide", "--encoding", "raw"], ["--encoding", "raw", ""], ["--slide", "--encoding", "srgb"]] {
+        let way: Vec<&str> = way.into_iter().filter(|a| !a.is_empty()).collect();
+        let out = out_dir.join("fresnel-course-look.png");
+        let output = run(
+            "fresnel with the course's look",
+            Command::new(fresnel)
+                .args(course_look_args(&folder.join("data")))
+                .args(&way)
+                .arg("--compare")
+                .arg(&reference)
+                .arg("--output")
+                .arg(&out),
+        );
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        let psnr = stdout
+            .split("PSNR ")
+            .nth(1)
+            .and_then(|rest| rest.split(" dB").next())
+            .unwrap_or_else(|| panic!("no PSNR from fresnel --compare: {stdout}"));
+        println!("| {} | {psnr} dB |", way.join(" "));
+    }
+    println!(
+        "\nThe course's picture: its lecture-6 program's frame, written by the bench build's `QD_PPM` dump as \
+         its window shows it. `--slide --encoding raw` renders as that program does but for its anti-aliasing \
+         (five fixed points of the pixel, against five random ones) and its red for total internal reflection."
+    );
+}
+
+/// A binary PPM (P6, 8 bits), as the course's C++ writes it, saved as a PNG.
+fn ppm_to_png(ppm: &Path, png: &Path) {
+    let bytes = std::fs::read(ppm).unwrap_or_else(|e| panic!("{}: {e}", ppm.display()));
+    // The header: "P6", width, height, maximum, each after white space, then one white-space byte.
+    let mut fields = Vec::new();
+    let mut at = 0;
+    while fields.len() < 4 {
+        while bytes[at].is_ascii_whitespace() {
+            at += 1;
+        }
+        let start = at;
+        while !bytes[at].is_ascii_whitespace() {
+            at += 1;
+        }
+        fields.push(String::from_utf8_lossy(&bytes[start..at]).to_string());
+    }
+    assert_eq!((fields[0].as_str(), fields[3].as_str()), ("P6", "255"), "{}: not an 8-bit P6 PPM", ppm.display());
+    let number = |f: &str| f.parse::<u32>().unwrap_or_else(|e| panic!("{}: {f}: {e}", ppm.display()));
+    let (width, height) = (number(&fields[1]), number(&fields[2]));
+    let pixels = bytes[at + 1..].to_vec();
+    image::RgbImage::from_raw(width, height, pixels)
+        .unwrap_or_else(|| panic!("{}: fewer pixels than {width}x{height}", ppm.display()))
+        .save(png)
+        .unwrap_or_else(|e| panic!("{}: {e}", png.display()));
+}
+
+/// The course's C++ and `fresnel` the six ways of [`fresnel_ways`] in each build (this one, and with
+/// `--course-base` the earlier one), on one thread at 640x480, 5 spp, interleaved: in each round each runs
+/// once, the C++ first in one round and last in the next.
+fn against_course_cpp(args: &Args, cpp: &Path, builds: &[(String, PathBuf)], out_dir: &Path) {
     let cpp = cpp.canonicalize().unwrap_or_else(|e| panic!("--course-cpp {}: {e}", cpp.display()));
     let ways = fresnel_ways();
+    // runs[0] is the C++; then every way of every build.
+    let runs: Vec<(usize, usize)> = (0..builds.len()).flat_map(|b| (0..ways.len()).map(move |w| (b, w))).collect();
     let (mut cpp_samples, mut cpp_render_cpu) = (Vec::new(), Vec::new());
-    let mut samples: Vec<Vec<Sample>> = ways.iter().map(|_| Vec::new()).collect();
+    let mut samples: Vec<Vec<Sample>> = runs.iter().map(|_| Vec::new()).collect();
     for round in 0..args.rounds {
         eprintln!("the course's C++ and fresnel: round {} of {}", round + 1, args.rounds);
-        let mut order: Vec<usize> = (0..=ways.len()).collect();
+        let mut order: Vec<usize> = (0..=runs.len()).collect();
         if round % 2 == 1 {
             order.reverse();
         }
@@ -458,15 +593,19 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
                 cpp_samples.push(sample);
                 cpp_render_cpu.push(render_cpu);
             } else {
-                let out = out_dir.join(format!("fresnel-course-{i}.png"));
-                let way: Vec<&str> = ways[i - 1].args.iter().map(String::as_str).collect();
-                samples[i - 1].push(run_example(fresnel, 1, &way, &out));
+                let (b, w) = runs[i - 1];
+                let out = out_dir.join(format!("fresnel-course-{b}-{w}.png"));
+                let way: Vec<&str> = ways[w].args.iter().map(String::as_str).collect();
+                samples[i - 1].push(run_example(&builds[b].1, 1, &way, &out));
             }
         }
     }
     let c = figures(&cpp_samples);
     let c_render_cpu = median(cpp_render_cpu);
     let figures: Vec<Figures> = samples.iter().map(|s| figures(s)).collect();
+    let name = |(b, w): (usize, usize)| {
+        if builds.len() == 1 { ways[w].name.clone() } else { format!("{} ({})", ways[w].name, builds[b].0) }
+    };
     println!(
         "\n## The course's C++ ({}) against `fresnel`: 640x480, 5 spp, one thread, median of {} interleaved rounds\n",
         cpp.display(),
@@ -482,10 +621,10 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
         c.rays * 1e-6,
         c.rays * 1e-6 / c.render
     );
-    for (way, w) in ways.iter().zip(&figures) {
+    for (&run, w) in runs.iter().zip(&figures) {
         println!(
             "| {} | {:.3} | {:.3} | - | {:.3} | {:.2} | {:.2} |",
-            way.name,
+            name(run),
             w.cpu,
             w.wall,
             w.render,
@@ -497,8 +636,8 @@ fn against_course_cpp(args: &Args, cpp: &Path, fresnel: &Path, out_dir: &Path) {
         "\n| C++ / this (above 1: the workbook takes less) | whole process, CPU | render only, wall | rays, this / C++ |"
     );
     println!("|---|---:|---:|---:|");
-    for (way, w) in ways.iter().zip(&figures) {
-        println!("| {} | {:.2}x | {:.2}x | {:.2} |", way.name, c.cpu / w.cpu, c.render / w.render, w.rays / c.rays);
+    for (&run, w) in runs.iter().zip(&figures) {
+        println!("| {} | {:.2}x | {:.2}x | {:.2} |", name(run), c.cpu / w.cpu, c.render / w.render, w.rays / c.rays);
     }
     println!(
         "\nThe lecture-6 program frames the scene wider than `fresnel` does (its camera scales its image plane by \

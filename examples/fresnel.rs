@@ -26,6 +26,7 @@
 //! plot the reflectance against the angle for both modes.
 
 use lecture6::prelude::*;
+use std::path::PathBuf;
 
 /// The course's Fresnel scene: a glass sphere over a slightly reflective tiled floor.
 #[derive(clap::Args, Clone, Debug)]
@@ -37,6 +38,10 @@ pub struct Options {
     /// Index of refraction of the glass sphere (water 1.33, glass 1.5, the course's 1.6, diamond 2.42).
     #[arg(long, default_value_t = 1.6)]
     pub ior: f32,
+    /// The floor's tiles from this image instead of the bundled `floor_tiles.png`, one tile of it every 100
+    /// units (the course's is its repository's `data/floor.bmp`).
+    #[arg(long, value_name = "IMAGE")]
+    pub floor: Option<PathBuf>,
 }
 
 impl Example for Options {
@@ -56,7 +61,8 @@ impl Example for Options {
 
         // The floor y = 1: tiles, and over them a mirror layer at blend 0.02.
         let mut floor = Layered::new();
-        floor.add_layer(Lambert::new(texture("floor_tiles.png")?.with_tile_size(100.0)), Color::WHITE, None);
+        let tiles = load_texture("floor_tiles.png", self.floor.as_deref(), Filter::default())?;
+        floor.add_layer(Lambert::new(tiles.with_tile_size(100.0)), Color::WHITE, None);
         floor.add_layer(Reflection::new(0.9), Color::gray(0.02), None);
         scene.add(Node::new(Plane::new(1.0, 100.0), floor).named("floor"));
 

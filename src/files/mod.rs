@@ -1,10 +1,11 @@
 //! The files a run reads and the errors it reports: not a slide's lesson, the layer below it. Every file a
 //! scene is read from is checked before it is opened ([`input`]), every image is charged to the run's pixel
-//! budget from its header before it is decoded ([`image_file`]), every picture is written whole or not at
+//! budget from its header before it is decoded ([`image_file`]) and read as its codes mean ([`encoding`]), every picture is written whole or not at
 //! all ([`output`]), and every error a user can cause names the
 //! file or the value at fault in one line ([`error`]). The lesson re-exports them under its own name
 //! (`lecture6::lesson::error`, ...), as they always were.
 
+pub mod encoding;
 pub mod error;
 pub mod image_file;
 pub mod input;

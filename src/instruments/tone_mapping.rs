@@ -1,6 +1,6 @@
 //! Exposure and tone mapping: how the linear light of a render becomes the picture that is written.
 //!
-//! The course has no such step: it clamps every channel to [0, 1] and encodes it with a gamma. That is right
+//! The course has no such step: it clamps every channel to [0, 1] and writes it as it is. That is right
 //! for scenes lit by point lights of moderate power, but an HDR environment holds radiances far above 1 (a
 //! sky at 2-5, a sun at 50), which then all come out white. Two controls deal with that (a deviation from
 //! the course, shared by every example):
@@ -13,11 +13,14 @@
 //!   colours of narrow bands of the spectrum have; see [`crate::lesson::spectral`]) is shown: its negative
 //!   channels clipped, or grey mixed in. It is a choice of display too: EXR output keeps the negative values,
 //!   for whoever measures (HDR's RGBE format cannot hold them and writes 0).
+//! - [`Encoding`] (`--encoding`): the codes an 8-bit picture is written with: sRGB's, or the course's raw
+//!   linear values (see [`crate::files::encoding`]; the same option reads the scene's 8-bit files so).
 //!
 //! Fireflies (single bright pixels when a glossy surface reflects a small, very bright sun) are a matter of
 //! the samples, not of the picture: see [`crate::lesson::render::RenderSettings::max_sample`] (`--clamp-sample`).
 
-use crate::lesson::color::Color;
+use crate::files::encoding::Encoding;
+use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::spectral::GamutMapping;
@@ -46,6 +49,8 @@ pub struct Film {
     pub tone_map: ToneMap,
     /// How colours outside the sRGB gamut are shown.
     pub gamut: GamutMapping,
+    /// The codes of an 8-bit picture: sRGB's, or the course's raw linear values.
+    pub encoding: Encoding,
 }
 
 impl Film {
@@ -64,7 +69,10 @@ impl Film {
     /// True when the film leaves every picture as it is written (the course's picture: the 8-bit encoding
     /// clamps every channel to [0, 1], which clips negative channels too).
     pub fn is_neutral(&self) -> bool {
-        self.exposure == 0.0 && self.tone_map == ToneMap::Clamp && self.gamut == GamutMapping::Clip
+        self.exposure == 0.0
+            && self.tone_map == ToneMap::Clamp
+            && self.gamut == GamutMapping::Clip
+            && self.encoding == Encoding::Srgb
     }
 
     /// The picture to write: exposed, and gamut and tone mapped unless `linear_output` (an EXR or HDR file,
@@ -77,10 +85,22 @@ impl Film {
         frame
     }
 
-    /// One pixel of [`Film::develop`]'s picture (the live viewer develops its tiles as they come).
+    /// One pixel of [`Film::develop`]'s picture (the live viewer develops its tiles as they come). With
+    /// [`Encoding::Raw`], an 8-bit picture's pixel is the light whose sRGB codes are the course's raw ones
+    /// (its value, clamped, times 255): the sRGB writer then writes the course's codes.
     pub fn developed(&self, c: Color, linear_output: bool) -> Color {
         let c = c * self.exposure.exp2();
-        if linear_output { c } else { tone_mapped(self.gamut.apply(c), self.tone_map) }
+        if linear_output {
+            return c;
+        }
+        let c = tone_mapped(self.gamut.apply(c), self.tone_map);
+        match self.encoding {
+            Encoding::Srgb => c,
+            Encoding::Raw => {
+                let raw = |v: f32| srgb_to_linear(if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) });
+                Color::new(raw(c.r()), raw(c.g()), raw(c.b()))
+            }
+        }
     }
 }
 

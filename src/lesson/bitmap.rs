@@ -2,7 +2,8 @@
 //! wrapping. Used by [`BitmapTexture`](crate::lesson::texture::BitmapTexture) and by the environments.
 //!
 //! 8-bit files (PNG, JPEG, BMP) hold sRGB-encoded values. They are kept as they are, 4 bytes a texel, and
-//! each texel read is decoded to linear light through a 256-entry table: a quarter of the memory of float
+//! each texel read is decoded to linear light through a 256-entry table (the course's raw codes, under
+//! `--encoding raw`, through a table of their own: [`crate::files::encoding`]): a quarter of the memory of float
 //! texels, so a large texture stays in the cache, and the same linear values as decoding on load. Bilinear
 //! filtering mixes the decoded (linear) values. Floating point files (Radiance HDR, OpenEXR) are linear
 //! already, keep values above 1 and are stored as floats, as are 16-bit files (decoded on load).
@@ -10,8 +11,9 @@
 //! A file is read through an [`ImageFile`], which checks its size against the pixel budget of the images a
 //! run holds before it is decoded; every bitmap holds its share of the budget until it is dropped.
 
+use crate::files::encoding::{self, Encoding};
 use crate::lesson::beyond::{Step, Steps};
-use crate::lesson::color::{Color, srgb_to_linear, srgb8_to_linear_table};
+use crate::lesson::color::{Color, raw8_to_linear_table, srgb_to_linear, srgb8_to_linear_table};
 use crate::lesson::error::Result;
 use crate::lesson::image_file::{ImageFile, PixelCharge};
 use crate::lesson::math::floor;
@@ -73,8 +75,8 @@ impl Wrap {
 enum Texels {
     /// Linear colours.
     Linear(Vec<Color>),
-    /// 8-bit sRGB codes (the fourth byte is padding), decoded through `table`.
-    Srgb8 { codes: Vec<[u8; 4]>, table: &'static [f32; 256] },
+    /// 8-bit codes (the fourth byte is padding), decoded through `table`.
+    Codes8 { codes: Vec<[u8; 4]>, table: &'static [f32; 256] },
 }
 
 /// The brightest light an image may hold: the renderer adds the samples of a pixel before it averages them,
@@ -115,21 +117,22 @@ impl Bitmap {
     pub fn from_file(file: ImageFile) -> Result<Bitmap> {
         let (img, charge) = file.decode(MAX_IMAGE_LIGHT)?;
         let (width, height) = (img.width() as usize, img.height() as usize);
+        let (table, to_linear): (_, fn(f32) -> f32) = match encoding::reading() {
+            Encoding::Srgb => (srgb8_to_linear_table(), srgb_to_linear),
+            Encoding::Raw => (raw8_to_linear_table(), |code| code),
+        };
         use image::DynamicImage as D;
         let texels = match img {
             // Floating-point images (Radiance HDR, OpenEXR) hold linear light already.
             D::ImageRgb32F(_) | D::ImageRgba32F(_) => {
                 Texels::Linear(img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0)).sanitized()).collect())
             }
-            // 16-bit integer images are sRGB-encoded.
+            // 16-bit integer images are encoded as 8-bit ones are.
             D::ImageLuma16(_) | D::ImageLumaA16(_) | D::ImageRgb16(_) | D::ImageRgba16(_) => Texels::Linear(
-                img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0.map(srgb_to_linear)))).collect(),
+                img.into_rgb32f().pixels().map(|p| Color(Vec3A::from_array(p.0.map(to_linear)))).collect(),
             ),
-            // 8-bit images are sRGB-encoded: kept so, decoded through a 256-entry table when read.
-            _ => Texels::Srgb8 {
-                codes: img.into_rgb8().pixels().map(|p| [p[0], p[1], p[2], 0]).collect(),
-                table: srgb8_to_linear_table(),
-            },
+            // 8-bit images are kept as codes, decoded through a 256-entry table when read.
+            _ => Texels::Codes8 { codes: img.into_rgb8().pixels().map(|p| [p[0], p[1], p[2], 0]).collect(), table },
         };
         Ok(Bitmap { width, height, size: (width as f32, height as f32), texels, _charge: charge })
     }
@@ -148,7 +151,7 @@ impl Bitmap {
         let i = y * self.width + x;
         match &self.texels {
             Texels::Linear(pixels) => pixels[i],
-            Texels::Srgb8 { codes, table } => decode(codes[i], table),
+            Texels::Codes8 { codes, table } => decode(codes[i], table),
         }
     }
 
@@ -159,7 +162,7 @@ impl Bitmap {
         // The storage is chosen once per look-up, not once per texel.
         match &self.texels {
             Texels::Linear(pixels) => self.filtered(u, v, filter, wrap, pixels, |c| c),
-            Texels::Srgb8 { codes, table } => self.filtered(u, v, filter, wrap, codes, |code| decode(code, table)),
+            Texels::Codes8 { codes, table } => self.filtered(u, v, filter, wrap, codes, |code| decode(code, table)),
         }
     }
 

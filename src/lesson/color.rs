@@ -4,8 +4,10 @@
 //! All shading happens in *linear* light: adding two colours or scaling one by a light's intensity is
 //! physically meaningful only there. 8-bit images (textures, the PNG output) store sRGB-encoded values,
 //! so bitmap texels are decoded with [`srgb_to_linear`] (through a table of the 256 codes, when each texel is
-//! read: see [`crate::lesson::bitmap`]) and the frame is encoded with [`linear_to_srgb`] when written. The course's C++ code applies a 2.2 gamma; the exact sRGB curve is used
-//! here instead, so that PNGs round-trip.
+//! read: see [`crate::lesson::bitmap`]) and the frame is encoded with [`linear_to_srgb`] when written.
+//!
+//! Deviation from the course: its lecture-6 program applies no curve at all, reading and writing the codes as
+//! light; `--encoding raw` renders its way ([`crate::files::encoding`]).
 
 use glam::Vec3A;
 use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Sub};
@@ -132,13 +134,37 @@ pub fn srgb8_to_linear_table() -> &'static [f32; 256] {
     TABLE.get_or_init(|| std::array::from_fn(|i| srgb_to_linear(i as f32 / 255.0)))
 }
 
+/// The 256 values of the 8-bit codes read as the course's lecture-6 program reads them: the code over 255
+/// as the light itself ([`Encoding::Raw`](crate::files::encoding::Encoding::Raw)).
+pub fn raw8_to_linear_table() -> &'static [f32; 256] {
+    use std::sync::OnceLock;
+    static TABLE: OnceLock<[f32; 256]> = OnceLock::new();
+    TABLE.get_or_init(|| std::array::from_fn(|i| i as f32 / 255.0))
+}
+
 /// Encodes a linear colour as three 8-bit sRGB codes (round to nearest): a channel's code is the number of
 /// codes whose lower edge ([`srgb8_edges`]) it reaches, the same code as [`srgb8_code`] gives, found by a
 /// binary search instead of a `powf` per channel.
+#[inline]
 pub fn to_srgb8(c: Color) -> [u8; 3] {
     let edges = srgb8_edges();
-    // NaN reaches no edge (code 0), as `linear_to_srgb` maps it to 0.
-    c.to_array().map(|v| edges.partition_point(|&edge| edge <= v) as u8)
+    let [r, g, b] = c.to_array();
+    [code_reached(edges, r), code_reached(edges, g), code_reached(edges, b)]
+}
+
+/// How many of the `edges` `v` reaches: a binary search of eight steps without branches (the next half is
+/// picked by a conditional move), written out so that it is inlined into the loop over a frame's pixels.
+/// NaN reaches no edge (code 0), as `linear_to_srgb` maps it to 0.
+#[inline(always)]
+fn code_reached(edges: &[f32; 255], v: f32) -> u8 {
+    // The last edge reached is at `base` or in the `size - 1` after it, if any is reached at all.
+    let (mut base, mut size) = (0, edges.len());
+    while size > 1 {
+        let half = size / 2;
+        base = if edges[base + half] <= v { base + half } else { base };
+        size -= half;
+    }
+    (base + usize::from(edges[base] <= v)) as u8
 }
 
 /// The 8-bit sRGB code of the linear value `v`, rounded to nearest, by the formula: what [`to_srgb8`] gives.

@@ -39,12 +39,17 @@
 //! **The course's layout** ([`CubemapLayout::Course`]) differs in one face: its `negz` image is the OpenGL
 //! one turned by 180° (u along +X, v along +Y; it is the -Z face cut from a vertical-cross picture, where
 //! that face stands on its head). The course's scene files and cube maps use it; such a face is turned when
-//! it is loaded, so the look-up is the same for both layouts. Face files are found whatever the case of
+//! it is loaded, so the look-up is the same for both layouts, but for one detail: the course's program reads
+//! the nearest texel of a face at `floor(u (W - 1))`, not `floor(u W)`, as if its face were a texel narrower
+//! (half a texel off at its middle), and a course-layout cube map read with the nearest texel (the slides'
+//! look-up, `--slide`) reads it so, which keeps the class's skies where the course's program puts them.
+//! Bilinear filtering (a step beyond the slides) reads texel centres where they are. Face files are found whatever the case of
 //! their extension (`posx.PNG`); all six must be square and of one size.
 //!
 //! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
 //! matters), and a degenerate direction returns a colour of the image rather than failing.
 
+use crate::files::encoding;
 use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
@@ -243,12 +248,14 @@ pub struct CubemapEnvironment {
     pub faces: [Arc<Bitmap>; 6],
     /// How the faces are read between texel centres (bilinear unless changed with `with_filter`).
     pub filter: Filter,
+    /// The course's look-up of the nearest texel (its layout's, [`CubemapLayout::Course`]).
+    course_lookup: bool,
 }
 
 impl CubemapEnvironment {
     /// A bilinearly filtered cube map from six images in linear light, in the order of [`CubeFace::ALL`].
     pub fn new(faces: [Arc<Bitmap>; 6]) -> CubemapEnvironment {
-        CubemapEnvironment { faces, filter: Filter::Bilinear }
+        CubemapEnvironment { faces, filter: Filter::Bilinear, course_lookup: false }
     }
 
     /// Loads the six faces `posx, negx, posy, negy, posz, negz` (each with one of [`FACE_EXTENSIONS`], in
@@ -298,15 +305,17 @@ impl CubemapEnvironment {
             }
         }
         // The six files are decoded in parallel; an error names the first failing face in the order of `ALL`.
+        // Read on the pool's threads as on this one (`--encoding`).
+        let reading = encoding::reading();
         let decode = |(face, file): (CubeFace, ImageFile)| {
-            let bitmap = Bitmap::from_file(file)?;
+            let bitmap = encoding::reading_as(reading, || Bitmap::from_file(file))?;
             let turned = layout == CubemapLayout::Course && face == CubeFace::NegZ;
             Ok::<_, Error>(Arc::new(if turned { half_turn(&bitmap) } else { bitmap }))
         };
         let faces: Vec<(CubeFace, ImageFile)> = CubeFace::ALL.into_iter().zip(files).collect();
         let decoded: Vec<Result<Arc<Bitmap>>> = faces.into_par_iter().map(decode).collect();
         let faces: [_; 6] = decoded.into_iter().collect::<Result<Vec<_>>>()?.try_into().expect("six faces");
-        Ok(CubemapEnvironment::new(faces))
+        Ok(CubemapEnvironment { course_lookup: layout == CubemapLayout::Course, ..CubemapEnvironment::new(faces) })
     }
 
     /// The same cube map read with `filter`.
@@ -319,7 +328,13 @@ impl Environment for CubemapEnvironment {
     #[inline(always)]
     fn get(&self, dir: Vector) -> Color {
         let (face, u, v) = cube_face_uv(dir);
+        let bitmap = &self.faces[face as usize];
+        if self.course_lookup && self.filter == Filter::Nearest {
+            // The course's program takes texel floor(u (W - 1)): its face a texel narrower than the image.
+            let span = |n: usize, t: f32| (t * (n - 1) as f32) as usize;
+            return bitmap.get_pixel(span(bitmap.width(), u), span(bitmap.height(), v));
+        }
         // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.
-        self.faces[face as usize].sample(u, v, self.filter, (Wrap::Clamp, Wrap::Clamp))
+        bitmap.sample(u, v, self.filter, (Wrap::Clamp, Wrap::Clamp))
     }
 }

@@ -216,7 +216,7 @@ impl Stratifier {
     }
 
     /// The position of sample `s` within the pixel, in [0, 1)^2.
-    #[inline]
+    #[inline(always)]
     pub fn offset(&self, s: u32, rng: &mut Rng) -> (f32, f32) {
         if self.spp == 1 {
             return (0.5, 0.5);
@@ -537,7 +537,7 @@ impl<'j> PixelTracer<'j> {
 
     /// The camera ray of sample `s` of pixel (x, y), which is about to be traced as sample `s` of the pixel
     /// whose key is `pixel_key`.
-    #[inline]
+    #[inline(always)]
     fn camera_ray(&mut self, x: u32, y: u32, s: u32, pixel_key: u64) -> Ray {
         self.ctx.pixel_sample = Some(PixelSample { index: s, count: self.samples_per_pixel, pixel_key });
         let (dx, dy) = self.stratifier.offset(s, &mut self.ctx.rng);

@@ -12,6 +12,7 @@ mod bad_input;
 mod beyond;
 mod branching;
 mod command_line;
+mod course_look;
 mod cubemap_layout;
 mod determinism;
 mod diagnostics;

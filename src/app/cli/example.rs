@@ -3,6 +3,7 @@
 
 use super::options::CommonArgs;
 use super::progress::SampleBar;
+use crate::files::encoding;
 use crate::instruments::tone_mapping::Film;
 use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::environment;
@@ -164,6 +165,12 @@ impl<E: Example> Cli<E> {
     /// The example's scene and the settings it decides ([`Example::scene_and_settings`]), with the common
     /// options applied to the scene and checked; the photon map is not built yet.
     pub(super) fn scene_with_common_options(&self, settings: &mut RenderSettings) -> Result<Scene> {
+        // Every 8-bit file the scene reads (its textures, `--env`) is read as `--encoding` says.
+        encoding::reading_as(self.common.encoding, || self.scene_read(settings))
+    }
+
+    /// [`Cli::scene_with_common_options`], its files read as `--encoding` says.
+    fn scene_read(&self, settings: &mut RenderSettings) -> Result<Scene> {
         let common = &self.common;
         let mut scene = self.example.scene_and_settings(common, settings)?;
         scene.steps = common.steps();
@@ -290,6 +297,7 @@ impl<E: Example> Cli<E> {
             exposure: self.common.exposure,
             tone_map: self.common.tonemap,
             gamut: self.common.gamut.unwrap_or_default(),
+            encoding: self.common.encoding,
         }
     }
 

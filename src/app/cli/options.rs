@@ -1,6 +1,7 @@
 //! The options every example shares (`--width`, `--spp`, `--output`, `--compare`, ...) and the caustic
 //! options, as clap reads them; an example's own options come first in its `--help`, these after them.
 
+use crate::files::encoding::Encoding;
 use crate::instruments::debug_view::DebugView;
 use crate::instruments::ray_tree::{PixelPos, TraceFormat};
 use crate::instruments::tone_mapping::ToneMap;
@@ -203,6 +204,11 @@ pub struct CommonArgs {
     /// darker overall). EXR and HDR output keep linear light.
     #[arg(long, value_enum, default_value_t = ToneMap::Clamp, help_heading = PICTURE)]
     pub tonemap: ToneMap,
+    /// What an 8-bit code means, in the files the scene reads and the PNG written: `srgb` (correct: codes
+    /// are decoded to light before shading and light encoded after) or `raw` (the course's lecture-6
+    /// program: a code over 255 is the light itself, read and written, no curve; its pictures look so).
+    #[arg(long, value_enum, default_value_t = Encoding::Srgb, help_heading = PICTURE)]
+    pub encoding: Encoding,
     /// Scale down every sample brighter than MAX in any channel to MAX: tames fireflies (a glossy sphere
     /// under a bright sun), at the price of bias: the clamped light is lost.
     #[arg(long, value_name = "MAX", allow_hyphen_values = true, help_heading = PICTURE)]

@@ -4,6 +4,7 @@
 //! writes `#[arg(long, value_enum, default_value_t = FresnelMode::Schlick)]` as it always has. Each value has
 //! the name the command line spells and `--help` lists, and the help `--help` shows beside it.
 
+use crate::files::encoding::Encoding;
 use crate::instruments::tone_mapping::ToneMap;
 use crate::lesson::beyond::Step;
 use crate::lesson::bitmap::{Filter, Wrap};
@@ -57,6 +58,12 @@ value_enums! {
         Clamp = "clamp": "Every channel clamped to 1, as the course does: exact below 1, white above",
         Reinhard = "reinhard": "The luminance L becomes L / (1 + L), the colour scaled with it: nothing reaches \
             white, bright skies keep their clouds; everything is darker, so pair it with a positive `--exposure`",
+    }
+    Encoding {
+        Srgb = "srgb": "sRGB (correct): an 8-bit texture is decoded to light before it is lit, and the light \
+            is encoded before it is written",
+        Raw = "raw": "The course's lecture-6 program: a code over 255 is the light itself, in the files read and \
+            the picture written, with no curve (lighting in the wrong space, as the class's pictures show it)",
     }
     CubemapLayout {
         OpenGl = "opengl": "OpenGL's and Direct3D's: the skyboxes found on the web, and the workbook's own \

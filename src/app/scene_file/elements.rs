@@ -6,6 +6,7 @@ use super::parse::{Block, Property};
 use super::reader::{MAX_COORDINATE, Reader, checked_triple};
 use super::values::is_space;
 use super::*;
+use crate::files::encoding::{self, Encoding};
 use crate::lesson::camera::{Camera, FOV_LIMITS, FovAxis};
 use crate::lesson::color::{Color, linear_to_srgb, srgb_to_linear};
 use crate::lesson::environment::{CubemapEnvironment, CubemapLayout, Environment};
@@ -430,8 +431,10 @@ pub(super) fn with_assumed_gamma(
     gamma: f32,
 ) -> crate::lesson::bitmap::Bitmap {
     let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
-    // The workbook decodes 8-bit images as sRGB and keeps floating-point ones linear.
-    let stored = |c: f32| if matches!(ext.as_str(), "hdr" | "exr") { c } else { linear_to_srgb(c) };
+    // The workbook decodes 8-bit images as sRGB (unless `--encoding raw` read them as the course does) and
+    // keeps floating-point ones linear.
+    let as_stored = matches!(ext.as_str(), "hdr" | "exr") || encoding::reading() == Encoding::Raw;
+    let stored = |c: f32| if as_stored { c } else { linear_to_srgb(c) };
     let decode = |c: f32| {
         let s = stored(c);
         if s == 0.0 || s == 1.0 {
