@@ -4,6 +4,10 @@
 //! workbook is built for the exercises), is within the regression tests' tolerance of `expected/`. A picture
 //! that differs is saved with a heat map of the difference under `target/exercises/`.
 //!
+//! Each exercise's facts, and each picture, are checked in a process of their own under a time limit
+//! (`EXERCISE_TIME_LIMIT` seconds, 60 without it; `EXERCISE_MEMORY_LIMIT` mebibytes of memory, none without
+//! it): an exercise that loops forever fails, stopped at its limit, and the others are graded on.
+//!
 //! The pictures are rendered at full size and compared with `expected/`, the pictures a student sees in the
 //! README and renders with the plain workbook (the grader's own tests also compare a solution's picture with
 //! the workbook's own drawn in the same build, `drawing_with_the_workbooks_own`). The eight pictures take
@@ -85,9 +89,33 @@ fn main() -> ExitCode {
             default_hook(info);
         }
     }));
-    println!("\nGrading the lecture-6 exercises: facts first, then the picture of the example that uses each.\n");
     let exercises = grading::workbook();
-    let verdicts = grading::grade(&exercises, &check_picture);
+    // A step of the grading in a process of its own, started by the grading below.
+    if grading::run_step_if_asked(&exercises, &check_picture) {
+        return ExitCode::SUCCESS;
+    }
+    let limits = match grading::limits_from_environment() {
+        Ok(limits) => limits,
+        Err(e) => {
+            eprintln!("grade: error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let this = match std::env::current_exe() {
+        Ok(path) => path,
+        Err(e) => {
+            eprintln!("grade: error: cannot find the grader's own program: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    lecture6::app::limits::stop_children_on_signals();
+    println!(
+        "\nGrading the lecture-6 exercises: facts first, then the picture of the example that uses each; each \
+         exercise stopped after {} s ({} sets it).\n",
+        limits.time.as_secs_f64(),
+        grading::TIME_LIMIT_VARIABLE
+    );
+    let verdicts = grading::grade_isolated(&exercises, &limits, &|| std::process::Command::new(&this));
     println!("{}\n", grading::report(&exercises, &verdicts));
     if grading::all_passed(&verdicts) { ExitCode::SUCCESS } else { ExitCode::FAILURE }
 }

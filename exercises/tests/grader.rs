@@ -11,8 +11,11 @@ use exercises::{Face, Vector};
 use glam::Affine3A;
 use grading::{Exercise, Verdict, facts, grade, workbook};
 use lecture6::app::cli::{Cli, Example};
+use lecture6::app::limits::Limits;
 use lecture6::lesson::exercise_hooks::{Hook, answer, drawing_with_the_workbooks_own};
 use lecture6::lesson::frame::Frame;
+use std::process::{Command, Stdio};
+use std::time::Duration;
 
 /// A picture check that finds every picture as expected, so that only the facts decide.
 fn pictures_as_expected(_example: &str) -> Result<(), String> {
@@ -173,6 +176,104 @@ fn an_exercise_that_panics_fails_and_one_not_handed_out_is_skipped() {
     assert!(!grading::all_passed(&verdicts));
 }
 
+/// The workbook's exercises with `refract` looping forever and `faceforward` recursing until its stack
+/// overflows, as both the test below and the grading steps it starts see them.
+fn with_a_loop_and_a_stack_overflow() -> Vec<Exercise> {
+    #[allow(unconditional_recursion)]
+    fn deeper(depth: u64) -> u64 {
+        std::hint::black_box(deeper(std::hint::black_box(depth + 1))) + 1
+    }
+    let mut exercises = with("refract", || {
+        facts::refract(|_, _, _| {
+            loop {
+                std::hint::spin_loop();
+            }
+        })
+    });
+    let faceforward = exercises.iter_mut().find(|e| e.name == "faceforward").expect("an exercise of that name");
+    faceforward.facts = Box::new(|| facts::faceforward(|n, _| n * deeper(0) as f32));
+    exercises
+}
+
+/// A step of `a_looping_exercise_is_stopped_at_its_limit_and_fails`, in a process of its own.
+#[test]
+#[ignore = "a step of another test, which runs it in a process of its own"]
+fn grading_step() {
+    grading::run_step_if_asked(&with_a_loop_and_a_stack_overflow(), &pictures_as_expected);
+}
+
+#[test]
+fn a_looping_exercise_is_stopped_at_its_limit_and_fails() {
+    let limits = Limits { time: Duration::from_secs(5), memory: None, output: None };
+    let this = std::env::current_exe().expect("the test's own program");
+    let child = || {
+        let mut command = Command::new(&this);
+        command.args(["--exact", "grading_step", "--ignored", "--test-threads", "1"]);
+        command.stdout(Stdio::null()).stderr(Stdio::null());
+        command
+    };
+    let exercises = with_a_loop_and_a_stack_overflow();
+    let verdicts = grading::grade_isolated(&exercises, &limits, &child);
+    for (exercise, verdict) in exercises.iter().zip(&verdicts) {
+        match exercise.name {
+            "refract" => assert_eq!(
+                *verdict,
+                Verdict::Failed(
+                    "stopped at its time limit of 5 s before its facts were all checked (does it loop forever?)".into()
+                )
+            ),
+            "faceforward" => assert!(
+                matches!(verdict, Verdict::Failed(m) if m.contains("crashed (it aborted: a stack overflow")),
+                "{verdict:?}"
+            ),
+            _ => assert!(matches!(verdict, Verdict::Passed { .. }), "{}: {verdict:?}", exercise.name),
+        }
+    }
+}
+
+/// Schlick's reflectance in f64, for a ray `theta_i` from the normal, with the workbook's rule for rays
+/// leaving the denser medium: the formula of the facts' table (which holds numbers only, so that the grader a
+/// student receives holds no answer).
+fn schlick_reference(theta_i: f64, eta: f64) -> f64 {
+    let f0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
+    let cos_i = theta_i.cos();
+    let cos = if eta > 1.0 {
+        let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+        if sin2_t >= 1.0 {
+            return 1.0;
+        }
+        (1.0 - sin2_t).sqrt()
+    } else {
+        cos_i
+    };
+    f0 + (1.0 - f0) * (1.0 - cos).powi(5)
+}
+
+/// The exact Fresnel reflectance in f64, for a ray `theta_i` from the normal: the formula of the facts' table.
+fn exact_reference(theta_i: f64, eta: f64) -> f64 {
+    let cos_i = theta_i.cos();
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if sin2_t >= 1.0 {
+        return 1.0;
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    let rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    0.5 * (rs * rs + rp * rp)
+}
+
+#[test]
+fn the_facts_tables_hold_the_formulas_values() {
+    let near = |table: f32, formula: f64, what: &str| assert!((table as f64 - formula).abs() < 1e-6, "{what}: {table}");
+    for degrees in 0..90 {
+        let theta = (degrees as f64).to_radians();
+        near(facts::SCHLICK_ENTERING_GLASS[degrees], schlick_reference(theta, 1.0 / 1.5), "Schlick");
+        near(facts::EXACT_ENTERING_GLASS[degrees], exact_reference(theta, 1.0 / 1.5), "exact");
+    }
+    near(facts::SCHLICK_LEAVING_GLASS_AT_30, schlick_reference(30f64.to_radians(), 1.5), "Schlick leaving");
+    near(facts::EXACT_AT_BREWSTER, exact_reference(1.5f64.atan(), 1.0 / 1.5), "Brewster");
+}
+
 /// Runs a fact check that must fail, and returns its message.
 fn fails(check: facts::Facts) -> String {
     check.expect_err("a wrong answer held every fact")
@@ -208,6 +309,14 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
         (face, u, v)
     }));
     assert!(message.contains("should land in the middle of NegX"), "{message}");
+    // The cube map letting x win over a z not much larger.
+    let message = fails(facts::cube_map(|d| {
+        let (face, u, v) = cube_map::cube_face_uv(d);
+        let a = d.abs();
+        let x_wins = a.x >= a.y && a.x < a.z && a.x >= 0.6 * a.z;
+        (if x_wins { if d.x >= 0.0 { Face::PosX } else { Face::NegX } } else { face }, u, v)
+    }));
+    assert!(message.contains("should land on the face of its largest component"), "{message}");
     // faceforward the wrong way round.
     let message = fails(facts::faceforward(|n, i| -faceforward::faceforward(n, i)));
     assert!(message.contains("sees its normal n = (0, 1, 0) as it is"), "{message}");

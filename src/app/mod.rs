@@ -3,6 +3,7 @@
 
 pub mod assets;
 pub mod cli;
+pub mod limits;
 pub mod scene_file;
 pub mod scenes;
 pub mod workbook;

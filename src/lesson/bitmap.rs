@@ -190,7 +190,10 @@ impl Bitmap {
                 // Texel centres sit at half-integer coordinates.
                 let (i0, i1, tx) = wrap.0.neighbours(x - 0.5, self.width);
                 let (j0, j1, ty) = wrap.1.neighbours(y - 0.5, self.height);
-                bilinear([at(i0, j0), at(i1, j0), at(i0, j1), at(i1, j1)], tx, ty)
+                // The top two texels mixed, then the bottom two, then the two mixes.
+                let top = at(i0, j0) * (1.0 - tx) + at(i1, j0) * tx;
+                let bottom = at(i0, j1) * (1.0 - tx) + at(i1, j1) * tx;
+                top * (1.0 - ty) + bottom * ty
             }
         }
     }
@@ -239,14 +242,6 @@ impl Wrap {
     fn wrapped_pair(self, i: i32, n: usize) -> (usize, usize) {
         (self.texel(i as i64, n), self.texel(i as i64 + 1, n))
     }
-}
-
-/// The mix of four texels, the top two then the bottom two, at (tx, ty) between their centres.
-#[inline(always)]
-fn bilinear([a, b, c, d]: [Color; 4], tx: f32, ty: f32) -> Color {
-    let top = a * (1.0 - tx) + b * tx;
-    let bottom = c * (1.0 - tx) + d * tx;
-    top * (1.0 - ty) + bottom * ty
 }
 
 /// The linear colour of an 8-bit sRGB texel.

@@ -7,11 +7,14 @@
 pub mod facts;
 
 use facts::Facts;
+use lecture6::app::limits::{self, Ending, Limits};
 use lecture6::lesson::exercise_hooks::drawing_around_blanks;
 use std::any::Any;
 use std::collections::HashMap;
 use std::fmt;
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::process::Command;
+use std::time::Duration;
 
 /// One exercise: its name (its file is `exercises/src/<name>.rs`), whether it is handed out, how its facts
 /// are checked, and the example whose default picture uses it.
@@ -167,62 +170,76 @@ fn exercise_of(what: &str) -> &str {
 }
 
 /// How a picture came out.
-#[derive(Clone, Debug)]
-enum Picture {
+#[derive(Clone, Debug, PartialEq)]
+pub enum Picture {
     Expected,
     Differs(String),
     /// The texts of the `todo!()`s of the blanks it met.
     Needs(Vec<String>),
 }
 
-/// Grades every exercise: its facts first (a `todo!()` or a panic in one exercise does not stop the others),
-/// then, if they hold, the picture `check_picture(example)` renders and compares (`Err` says how it differs;
-/// a blank met while drawing it means the picture waits for it). The picture is drawn around the blanks
-/// (`drawing_around_blanks`: each blank met is named and the workbook's own function drawn instead), so that
-/// every exercise a picture needs is named in one run. Each example is rendered once however many exercises
-/// it checks.
-pub fn grade(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), String>) -> Vec<Verdict> {
-    let mut pictures: HashMap<&str, Picture> = HashMap::new();
-    let mut picture = |example: &'static str| {
-        pictures
-            .entry(example)
-            .or_insert_with(|| {
-                let (outcome, blanks) =
-                    drawing_around_blanks(|| catch_unwind(AssertUnwindSafe(|| check_picture(example))));
-                match outcome {
-                    _ if !blanks.is_empty() => Picture::Needs(blanks),
-                    Ok(Ok(())) => Picture::Expected,
-                    Ok(Err(why)) => Picture::Differs(why),
-                    Err(payload) => {
-                        let message = panic_message(payload.as_ref());
-                        match not_written(&message) {
-                            Some(what) => Picture::Needs(vec![what]),
-                            None => Picture::Differs(format!("rendering `{example}` panicked: {message}")),
-                        }
-                    }
-                }
+/// Checks `exercise`'s facts, under its own `catch_unwind`: `Ok` when they all hold, or the verdict they
+/// give (a `todo!()` is "not yet written", any other panic a failure).
+pub fn check_facts(exercise: &Exercise) -> Result<(), Verdict> {
+    match catch_unwind(AssertUnwindSafe(|| (exercise.facts)())) {
+        Ok(Ok(())) => Ok(()),
+        Ok(Err(why)) => Err(Verdict::Failed(why)),
+        Err(payload) => {
+            let message = panic_message(payload.as_ref());
+            Err(match not_written(&message) {
+                Some(what) => Verdict::NotWritten(what),
+                None => Verdict::Failed(format!("it panicked: {message}")),
             })
-            .clone()
-    };
+        }
+    }
+}
+
+/// Draws and checks the picture of `example` with `check_picture` (`Err` says how it differs), around the
+/// blanks (`drawing_around_blanks`: each blank met is named and the workbook's own function drawn instead),
+/// so that every exercise a picture needs is named in one run.
+pub fn draw_picture(example: &str, check_picture: &dyn Fn(&str) -> Result<(), String>) -> Picture {
+    let (outcome, blanks) = drawing_around_blanks(|| catch_unwind(AssertUnwindSafe(|| check_picture(example))));
+    match outcome {
+        _ if !blanks.is_empty() => Picture::Needs(blanks),
+        Ok(Ok(())) => Picture::Expected,
+        Ok(Err(why)) => Picture::Differs(why),
+        Err(payload) => {
+            let message = panic_message(payload.as_ref());
+            match not_written(&message) {
+                Some(what) => Picture::Needs(vec![what]),
+                None => Picture::Differs(format!("rendering `{example}` panicked: {message}")),
+            }
+        }
+    }
+}
+
+/// Grades every exercise in this process: its facts first (a `todo!()` or a panic in one exercise does not
+/// stop the others), then, if they hold, the picture `check_picture(example)` renders and compares (see
+/// [`draw_picture`]). Each example is rendered once however many exercises it checks. An exercise that
+/// never returns stops the grading here: [`grade_isolated`] gives each a time limit.
+pub fn grade(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), String>) -> Vec<Verdict> {
+    grade_with(exercises, &check_facts, &|example| draw_picture(example, check_picture))
+}
+
+/// The verdicts, from each exercise's facts (`facts`) and the picture of each example (`picture`, asked once
+/// an example).
+fn grade_with(
+    exercises: &[Exercise],
+    facts: &dyn Fn(&Exercise) -> Result<(), Verdict>,
+    picture: &dyn Fn(&str) -> Picture,
+) -> Vec<Verdict> {
+    let mut pictures: HashMap<&str, Picture> = HashMap::new();
     exercises
         .iter()
         .map(|exercise| {
             if !exercise.handed_out {
                 return Verdict::NotHandedOut;
             }
-            match catch_unwind(AssertUnwindSafe(|| (exercise.facts)())) {
-                Ok(Ok(())) => {}
-                Ok(Err(why)) => return Verdict::Failed(why),
-                Err(payload) => {
-                    let message = panic_message(payload.as_ref());
-                    return match not_written(&message) {
-                        Some(what) => Verdict::NotWritten(what),
-                        None => Verdict::Failed(format!("it panicked: {message}")),
-                    };
-                }
+            if let Err(verdict) = facts(exercise) {
+                return verdict;
             }
             let example = exercise.example.to_string();
-            match picture(exercise.example) {
+            match pictures.entry(exercise.example).or_insert_with(|| picture(exercise.example)).clone() {
                 Picture::Expected => Verdict::Passed { example },
                 Picture::Differs(why) => Verdict::Failed(format!("every fact holds, but {why}")),
                 Picture::Needs(blanks) => match blanks.iter().find(|what| exercise_of(what) == exercise.name) {
@@ -237,6 +254,132 @@ pub fn grade(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), 
             }
         })
         .collect()
+}
+
+/// The environment variable that gives each exercise's time limit, in seconds ([`DEFAULT_TIME_LIMIT`]
+/// without it).
+pub const TIME_LIMIT_VARIABLE: &str = "EXERCISE_TIME_LIMIT";
+
+/// An exercise's time limit when [`TIME_LIMIT_VARIABLE`] is not set: each check takes well under a second,
+/// and each picture a few seconds in the default (dev) build, on a busy machine too.
+pub const DEFAULT_TIME_LIMIT: Duration = Duration::from_secs(60);
+
+/// The environment variable that gives each step's memory limit, in mebibytes (no limit without it).
+pub const MEMORY_LIMIT_VARIABLE: &str = "EXERCISE_MEMORY_LIMIT";
+
+/// The limits of each step of [`grade_isolated`], from the environment: one line naming the variable and its
+/// value if it is not a positive number.
+pub fn limits_from_environment() -> Result<Limits, String> {
+    let time = match std::env::var(TIME_LIMIT_VARIABLE) {
+        Ok(value) => limits::seconds(TIME_LIMIT_VARIABLE, &value)?,
+        Err(_) => DEFAULT_TIME_LIMIT,
+    };
+    let memory = match std::env::var(MEMORY_LIMIT_VARIABLE) {
+        Ok(value) => match value.trim().parse::<u64>() {
+            Ok(mib) if mib > 0 => Some(mib << 20),
+            _ => return Err(format!("{MEMORY_LIMIT_VARIABLE} {value:?}: must be a positive number of mebibytes")),
+        },
+        Err(_) => None,
+    };
+    Ok(Limits { time, memory, output: None })
+}
+
+/// The environment variable that tells a grading process it is a step of [`grade_isolated`]:
+/// `facts:<exercise>` or `picture:<example>`.
+const STEP_VARIABLE: &str = "EXERCISE_GRADING_STEP";
+
+/// The environment variable that names the file a step writes its outcome to.
+const OUTCOME_VARIABLE: &str = "EXERCISE_GRADING_OUTCOME";
+
+/// Grades every exercise as [`grade`] does, with each exercise's facts and each example's picture checked in
+/// a process of its own, `child()` (a program that calls [`run_step_if_asked`] first), under `limits`: an
+/// exercise that loops forever, overflows its stack or eats the memory fails, stopped at its limit, and the
+/// others are graded on.
+pub fn grade_isolated(exercises: &[Exercise], limits: &Limits, child: &dyn Fn() -> Command) -> Vec<Verdict> {
+    let seconds = limits.time.as_secs_f64();
+    let facts = |exercise: &Exercise| match run_step(&format!("facts:{}", exercise.name), limits, child) {
+        Ok(outcome) => match outcome.split_once('\n').unwrap_or((outcome.as_str(), "")) {
+            ("hold", _) => Ok(()),
+            ("not written", what) => Err(Verdict::NotWritten(what.to_string())),
+            (_, why) => Err(Verdict::Failed(why.to_string())),
+        },
+        Err(StepEnd::TimedOut) => Err(Verdict::Failed(format!(
+            "stopped at its time limit of {seconds} s before its facts were all checked (does it loop forever?)"
+        ))),
+        Err(StepEnd::Crashed(how)) => Err(Verdict::Failed(format!("checking its facts {how}"))),
+    };
+    let picture = |example: &str| match run_step(&format!("picture:{example}"), limits, child) {
+        Ok(outcome) => match outcome.split_once('\n').unwrap_or((outcome.as_str(), "")) {
+            ("expected", _) => Picture::Expected,
+            ("needs", blanks) => Picture::Needs(blanks.lines().map(str::to_string).collect()),
+            (_, why) => Picture::Differs(why.to_string()),
+        },
+        Err(StepEnd::TimedOut) => Picture::Differs(format!(
+            "drawing `{example}` was stopped at the time limit of {seconds} s (does an exercise it uses loop \
+             forever?)"
+        )),
+        Err(StepEnd::Crashed(how)) => Picture::Differs(format!("drawing `{example}` {how}")),
+    };
+    grade_with(exercises, &facts, &picture)
+}
+
+/// How a step of [`grade_isolated`] ended without an outcome.
+enum StepEnd {
+    /// Stopped at its time limit.
+    TimedOut,
+    /// Ended otherwise, or could not start: what happened, in words.
+    Crashed(String),
+}
+
+/// Runs one step in a process `child()` under `limits`: the outcome it wrote, or how it ended without one.
+fn run_step(step: &str, limits: &Limits, child: &dyn Fn() -> Command) -> Result<String, StepEnd> {
+    let cannot = |e: std::io::Error| StepEnd::Crashed(format!("could not be started: {e}"));
+    let outcome = tempfile::NamedTempFile::new().map_err(cannot)?;
+    let mut command = child();
+    command.env(STEP_VARIABLE, step).env(OUTCOME_VARIABLE, outcome.path());
+    let finished = limits::run(&mut command, limits).map_err(cannot)?;
+    let text = std::fs::read_to_string(outcome.path()).unwrap_or_default();
+    match finished.ending {
+        Ending::Exited(0) if !text.is_empty() => Ok(text),
+        Ending::TimedOut => Err(StepEnd::TimedOut),
+        Ending::Signal(6) => Err(StepEnd::Crashed("crashed (it aborted: a stack overflow, or memory ran out)".into())),
+        Ending::Signal(signal) => Err(StepEnd::Crashed(format!("crashed (signal {signal})"))),
+        Ending::Exited(code) => Err(StepEnd::Crashed(format!("ended without an outcome (exit code {code})"))),
+    }
+}
+
+/// In a process [`grade_isolated`] started: runs the step it asks of `exercises` (its facts, or an example's
+/// picture with `check_picture`), writes the outcome and returns `true`. `false` in any other process.
+pub fn run_step_if_asked(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), String>) -> bool {
+    let (Ok(step), Ok(outcome)) = (std::env::var(STEP_VARIABLE), std::env::var(OUTCOME_VARIABLE)) else {
+        return false;
+    };
+    let text = match step.split_once(':') {
+        Some(("facts", name)) => match exercises.iter().find(|e| e.name == name).map(check_facts) {
+            Some(Ok(())) => "hold".to_string(),
+            Some(Err(Verdict::NotWritten(what))) => format!("not written\n{what}"),
+            Some(Err(verdict)) => format!("failed\n{}", failure(&verdict)),
+            None => format!("failed\nthe grader has no exercise `{name}`"),
+        },
+        Some(("picture", example)) => match draw_picture(example, check_picture) {
+            Picture::Expected => "expected".to_string(),
+            Picture::Differs(why) => format!("differs\n{why}"),
+            Picture::Needs(blanks) => format!("needs\n{}", blanks.join("\n")),
+        },
+        _ => format!("failed\nthe grader has no step `{step}`"),
+    };
+    if let Err(e) = std::fs::write(&outcome, text) {
+        eprintln!("grade: cannot write the outcome of {step} to {outcome}: {e}");
+    }
+    true
+}
+
+/// What a failed verdict says after its "FAILED: ".
+fn failure(verdict: &Verdict) -> String {
+    match verdict {
+        Verdict::Failed(why) => why.clone(),
+        other => other.to_string(),
+    }
 }
 
 /// The report: one line per exercise, then the count.

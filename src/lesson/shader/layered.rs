@@ -100,8 +100,8 @@ pub(crate) fn shade_bottom_up<L: LayerShading>(
 }
 
 /// Layer pruning ([`Step::LayerPruning`]): from the top down, `uncovered` is how much of the layers seen so
-/// far lets through, so a layer's weight is `uncovered * blend`; a layer of no weight is not shaded, and the
-/// loop stops at the first layer that covers everything below it.
+/// far lets through, and a layer's weight follows from it and the layer's blend ([`layer_weight`]); a layer
+/// of no weight is not shaded, and the loop stops at the first layer that covers everything below it.
 #[inline(always)]
 pub(crate) fn shade_pruned<L: LayerShading>(
     layers: &[L],
