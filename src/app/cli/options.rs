@@ -118,7 +118,8 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,
     /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
-    /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png]
+    /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png; with --show-photons,
+    /// out/EXAMPLE-photons.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
     /// No progress bar, summary, notes or warnings. Errors are still printed, and so is what was asked
@@ -255,7 +256,8 @@ pub struct PhotonArgs {
     /// The largest distance from a shaded point at which photons count. [default: the scene's own]
     #[arg(long, value_name = "R", allow_hyphen_values = true, help_heading = HEADING)]
     pub radius: Option<f32>,
-    /// Draw each stored photon as a dot instead of estimating the caustic light from them.
+    /// Draw each stored photon as a dot instead of estimating the caustic light from them. The picture
+    /// goes to out/EXAMPLE-photons.png (without --output): the caustic picture at out/EXAMPLE.png stays.
     #[arg(long, help_heading = HEADING)]
     pub show_photons: bool,
 }
