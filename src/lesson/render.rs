@@ -176,6 +176,13 @@ pub struct RenderStats {
     pub warnings: Vec<String>,
 }
 
+impl RenderStats {
+    /// The photon pass before the render (tracing the photons and building their map); zero without one.
+    pub fn photon_pass(&self) -> Duration {
+        self.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time)
+    }
+}
+
 /// The worker threads the renderer uses: `threads` of them, or one per core, each with a stack of
 /// [`WORKER_STACK_SIZE`].
 pub fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {

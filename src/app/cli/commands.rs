@@ -10,6 +10,7 @@ use crate::instruments::ray_tree::{self, PixelPos};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
+use crate::lesson::render::RenderStats;
 use clap::ValueEnum;
 use std::ffi::OsString;
 use std::time::Instant;
@@ -46,6 +47,23 @@ pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Res
         path.display(),
         picture.scale
     ))
+}
+
+/// What a render cost, as a side-by-side caption says it: its time, from the start of the photon pass when the
+/// scene has a photon map (the slide's photons in all directions and k-d tree against the grid is most of the
+/// difference between two readings of `photon_map`), and its rays.
+pub fn render_cost(stats: &RenderStats) -> String {
+    let rays = stats.counters.total() as f64 * 1e-6;
+    let photon_pass = stats.photon_pass();
+    if stats.photons.is_none() {
+        return format!("{:.2} s, {rays:.2} M rays", stats.elapsed.as_secs_f64());
+    }
+    format!(
+        "{:.2} s ({:.2} s photon pass, {:.2} s render), {rays:.2} M rays",
+        (photon_pass + stats.elapsed).as_secs_f64(),
+        photon_pass.as_secs_f64(),
+        stats.elapsed.as_secs_f64()
+    )
 }
 
 /// The example's options `args` (without the program name) with `--side-by-side` and its value taken out.
@@ -123,12 +141,10 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
             // The inputs have been read: the picture may not replace one.
             input::check_not_an_input(&path, "the side-by-side picture")
         })?;
-        let secs = stats.elapsed.as_secs_f64();
-        let rays = stats.counters.total() as f64 * 1e-6;
         Ok(Panel {
             // Each panel as its options would write it to a PNG: exposed, gamut and tone mapped.
             image: args.film().develop(frame, false).to_rgb8(),
-            caption: format!("{label}: {name} {options}\n{secs:.2} s, {rays:.2} M rays"),
+            caption: format!("{label}: {name} {options}\n{}", render_cost(&stats)),
         })
     };
     let pa = panel("A", &a, &base_text)?;

@@ -6,7 +6,6 @@
 use super::example::{Cli, Example};
 use crate::instruments::study::{self, Timed};
 use crate::lesson::error::{Error, Result};
-use std::time::Duration;
 
 impl<E: Example> study::Subject for E {
     fn render_timed(args: &[String]) -> Result<Timed> {
@@ -16,8 +15,7 @@ impl<E: Example> study::Subject for E {
         })?;
         let (frame, stats) = parsed.render()?;
         // A caustic render's cost includes the photon pass that runs before it.
-        let photon_pass = stats.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time);
-        Ok(Timed { frame, seconds: (stats.elapsed + photon_pass).as_secs_f64(), rays: stats.counters.total() })
+        Ok(Timed { frame, seconds: (stats.elapsed + stats.photon_pass()).as_secs_f64(), rays: stats.counters.total() })
     }
 }
 
