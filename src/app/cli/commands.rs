@@ -5,7 +5,7 @@
 
 use super::example::{Cli, Example};
 use crate::files::output::{check_output, save_atomically};
-use crate::instruments::debug_view::{DebugView, render_view};
+use crate::instruments::debug_view::{DebugView, Legend, render_view_with};
 use crate::instruments::ray_tree::{self, PixelPos};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
@@ -27,13 +27,23 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
 /// with its legend in a strip below it); returns the lines to print (its size, where it went, and its scale).
 pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
+    if let Some(max) = args.common.legend_max
+        && !view.is_heat()
+    {
+        return Err(Error::parameter(
+            "--legend-max",
+            max,
+            format!("the view {label} has no legend: only rays, shadow-rays and depth-reached have one"),
+        ));
+    }
     let path = args.output_path_for(name, &format!("-{label}"));
     check_output(&path, Some(image::ImageFormat::Png))?;
     let (scene, settings) = args.prepare()?;
     // The scene's files have been read: the view may not replace one of them.
     input::check_not_an_input(&path, "the debug view")?;
     let start = Instant::now();
-    let picture = render_view(&scene, &settings, view)?;
+    let legend = Legend { max: args.common.legend_max, ui_scale: args.common.ui_scale };
+    let picture = render_view_with(&scene, &settings, view, legend)?;
     save_atomically(&path, |file| picture.picture.write_to(file, image::ImageFormat::Png))?;
     let (width, height) = picture.picture.dimensions();
     let size = if height > settings.height {
@@ -149,7 +159,7 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
     };
     let pa = panel("A", &a, &base_text)?;
     let pb = panel("B", &b, &format!("{base_text} + {alternative}"))?;
-    let (picture, diff) = a_b_difference(pa, pb)?;
+    let (picture, diff) = a_b_difference(pa, pb, a.common.ui_scale)?;
     save_atomically(&path, |file| picture.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",

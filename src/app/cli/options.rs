@@ -12,6 +12,7 @@ use crate::lesson::render::{MAX_SPP, MAX_THREADS};
 use crate::lesson::scene::RECURSION_SAFETY_CAP;
 use crate::lesson::spectral::{GamutMapping, Illuminant, MAX_WAVELENGTHS, SpectralMode};
 use clap::builder::RangedI64ValueParser;
+use lecture6_viewer_protocol::UI_SCALES;
 use std::path::PathBuf;
 
 /// The help heading of the options every example shares (set on each option, so that an example's own
@@ -51,6 +52,18 @@ fn field_of_view(text: &str) -> std::result::Result<f32, String> {
             FOV_LIMITS.start(),
             FOV_LIMITS.end()
         )),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// The interface scales `--ui-scale` takes: from half the size to four times it.
+pub const UI_SCALES: std::ops::RangeInclusive<f32> = 0.5..=4.0;
+
+/// Reads `--ui-scale`: a number within [`UI_SCALES`]; the refusal names them.
+fn interface_scale(text: &str) -> std::result::Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(scale) if UI_SCALES.contains(&scale) => Ok(scale),
+        Ok(_) => Err(format!("{text} is not from {} to {}", UI_SCALES.start(), UI_SCALES.end())),
         Err(e) => Err(e.to_string()),
     }
 }
@@ -185,6 +198,12 @@ pub struct CommonArgs {
     /// traced per pixel, with its legend in a strip below the picture.
     #[arg(long, value_enum, help_heading = COMMON, conflicts_with_all = ["trace_pixel", "side_by_side"])]
     pub view: Option<DebugView>,
+    /// The top of a heat view's legend (--view rays, shadow-rays, depth-reached): the count (or depth) shown
+    /// white, the scale starting at 1 (or 0). Two views with the same N show the same value in the same
+    /// colour: `--view rays --legend-max 2000` with and without --exhaustive. Larger values are white too.
+    /// [default: the view's own largest value]
+    #[arg(long, value_name = "N", value_parser = whole_number::<u32>(1..=u32::MAX as i64), requires = "view", help_heading = COMMON)]
+    pub legend_max: Option<u32>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
     /// Each panel is developed as its own options say (--exposure, --tonemap, --gamut).
@@ -196,6 +215,10 @@ pub struct CommonArgs {
     /// moves (needs `--features viewer`).
     #[arg(long, help_heading = COMMON)]
     pub window: bool,
+    /// The size of the text, for a projector: the window's interface and its ray tree, and the captions
+    /// --side-by-side and --view write into their pictures, times SCALE (from 0.5 to 4).
+    #[arg(long, value_name = "SCALE", value_parser = interface_scale, default_value_t = 1.0, help_heading = COMMON)]
+    pub ui_scale: f32,
     /// Exposure in stops: the picture is multiplied by 2^EV before it is written (-1 halves the light). For
     /// HDR skies that come out white.
     #[arg(long, value_name = "EV", default_value_t = 0.0, allow_hyphen_values = true, help_heading = PICTURE)]
