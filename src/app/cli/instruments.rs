@@ -20,7 +20,6 @@ impl<E: Example> study::Subject for E {
 }
 
 /// The live window's view of an example's command line.
-#[cfg(feature = "viewer")]
 mod window {
     use super::super::example::{Cli, Example};
     use super::super::run::one_line;
@@ -58,6 +57,14 @@ mod window {
 
         fn reference(&self, name: &str) -> PathBuf {
             self.common.compare.clone().unwrap_or_else(|| Path::new("expected").join(format!("{name}.png")))
+        }
+
+        fn ui_scale(&self) -> f32 {
+            self.common.ui_scale
+        }
+
+        fn pixel(&self) -> Option<(u32, u32)> {
+            self.common.trace_pixel.map(|p| (p.x, p.y))
         }
     }
 }

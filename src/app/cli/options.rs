@@ -56,9 +56,6 @@ fn field_of_view(text: &str) -> std::result::Result<f32, String> {
     }
 }
 
-/// The interface scales `--ui-scale` takes: from half the size to four times it.
-pub const UI_SCALES: std::ops::RangeInclusive<f32> = 0.5..=4.0;
-
 /// Reads `--ui-scale`: a number within [`UI_SCALES`]; the refusal names them.
 fn interface_scale(text: &str) -> std::result::Result<f32, String> {
     match text.parse::<f32>() {
@@ -212,7 +209,8 @@ pub struct CommonArgs {
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
     pub side_by_side: Option<String>,
     /// Open a window that shows the picture building up, with the options as controls and a camera that
-    /// moves (needs `--features viewer`).
+    /// moves (needs the viewer, built once with `cargo build --release -p lecture6-viewer`). With
+    /// --trace-pixel, the window opens on that pixel's ray tree.
     #[arg(long, help_heading = COMMON)]
     pub window: bool,
     /// The size of the text, for a projector: the window's interface and its ray tree, and the captions
