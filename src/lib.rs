@@ -33,7 +33,7 @@
 //! | [`instruments::side_by_side`], [`instruments::compare`] | two renders and their difference in one captioned picture (`--side-by-side`); image differences (`--compare`) |
 //! | [`instruments::progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`instruments::study`] | run time versus error: renders at rising sample counts against a converged reference |
-//! | `instruments::viewer` | the live window (feature `viewer`): the picture building up, the options as controls, a moving camera |
+//! | [`instruments::viewer`] | the live window's example side (the window is the program `lecture6-viewer`, the workspace member `viewer/`): the picture building up, the options as controls, a moving camera |
 //! | [`app::cli`] | the command line every example shares, and the `run` that is every example's `main` |
 //! | [`app::scenes`] | the scenes examples share: the mirror room of the reflection slides, the dispersion studio |
 //! | [`app::workbook`], [`app::assets`] | the bundled textures and the sky; the generated textures and the Utah teapot |

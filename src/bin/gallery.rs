@@ -39,12 +39,20 @@ struct Entry {
     items: Vec<Item>,
 }
 
-/// The options of each variant the doc comment's "Try:" paragraph names (each in backquotes).
-fn try_variants(source: &str) -> Vec<String> {
+/// The options of each variant the doc comment's "Try:" paragraph names (each in backquotes): only what
+/// `is_options` takes for the example's options; the paragraph's other quotes (a scene file's keyword, a
+/// type) are prose.
+fn try_variants(source: &str, is_options: impl Fn(&str) -> bool) -> Vec<String> {
     let doc: Vec<&str> = source.lines().map_while(|l| l.strip_prefix("//!")).map(str::trim).collect();
     let paragraph: Vec<&str> =
         doc.iter().skip_while(|l| !l.starts_with("Try:")).take_while(|l| !l.is_empty()).copied().collect();
-    paragraph.join(" ").split('`').skip(1).step_by(2).map(str::to_string).collect()
+    paragraph.join(" ").split('`').skip(1).step_by(2).filter(|quoted| is_options(quoted)).map(str::to_string).collect()
+}
+
+/// Whether `text` is a list of options of example `E` called `name`: it starts with one, and the example's
+/// command line reads it.
+fn is_options_of<E: Example>(name: &str, text: &str) -> bool {
+    text.starts_with('-') && Cli::<E>::parse_args(name, text.split_whitespace()).is_ok()
 }
 
 /// The example's title: the first line of its doc comment, without the heading mark.
@@ -82,7 +90,7 @@ fn render_item<E: Example>(name: &str, index: usize, options: &str, extra: &[Str
 
 /// Every variant of example `E`.
 fn render_entry<E: Example>(name: &'static str, source: &str, extra: &[String], dir: &Path) -> Entry {
-    let variants = std::iter::once(String::new()).chain(try_variants(source));
+    let variants = std::iter::once(String::new()).chain(try_variants(source, |text| is_options_of::<E>(name, text)));
     let items = variants.enumerate().map(|(i, options)| render_item::<E>(name, i, &options, extra, dir)).collect();
     Entry { name, title: title(source), items }
 }
@@ -190,12 +198,27 @@ fn main() -> ExitCode {
 
 #[cfg(test)]
 mod tests {
-    use super::{title, try_variants};
+    use super::{examples, is_options_of, title, try_variants};
 
     #[test]
     fn the_try_paragraph_gives_one_variant_per_quoted_command() {
         let source = "//! # Glass (slides)\n//!\n//! Try: `--ior 1.33` (water), `--max-depth\n//! 2`.\n//!\n//! `--not-this`\nuse x;";
-        assert_eq!(try_variants(source), ["--ior 1.33", "--max-depth 2"]);
+        assert_eq!(try_variants(source, |_| true), ["--ior 1.33", "--max-depth 2"]);
         assert_eq!(title(source), "Glass (slides)");
+    }
+
+    /// scene_file's "Try:" paragraph quotes the file's keywords (`ior`, `Node`, `Cube`, ...) in its prose:
+    /// no variants of those, only of its one option.
+    #[test]
+    fn variants_come_only_from_the_examples_own_options() {
+        let source = include_str!("../../examples/scene_file.rs");
+        let variants = try_variants(source, |text| is_options_of::<examples::scene_file::Options>("scene_file", text));
+        assert_eq!(variants, ["--skip-unsupported"]);
+        // Every quoted option of fresnel's paragraph is one: none is lost.
+        let source = include_str!("../../examples/fresnel.rs");
+        let all = try_variants(source, |text| text.starts_with("--"));
+        let kept = try_variants(source, |text| is_options_of::<examples::fresnel::Options>("fresnel", text));
+        assert!(kept.len() >= 2 && kept == all, "{kept:?} of {all:?}");
+        assert!(!is_options_of::<examples::fresnel::Options>("fresnel", "--no-such-option"));
     }
 }

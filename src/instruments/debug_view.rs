@@ -12,7 +12,9 @@
 //!   the time goes, and what adaptive depth control (`--exhaustive` turns it off) and layer skipping
 //!   (`--shade-every-layer` in the layered example) save. The ray counts are shown on a log scale (a matte
 //!   surface's few rays and a glass's hundreds both show), the depth reached on a linear one, each with its
-//!   legend in a strip below the view ([`DebugImage::picture`], [`Tick`]).
+//!   legend in a strip below the view ([`DebugImage::picture`], [`Tick`]). Each view's scale runs to its own
+//!   largest value, or to one fixed with `--legend-max` ([`Legend`]), which two views can share, so that
+//!   the colours of `--view rays` with and without `--exhaustive` compare.
 //!
 //! Each view comes with its scale, in words, which the example prints.
 //!
@@ -51,6 +53,13 @@ pub enum DebugView {
     DepthReached,
 }
 
+impl DebugView {
+    /// Whether the view is a heat map (`rays`, `shadow-rays`, `depth-reached`), with a legend below it.
+    pub fn is_heat(self) -> bool {
+        matches!(self, DebugView::Rays | DebugView::ShadowRays | DebugView::DepthReached)
+    }
+}
+
 /// A debug view: the picture, the range of the quantity it shows and its scale in words.
 pub struct DebugImage {
     /// The false-colour view, of the render's size: the quantity mapped straight to 8-bit codes (no sRGB
@@ -67,6 +76,23 @@ pub struct DebugImage {
     pub scale: String,
     /// The labelled ticks of the heat views' legend, left to right; none for the other views.
     pub ticks: Vec<Tick>,
+}
+
+/// How a heat view's legend is drawn: the top of its scale and the size of its text.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Legend {
+    /// The value shown white, at the top of the scale (`--legend-max`): fixed, so that two views drawn with
+    /// the same one show the same count in the same colour; the scale then starts at 1 (a count) or 0 (the
+    /// depth reached), and larger values are white too. `None`: the scale runs over the view's own values.
+    pub max: Option<u32>,
+    /// The interface scale of the legend's text (`--ui-scale`).
+    pub ui_scale: f32,
+}
+
+impl Default for Legend {
+    fn default() -> Legend {
+        Legend { max: None, ui_scale: 1.0 }
+    }
 }
 
 /// Where no surface is seen, the geometric views show this colour (a dark blue no value maps to); the heat
@@ -144,11 +170,21 @@ impl Summary {
 /// the range of the values, once for the colours) rather than keep what they measured, and the heat views
 /// keep one number a pixel of what the pixel's rays cost.
 pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) -> Result<DebugImage> {
+    render_view_with(scene, settings, view, Legend::default())
+}
+
+/// [`render_view`] with the heat views' legend drawn as `legend` says.
+pub fn render_view_with(
+    scene: &Scene,
+    settings: &RenderSettings,
+    view: DebugView,
+    legend: Legend,
+) -> Result<DebugImage> {
     settings.check()?;
     let (w, h) = (settings.width, settings.height);
     let pixels = w as usize * h as usize;
     let camera = scene.camera.frame(w, h);
-    let geometric = matches!(view, DebugView::Normals | DebugView::Uv | DebugView::Depth);
+    let geometric = !view.is_heat();
     // On the run's worker threads when it is called on one (one pool for the run), else on a pool of its own.
     let (bytes, range, heat_scale, sources) = on_workers(settings.threads, |_| -> Result<_> {
         let costs: Vec<f32> = if geometric {
@@ -179,7 +215,7 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
             .fold(Summary::new, |s, i| s.add(sample(i)))
             .reduce(Summary::new, Summary::merge);
         let range = if summary.lo <= summary.hi { (summary.lo, summary.hi) } else { (0.0, 0.0) };
-        let heat_scale = heat_scale(view, summary.smallest_count, range);
+        let heat_scale = heat_scale(view, summary.smallest_count, range, legend.max);
         let colour = |s: Sample| -> [u8; 3] {
             match (view, s) {
                 (_, Sample::Nothing) => NO_HIT,
@@ -197,9 +233,15 @@ pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) ->
         Ok((bytes, range, heat_scale, summary.sources))
     })??;
     let image = image::RgbImage::from_raw(w, h, bytes).expect("one colour per pixel");
-    let scale = describe(view, range, heat_scale, &sources);
+    let mut scale = describe(view, range, heat_scale, &sources);
+    if let (Some(top), Some(_)) = (legend.max, heat_scale) {
+        scale += &format!("; the scale's top is fixed by --legend-max {top}");
+        if range.1 > top as f32 {
+            scale += &format!(": the largest value, {}, is above it and shown white", range.1);
+        }
+    }
     let (picture, ticks) = match heat_scale {
-        Some(heat_scale) => legend::with_legend(&image, heat_scale, &legend_caption(view))?,
+        Some(heat_scale) => legend::with_legend(&image, heat_scale, &legend_caption(view), legend.ui_scale)?,
         None => (image.clone(), Vec::new()),
     };
     Ok(DebugImage { image, picture, range, scale, ticks })
@@ -227,14 +269,22 @@ fn cost(view: DebugView, counters: &Counters) -> f32 {
 
 /// How a heat view places its values on the ramp: the ray counts by their logarithm, from the smallest count
 /// of at least 1 (`smallest_count`, infinite when there is none) to the largest; the depth reached (a few
-/// small whole numbers) evenly over its range. `None` for the geometric views.
-fn heat_scale(view: DebugView, smallest_count: f32, (lo, hi): (f32, f32)) -> Option<HeatScale> {
+/// small whole numbers) evenly over its range. With a fixed top `max`, from 1 (a count) or 0 (a depth) to
+/// it. `None` for the geometric views.
+fn heat_scale(view: DebugView, smallest_count: f32, (lo, hi): (f32, f32), max: Option<u32>) -> Option<HeatScale> {
+    let max = max.map(|m| m as f32);
     match view {
         DebugView::Normals | DebugView::Uv | DebugView::Depth => None,
-        DebugView::DepthReached => Some(HeatScale::Linear { lo, hi }),
-        DebugView::Rays | DebugView::ShadowRays => {
-            Some(HeatScale::Log { lo: if smallest_count.is_finite() { smallest_count } else { 1.0 }, hi: hi.max(1.0) })
-        }
+        DebugView::DepthReached => Some(match max {
+            Some(hi) => HeatScale::Linear { lo: 0.0, hi },
+            None => HeatScale::Linear { lo, hi },
+        }),
+        DebugView::Rays | DebugView::ShadowRays => Some(match max {
+            Some(hi) => HeatScale::Log { lo: 1.0, hi },
+            None => {
+                HeatScale::Log { lo: if smallest_count.is_finite() { smallest_count } else { 1.0 }, hi: hi.max(1.0) }
+            }
+        }),
     }
 }
 
@@ -273,7 +323,8 @@ fn describe(
             format!("shadow rays per pixel, on a log scale: {ramp} = {heat_lo} to {heat_hi}; dark blue: none; {legend}")
         }
         DebugView::DepthReached => format!(
-            "deepest ray per pixel, on a linear scale: {ramp} = depth {lo} to {hi} (0: the camera ray only); {legend}"
+            "deepest ray per pixel, on a linear scale: {ramp} = depth {heat_lo} to {heat_hi} (0: the camera ray only); \
+             {legend}"
         ),
     }
 }

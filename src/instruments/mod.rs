@@ -9,5 +9,4 @@ pub mod ray_tree;
 pub mod side_by_side;
 pub mod study;
 pub mod tone_mapping;
-#[cfg(feature = "viewer")]
 pub mod viewer;

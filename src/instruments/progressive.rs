@@ -62,7 +62,8 @@ pub enum Update<'a> {
 /// How a progressive render ended.
 #[derive(Debug)]
 pub enum Outcome {
-    /// Every tile was drawn: the picture, the same as [`crate::lesson::render::render`]'s, and its statistics.
+    /// Every tile was drawn: the picture, the same as [`crate::lesson::render::render`]'s, and its statistics,
+    /// whose rays are the render's too (the coarse pass's are not counted).
     Finished(Frame, Box<RenderStats>),
     /// The cancel flag was set before the last tile.
     Cancelled,
@@ -159,7 +160,7 @@ pub fn render_progressive(
     let coarse = coarse_settings(settings);
     let coarse_job = RenderJob::new(scene, &coarse, job.plan().clone())?;
     let start = Instant::now();
-    let Some((coarse, coarse_rays)) = quick_frame_of(&coarse_job, &coarse, cancel) else {
+    let Some((coarse, _)) = quick_frame_of(&coarse_job, &coarse, cancel) else {
         return Ok(Outcome::Cancelled);
     };
     on_update(Update::Coarse(&coarse));
@@ -167,7 +168,8 @@ pub fn render_progressive(
     let tiles = tiles(settings.width, settings.height);
     let next = AtomicUsize::new(0);
     let frame = Mutex::new(Frame::new(settings.width, settings.height));
-    let counters = Mutex::new(coarse_rays);
+    // The picture's rays, as the plain render counts them: the coarse pass is only shown.
+    let counters = Mutex::new(Counters::default());
     // Every worker takes the next tile in order until none is left or the render is cancelled.
     rayon::broadcast(|_| {
         let mut rays = Counters::default();

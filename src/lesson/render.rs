@@ -176,6 +176,13 @@ pub struct RenderStats {
     pub warnings: Vec<String>,
 }
 
+impl RenderStats {
+    /// The photon pass before the render (tracing the photons and building their map); zero without one.
+    pub fn photon_pass(&self) -> Duration {
+        self.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time)
+    }
+}
+
 thread_local! {
     /// The `threads` asked of the [`thread_pool`] whose worker this thread is, if it is one.
     static WORKER_OF: std::cell::Cell<Option<Option<usize>>> = const { std::cell::Cell::new(None) };

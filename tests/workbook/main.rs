@@ -11,6 +11,7 @@ mod assets;
 mod bad_input;
 mod beyond;
 mod branching;
+mod captions;
 mod command_line;
 mod course_look;
 mod cubemap_layout;

@@ -347,6 +347,32 @@ fn show_photons_draws_dots_where_photons_landed() {
     assert!(white(&dots) > white(&estimate) + 20, "{} white pixels, {} without dots", white(&dots), white(&estimate));
 }
 
+/// `--show-photons` draws the photons, not the caustic: without `-o` its picture has a name of its own, and the
+/// picture the example wrote before stays as it was.
+#[test]
+fn show_photons_writes_a_picture_of_its_own_name() {
+    let dir = common::root().join("target/photon-map-tests/show-photons");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |extra: &[&str]| {
+        let args = ["--width", "48", "--height", "36", "--photons", "2000", "-q"];
+        let out = std::process::Command::new(common::example_binary("photon_map"))
+            .args(args.iter().chain(extra))
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{extra:?}: {}", String::from_utf8_lossy(&out.stderr));
+    };
+    run(&[]);
+    let kept = std::fs::read(dir.join("out/photon_map.png")).unwrap();
+    run(&["--show-photons"]);
+    assert_eq!(std::fs::read(dir.join("out/photon_map.png")).unwrap(), kept, "--show-photons replaced the picture");
+    let dots = image::open(dir.join("out/photon_map-photons.png")).unwrap().to_rgb8();
+    assert_ne!(dots.as_raw(), image::load_from_memory(&kept).unwrap().to_rgb8().as_raw(), "no dots drawn");
+    let cli = common::parse::<photon_map::Options>(&["--show-photons", "--compare", "x.png"]);
+    assert_eq!(cli.output_path("photon_map"), std::path::Path::new("out/photon_map-photons-compared.png"));
+}
+
 #[test]
 fn impossible_photon_settings_are_one_line_naming_the_value() {
     for (args, needle) in [

@@ -5,11 +5,12 @@
 
 use super::example::{Cli, Example, matches_within_f32};
 use crate::files::output::{check_output, save_atomically};
-use crate::instruments::debug_view::{DebugView, render_view};
+use crate::instruments::debug_view::{DebugView, Legend, render_view_with};
 use crate::instruments::ray_tree::{self, PixelPos};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
+use crate::lesson::render::RenderStats;
 use clap::ValueEnum;
 use std::ffi::OsString;
 use std::time::Instant;
@@ -26,13 +27,23 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
 /// with its legend in a strip below it); returns the lines to print (its size, where it went, and its scale).
 pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Result<String> {
     let label = view.to_possible_value().map_or(String::new(), |v| v.get_name().to_string());
+    if let Some(max) = args.common.legend_max
+        && !view.is_heat()
+    {
+        return Err(Error::parameter(
+            "--legend-max",
+            max,
+            format!("the view {label} has no legend: only rays, shadow-rays and depth-reached have one"),
+        ));
+    }
     let path = args.output_path_for(name, &format!("-{label}"));
     check_output(&path, Some(image::ImageFormat::Png))?;
     let (scene, settings) = args.prepare()?;
     // The scene's files have been read: the view may not replace one of them.
     input::check_not_an_input(&path, "the debug view")?;
     let start = Instant::now();
-    let picture = render_view(&scene, &settings, view)?;
+    let legend = Legend { max: args.common.legend_max, ui_scale: args.common.ui_scale };
+    let picture = render_view_with(&scene, &settings, view, legend)?;
     save_atomically(&path, |file| picture.picture.write_to(file, image::ImageFormat::Png))?;
     let (width, height) = picture.picture.dimensions();
     let size = if height > settings.height {
@@ -46,6 +57,23 @@ pub fn write_view<E: Example>(name: &str, args: &Cli<E>, view: DebugView) -> Res
         path.display(),
         picture.scale
     ))
+}
+
+/// What a render cost, as a side-by-side caption says it: its time, from the start of the photon pass when the
+/// scene has a photon map (the slide's photons in all directions and k-d tree against the grid is most of the
+/// difference between two readings of `photon_map`), and its rays.
+pub fn render_cost(stats: &RenderStats) -> String {
+    let rays = stats.counters.total() as f64 * 1e-6;
+    let photon_pass = stats.photon_pass();
+    if stats.photons.is_none() {
+        return format!("{:.2} s, {rays:.2} M rays", stats.elapsed.as_secs_f64());
+    }
+    format!(
+        "{:.2} s ({:.2} s photon pass, {:.2} s render), {rays:.2} M rays",
+        (photon_pass + stats.elapsed).as_secs_f64(),
+        photon_pass.as_secs_f64(),
+        stats.elapsed.as_secs_f64()
+    )
 }
 
 /// The example's options `args` (without the program name) with `--side-by-side` and its value taken out.
@@ -121,17 +149,15 @@ pub fn side_by_side<E: Example>(name: &str, args: &[OsString], alternative: &str
             // The inputs have been read: the picture may not replace one.
             input::check_not_an_input(&path, "the side-by-side picture")
         })?;
-        let secs = stats.elapsed.as_secs_f64();
-        let rays = stats.counters.total() as f64 * 1e-6;
         Ok(Panel {
             // Each panel as its options would write it to a PNG: exposed, gamut and tone mapped.
             image: args.film().develop(frame, false).to_rgb8(),
-            caption: format!("{label}: {name} {options}\n{secs:.2} s, {rays:.2} M rays"),
+            caption: format!("{label}: {name} {options}\n{}", render_cost(&stats)),
         })
     };
     let pa = panel("A", &a, &base_text)?;
     let pb = panel("B", &b, &format!("{base_text} + {alternative}"))?;
-    let (picture, diff) = a_b_difference(pa, pb)?;
+    let (picture, diff) = a_b_difference(pa, pb, a.common.ui_scale)?;
     save_atomically(&path, |file| picture.write_to(file, image::ImageFormat::Png))?;
     Ok(format!(
         "{name}: A | B | difference, {}x{} -> {}\n{name}: A - B: {diff}\n",

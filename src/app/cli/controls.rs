@@ -1,5 +1,5 @@
-//! The live window's controls made from an example's command line (feature `viewer`): every option of its clap
-//! command (the example's own and the common ones) becomes a [`Control`] of the kind its definition asks for: a
+//! The live window's controls made from an example's command line: every option of its clap command
+//! (the example's own and the common ones) becomes a [`Control`] of the kind its definition asks for: a
 //! flag a check box, an option with possible values a choice, a whole number a drag value within the range
 //! its parser takes, a real number a drag value, anything else a text field. The window reads a changed
 //! control back through the example's own parser ([`ExampleOptions::from_controls`], implemented in
@@ -8,16 +8,20 @@
 //! [`ExampleOptions::from_controls`]: crate::instruments::viewer::ExampleOptions::from_controls
 
 use super::example::{Cli, Example};
-use crate::instruments::viewer::controls::{Control, Controls, Kind};
+use crate::instruments::viewer::controls::{Control, Controls, Kind, StepBox};
+use crate::lesson::beyond::Step;
 use clap::ArgAction;
 use clap::error::ErrorKind;
+use clap::parser::ValueSource;
 use std::any::TypeId;
 use std::ffi::OsString;
 
 /// Options (by their ids) that make no sense as a control: the window is already open; saving, comparing
 /// and printing are the window's buttons; a click on the picture traces a pixel; debug views and side by
-/// side pictures are files the command line writes; the render threads are started once, with the window.
-const NOT_CONTROLS: [&str; 12] = [
+/// side pictures are files the command line writes; the render threads are started once, with the window;
+/// the interface's scale is the window's own control. The steps beyond the slides are check boxes of their
+/// own ([`Controls::steps`]) in place of the options that spell them.
+const NOT_CONTROLS: [&str; 18] = [
     "help",
     "version",
     "window",
@@ -28,9 +32,19 @@ const NOT_CONTROLS: [&str; 12] = [
     "trace_sample",
     "trace_format",
     "view",
+    "legend_max",
     "side_by_side",
     "threads",
+    "ui_scale",
+    "slide",
+    "step",
+    "no_step",
+    "exhaustive",
 ];
+
+/// Options (by their ids) that are no controls but keep the value given on the command line in the window
+/// ([`Controls::fixed`]).
+const FIXED: [&str; 4] = ["output", "compare", "threads", "ui_scale"];
 
 /// The kind of value the option `arg` of `command` takes; `value` is its current one.
 fn kind_of(command: &clap::Command, arg: &clap::Arg, value: &str) -> Kind {
@@ -105,6 +119,21 @@ pub fn controls<E: Example>(name: &str, args: &[OsString]) -> Result<Controls, c
     let mut command = Cli::<E>::command_named(name);
     let argv = std::iter::once(OsString::from(name)).chain(args.iter().cloned());
     let matches = command.try_get_matches_from_mut(argv)?;
+    let steps = <Cli<E> as clap::FromArgMatches>::from_arg_matches(&matches)?.steps();
+    let steps = Step::ALL
+        .into_iter()
+        .map(|step| StepBox { name: step.name().into(), summary: step.summary().into(), taken: steps.has(step) })
+        .collect();
+    let fixed = command
+        .get_arguments()
+        .filter(|arg| FIXED.contains(&arg.get_id().as_str()))
+        .filter(|arg| matches.value_source(arg.get_id().as_str()) == Some(ValueSource::CommandLine))
+        .flat_map(|arg| {
+            let long = format!("--{}", arg.get_long().unwrap_or_default());
+            let values = matches.get_raw(arg.get_id().as_str()).into_iter().flatten();
+            values.flat_map(move |v| [long.clone(), v.to_string_lossy().into_owned()])
+        })
+        .collect();
     let controls: Vec<Control> = command
         .get_arguments()
         .filter(|arg| !NOT_CONTROLS.contains(&arg.get_id().as_str()))
@@ -123,5 +152,5 @@ pub fn controls<E: Example>(name: &str, args: &[OsString]) -> Result<Controls, c
             Some(Control { long, help, heading, kind, value, optional, placeholder: placeholder(&full_help) })
         })
         .collect();
-    Ok(Controls::new(name, controls))
+    Ok(Controls::new(name, controls, steps, fixed))
 }

@@ -305,9 +305,13 @@ impl<E: Example> Cli<E> {
 
     /// Where the picture of the example called `name` goes: `--output`, or `out/<picture name>.png` (see
     /// [`Example::picture_name`]); with `--compare`, `out/<picture name>-compared.png`, so that comparing
-    /// another version with a reference never replaces the render a student kept at `out/<picture name>.png`.
+    /// another version with a reference never replaces the render a student kept at `out/<picture name>.png`;
+    /// with `--show-photons`, whose picture shows the photons instead of the caustic light,
+    /// `out/<picture name>-photons.png`, for the same reason.
     pub fn output_path(&self, name: &str) -> PathBuf {
-        self.output_path_for(name, if self.common.compare.is_some() { "-compared" } else { "" })
+        let photons = if self.common.photons.show_photons { "-photons" } else { "" };
+        let compared = if self.common.compare.is_some() { "-compared" } else { "" };
+        self.output_path_for(name, &format!("{photons}{compared}"))
     }
 
     /// Where a picture of the example called `name` goes: `--output`, or `out/<picture name><suffix>.png`

@@ -6,7 +6,6 @@
 use super::example::{Cli, Example};
 use crate::instruments::study::{self, Timed};
 use crate::lesson::error::{Error, Result};
-use std::time::Duration;
 
 impl<E: Example> study::Subject for E {
     fn render_timed(args: &[String]) -> Result<Timed> {
@@ -16,13 +15,11 @@ impl<E: Example> study::Subject for E {
         })?;
         let (frame, stats) = parsed.render()?;
         // A caustic render's cost includes the photon pass that runs before it.
-        let photon_pass = stats.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time);
-        Ok(Timed { frame, seconds: (stats.elapsed + photon_pass).as_secs_f64(), rays: stats.counters.total() })
+        Ok(Timed { frame, seconds: (stats.elapsed + stats.photon_pass()).as_secs_f64(), rays: stats.counters.total() })
     }
 }
 
 /// The live window's view of an example's command line.
-#[cfg(feature = "viewer")]
 mod window {
     use super::super::example::{Cli, Example};
     use super::super::run::one_line;
@@ -60,6 +57,14 @@ mod window {
 
         fn reference(&self, name: &str) -> PathBuf {
             self.common.compare.clone().unwrap_or_else(|| Path::new("expected").join(format!("{name}.png")))
+        }
+
+        fn ui_scale(&self) -> f32 {
+            self.common.ui_scale
+        }
+
+        fn pixel(&self) -> Option<(u32, u32)> {
+            self.common.trace_pixel.map(|p| (p.x, p.y))
         }
     }
 }

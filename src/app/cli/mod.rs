@@ -14,7 +14,6 @@
 
 pub mod commands;
 mod console;
-#[cfg(feature = "viewer")]
 mod controls;
 mod example;
 mod help;
@@ -25,7 +24,6 @@ mod run;
 mod values;
 
 pub use console::{print_stderr, print_stdout};
-#[cfg(feature = "viewer")]
 pub use controls::controls;
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};

@@ -13,6 +13,7 @@ use crate::lesson::render::{MAX_SPP, MAX_THREADS};
 use crate::lesson::scene::RECURSION_SAFETY_CAP;
 use crate::lesson::spectral::{GamutMapping, Illuminant, MAX_WAVELENGTHS, SpectralMode};
 use clap::builder::RangedI64ValueParser;
+use lecture6_viewer_protocol::UI_SCALES;
 use std::path::PathBuf;
 
 /// The help heading of the options every example shares (set on each option, so that an example's own
@@ -52,6 +53,15 @@ fn field_of_view(text: &str) -> std::result::Result<f32, String> {
             FOV_LIMITS.start(),
             FOV_LIMITS.end()
         )),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// Reads `--ui-scale`: a number within [`UI_SCALES`]; the refusal names them.
+fn interface_scale(text: &str) -> std::result::Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(scale) if UI_SCALES.contains(&scale) => Ok(scale),
+        Ok(_) => Err(format!("{text} is not from {} to {}", UI_SCALES.start(), UI_SCALES.end())),
         Err(e) => Err(e.to_string()),
     }
 }
@@ -119,7 +129,8 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 1, help_heading = COMMON)]
     pub seed: u64,
     /// Where to write the picture: .png is 8-bit sRGB, .exr and .hdr are linear floating point.
-    /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png]
+    /// [default: out/EXAMPLE.png; with --compare, out/EXAMPLE-compared.png; with --show-photons,
+    /// out/EXAMPLE-photons.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
     /// No progress bar, summary, notes or warnings. Errors are still printed, and so is what was asked
@@ -185,6 +196,12 @@ pub struct CommonArgs {
     /// traced per pixel, with its legend in a strip below the picture.
     #[arg(long, value_enum, help_heading = COMMON, conflicts_with_all = ["trace_pixel", "side_by_side"])]
     pub view: Option<DebugView>,
+    /// The top of a heat view's legend (--view rays, shadow-rays, depth-reached): the count (or depth) shown
+    /// white, the scale starting at 1 (or 0). Two views with the same N show the same value in the same
+    /// colour: `--view rays --legend-max 2000` with and without --exhaustive. Larger values are white too.
+    /// [default: the view's own largest value]
+    #[arg(long, value_name = "N", value_parser = whole_number::<u32>(1..=u32::MAX as i64), requires = "view", help_heading = COMMON)]
+    pub legend_max: Option<u32>,
     /// Render the example twice, with its options and with OPTIONS added (e.g. "--fresnel exact"), and write
     /// one picture A | B | difference heat map with captions (to --output, or out/EXAMPLE-side-by-side.png).
     /// Each panel is developed as its own options say (--exposure, --tonemap, --gamut).
@@ -193,9 +210,14 @@ pub struct CommonArgs {
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true, help_heading = COMMON)]
     pub side_by_side: Option<String>,
     /// Open a window that shows the picture building up, with the options as controls and a camera that
-    /// moves (needs `--features viewer`).
+    /// moves (needs the viewer, built once with `cargo build --release -p lecture6-viewer`). With
+    /// --trace-pixel, the window opens on that pixel's ray tree.
     #[arg(long, help_heading = COMMON)]
     pub window: bool,
+    /// The size of the text, for a projector: the window's interface and its ray tree, and the captions
+    /// --side-by-side and --view write into their pictures, times SCALE (from 0.5 to 4).
+    #[arg(long, value_name = "SCALE", value_parser = interface_scale, default_value_t = 1.0, help_heading = COMMON)]
+    pub ui_scale: f32,
     /// Exposure in stops: the picture is multiplied by 2^EV before it is written (-1 halves the light). For
     /// HDR skies that come out white.
     #[arg(long, value_name = "EV", default_value_t = 0.0, allow_hyphen_values = true, help_heading = PICTURE)]
@@ -261,7 +283,8 @@ pub struct PhotonArgs {
     /// The largest distance from a shaded point at which photons count. [default: the scene's own]
     #[arg(long, value_name = "R", allow_hyphen_values = true, help_heading = HEADING)]
     pub radius: Option<f32>,
-    /// Draw each stored photon as a dot instead of estimating the caustic light from them.
+    /// Draw each stored photon as a dot instead of estimating the caustic light from them. The picture
+    /// goes to out/EXAMPLE-photons.png (without --output): the caustic picture at out/EXAMPLE.png stays.
     #[arg(long, help_heading = HEADING)]
     pub show_photons: bool,
 }

@@ -173,20 +173,11 @@ fn clap_exit(name: &str, message: &clap::Error) -> ExitCode {
 }
 
 /// `--window`: the live viewer, with the options as given on the command line, and as its controls.
-#[cfg(feature = "viewer")]
 fn open_window<E: Example>(name: &str, args: Cli<E>, argv: Vec<std::ffi::OsString>) -> ExitCode {
     match super::controls::<E>(name, &argv) {
         Ok(controls) => crate::instruments::viewer::run(name, args, controls),
         Err(e) => refuse(&format!("{name}: {}", one_line(&e.to_string()))),
     }
-}
-
-/// `--window` in a build without the viewer: say how to get it.
-#[cfg(not(feature = "viewer"))]
-fn open_window<E: Example>(name: &str, _args: Cli<E>, _argv: Vec<std::ffi::OsString>) -> ExitCode {
-    refuse(&format!(
-        "{name}: --window needs the viewer: cargo run --release --features viewer --example {name} -- --window"
-    ))
 }
 
 /// A clap error message on one line: its lines joined, without the usage and the pointer to --help, and

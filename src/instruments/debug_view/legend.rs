@@ -1,15 +1,15 @@
 //! The legend of a heat view (`--view rays`, `shadow-rays`, `depth-reached`): the ramp's colour bar (the one
 //! every heat map draws, [`ramp_bar_under`]), ticks under it labelled with the values whose colours the bar
 //! shows there, and a caption saying what is counted and on which scale, in the bundled font the captions of
-//! `--side-by-side` use ([`compose`]).
+//! `--side-by-side` use ([`compose_scaled`]).
 //!
 //! The legend is a strip added below the view, never drawn over it: pixel (x, y) of the picture is pixel
 //! (x, y) of the render, and the picture is taller than the render by the strip.
 
 use super::heat;
 use crate::instruments::compare::ramp_bar_under;
-use crate::instruments::font::{CAPTION_BACKGROUND, CAPTION_INK, caption_font, draw_text, text_width};
-use crate::instruments::side_by_side::{Panel, compose};
+use crate::instruments::font::{CAPTION_BACKGROUND, CAPTION_INK, caption_font, caption_size, draw_text, text_width};
+use crate::instruments::side_by_side::{Panel, compose_scaled};
 use crate::lesson::error::Result;
 use ab_glyph::ScaleFont;
 
@@ -112,13 +112,14 @@ fn label_left(x: u32, label_width: f32, width: u32) -> f32 {
 
 /// The heat view `view` with its legend in a strip below it: the colour bar of the ramp, the ticks of
 /// `scale` that fit with their labels, and `caption` (what is shown, on which scale) wrapped to the view's
-/// width; and the ticks drawn.
+/// width, the text at the interface scale `ui_scale` ([`caption_size`]); and the ticks drawn.
 pub(super) fn with_legend(
     view: &image::RgbImage,
     scale: HeatScale,
     caption: &str,
+    ui_scale: f32,
 ) -> Result<(image::RgbImage, Vec<Tick>)> {
-    let font = caption_font()?;
+    let font = caption_font(caption_size(view.width(), ui_scale))?;
     let ticks = ticks(scale, view.width(), |label| text_width(&font, label));
     let barred = ramp_bar_under(view, heat);
     let line_height = (font.height() + font.line_gap()).ceil() as u32;
@@ -137,6 +138,6 @@ pub(super) fn with_legend(
         let left = label_left(tick.x, text_width(&font, &tick.label), view.width());
         draw_text(&mut labelled, &font, &tick.label, left, baseline);
     }
-    let picture = compose(&[Panel { image: labelled, caption: caption.to_string() }])?;
+    let picture = compose_scaled(&[Panel { image: labelled, caption: caption.to_string() }], ui_scale)?;
     Ok((picture, ticks))
 }

@@ -8,18 +8,28 @@ use ab_glyph::{Font, FontRef, PxScale, PxScaleFont, ScaleFont, point};
 /// DejaVu Sans Mono, as a TrueType file.
 pub const DEJAVU_SANS_MONO: &[u8] = include_bytes!("DejaVuSansMono.ttf");
 
-/// The captions' font size in pixels.
+/// The captions' font size in pixels, on a picture that fits [`SCREEN_WIDTH`].
 pub const CAPTION_SIZE: f32 = 14.0;
+/// The width of the screen a picture with captions is made for, in pixels: a projector's 1600 x 1000 (or a
+/// laptop's). A wider picture is shown scaled down to it, so its captions are drawn larger by as much.
+pub const SCREEN_WIDTH: f32 = 1600.0;
 /// The background text is written on.
 pub const CAPTION_BACKGROUND: [u8; 3] = [32, 32, 32];
 /// The colour of the text.
 pub const CAPTION_INK: [u8; 3] = [235, 235, 235];
 
-/// The bundled font at the captions' size.
-pub fn caption_font() -> Result<PxScaleFont<FontRef<'static>>> {
+/// The font size of the captions of a picture `width` pixels wide, at the interface scale `ui_scale`
+/// (`--ui-scale`): [`CAPTION_SIZE`] times the scale, and larger by as much as the picture is wider than
+/// [`SCREEN_WIDTH`], so that shown on that screen its text is as large as a narrower picture's.
+pub fn caption_size(width: u32, ui_scale: f32) -> f32 {
+    CAPTION_SIZE * ui_scale * (width as f32 / SCREEN_WIDTH).max(1.0)
+}
+
+/// The bundled font at the size `size`, in pixels (see [`caption_size`]).
+pub fn caption_font(size: f32) -> Result<PxScaleFont<FontRef<'static>>> {
     let font = FontRef::try_from_slice(DEJAVU_SANS_MONO)
         .map_err(|e| Error::parameter("bundled caption font", "DejaVuSansMono", e))?;
-    Ok(font.into_scaled(PxScale::from(CAPTION_SIZE)))
+    Ok(font.into_scaled(PxScale::from(size)))
 }
 
 /// The width of `text` in pixels, written in `font`.

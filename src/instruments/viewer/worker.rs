@@ -44,8 +44,9 @@ pub struct Shown {
     pub width: u32,
     /// Height of `rgb`, in pixels.
     pub height: u32,
-    /// Changed since the window last uploaded it.
-    pub dirty: bool,
+    /// The rectangle of `rgb` changed since the window was last sent it, as (left, top, right, bottom), the
+    /// right and bottom edges excluded; `None` when nothing changed.
+    changed: Option<[u32; 4]>,
     /// How the rendered light becomes `rgb`.
     pub film: Film,
     /// Tiles of the full-quality picture drawn, of `tiles_total`.
@@ -80,7 +81,7 @@ impl Shown {
             rgb: Vec::new(),
             width: 0,
             height: 0,
-            dirty: false,
+            changed: None,
             film: Film::default(),
             tiles_done: 0,
             tiles_total: 0,
@@ -102,6 +103,7 @@ impl Shown {
         if (self.width, self.height) != (settings.width, settings.height) {
             self.rgb = vec![0; settings.width as usize * settings.height as usize * 3];
             (self.width, self.height) = (settings.width, settings.height);
+            self.changed = None;
         }
         self.tiles_done = 0;
         self.tiles_total = tiles_total;
@@ -109,6 +111,25 @@ impl Shown {
         self.rays = 0;
         self.finished = None;
         self.error = None;
+    }
+
+    /// Marks the rectangle from (`x0`, `y0`) to (`x1`, `y1`) (excluded) as changed.
+    fn mark(&mut self, [x0, y0, x1, y1]: [u32; 4]) {
+        self.changed = Some(match self.changed {
+            Some([a0, b0, a1, b1]) => [a0.min(x0), b0.min(y0), a1.max(x1), b1.max(y1)],
+            None => [x0, y0, x1, y1],
+        });
+    }
+
+    /// The rectangle changed since the last call, as (x, y, width, height), and its pixels row by row; `None`
+    /// when nothing changed.
+    pub fn take_changed(&mut self) -> Option<([u32; 4], Vec<u8>)> {
+        let [x0, y0, x1, y1] = self.changed.take()?;
+        let row = |y: u32| {
+            let start = (y as usize * self.width as usize + x0 as usize) * 3;
+            &self.rgb[start..start + (x1 - x0) as usize * 3]
+        };
+        Some(([x0, y0, x1 - x0, y1 - y0], (y0..y1).flat_map(row).copied().collect()))
     }
 
     /// Paints a smaller (or equal) frame stretched over the whole picture, each of its pixels a block.
@@ -122,7 +143,7 @@ impl Shown {
                     .copy_from_slice(&to_srgb8(self.film.developed(frame.get(fx, fy), false)));
             }
         }
-        self.dirty = true;
+        self.mark([0, 0, self.width, self.height]);
     }
 
     fn paint_tile(&mut self, tile: &crate::instruments::progressive::Tile) {
@@ -133,7 +154,7 @@ impl Shown {
         }
         self.tiles_done += 1;
         self.rays += tile.rays;
-        self.dirty = true;
+        self.mark([tile.x, tile.y, tile.x + tile.width, tile.y + tile.height]);
     }
 }
 
@@ -159,7 +180,9 @@ impl Worker {
 
     /// Cancels the job in flight and starts `job`; but a preview of the moving camera lets the preview in
     /// flight finish: the camera moves at every redraw of the window, faster than a preview is drawn, so
-    /// cancelling each for the next would show none. The render thread then draws the latest.
+    /// cancelling each for the next would show none. The render thread then draws the latest. The finished
+    /// picture shown is forgotten: it is no longer the picture of the job asked for, so "Save" and "Compare"
+    /// wait for the next.
     pub fn submit(&mut self, job: Job) {
         let preview = job.preview;
         if let Some((cancel, was_preview)) = self.current.replace((job.cancel.clone(), preview))
@@ -167,6 +190,8 @@ impl Worker {
         {
             cancel.store(true, Ordering::Relaxed);
         }
+        // After the cancel: a job that finishes now sees it, and keeps its picture to itself.
+        self.shown.lock().expect("the render thread never panics holding the picture").finished = None;
         // The thread ends only with the window.
         let _ = self.jobs.send(job);
     }
@@ -250,6 +275,10 @@ fn run_job(
     };
     if let Outcome::Finished(frame, stats) = render_progressive(&scene, &settings, &job.cancel, &on_update)? {
         let mut shown = lock();
+        // Replaced while its last tile was drawn: the next job's picture is the one to show.
+        if job.cancel.load(Ordering::Relaxed) {
+            return Ok(());
+        }
         // The finished picture, whole: the adaptive anti-aliasing changes it after the last tile.
         shown.paint_stretched(&frame);
         (shown.rays, shown.elapsed) = (stats.counters.total(), stats.elapsed);

@@ -1,38 +1,51 @@
 //! The viewer's window: the picture in the middle, the example's options on the left, the camera and the
-//! status line below. egui redraws the window when the render thread has painted something or a key is
-//! held, and otherwise sleeps.
+//! status line below. egui redraws the window when the example has sent something or a key is held, and
+//! otherwise sleeps.
 //!
 //! Keys (while no text field has the focus): W/S forward and back, A/D left and right, R/F up and down,
 //! the arrow keys turn and Q/E roll; dragging the mouse over the picture looks around; a click shows what
-//! the pixel sees: the node and shader it hits and its whole ray tree (see [`crate::instruments::ray_tree`]).
+//! the pixel sees: the node and shader it hits and its whole ray tree (see `lecture6::instruments::ray_tree`).
+//! Ctrl + and Ctrl - (or the "UI scale" control) scale the whole interface, for a projector.
 
-use super::ExampleOptions;
-use super::controls::{Control, Controls, Kind};
-use super::fly::{Motion, as_code, moved};
-use super::worker::{Job, Worker};
-use crate::files::output::keeps_linear_light;
-use crate::instruments::compare::{self, Reference};
-use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
-use crate::lesson::camera::Camera;
-use crate::lesson::error::Result;
-use crate::lesson::render::thread_pool;
+use crate::link::{Link, Shown};
 use eframe::egui;
-use std::sync::Arc;
-use std::sync::atomic::AtomicBool;
+use lecture6_viewer_protocol::UI_SCALES;
+use lecture6_viewer_protocol::controls::{Control, Controls, Kind};
+use lecture6_viewer_protocol::wire::{CameraShown, Request};
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// The camera counts as still this long after the last key or drag; then the picture refines.
 const SETTLE: Duration = Duration::from_millis(150);
 
+/// The window's size at the interface scale 1, in pixels: at another scale it is as many times larger, as
+/// large as the screen at most.
+const WINDOW_SIZE: [f32; 2] = [1180.0, 720.0];
+
 /// Degrees the arrow keys turn the camera per second.
 const TURN_RATE: f32 = 60.0;
 
-/// Opens the window and runs it until it is closed. Fails when the window cannot be opened (no display).
-pub fn open<O: ExampleOptions>(name: &str, options: O, controls: Controls) -> std::result::Result<(), String> {
-    let name = name.to_string();
+/// What the window starts with: the example's name, its controls, the interface's scale and the pixel
+/// whose tree it shows first.
+pub struct Start {
+    /// The example's name.
+    pub name: String,
+    /// Its options as controls.
+    pub controls: Controls,
+    /// The interface's scale (`--ui-scale`).
+    pub ui_scale: f32,
+    /// The pixel to inspect first (`--trace-pixel`).
+    pub pixel: Option<(u32, u32)>,
+}
+
+/// Opens the window and runs it until it is closed, talking to the example through `link`. Fails when the
+/// window cannot be opened (no display).
+pub fn open(start: Start, link: Link) -> std::result::Result<(), String> {
+    let name = start.name.clone();
     let native = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
-            .with_inner_size([1180.0, 720.0])
+            // eframe makes it no larger than the screen (a projector's 1600 x 1000 at scale 1.5).
+            .with_inner_size(WINDOW_SIZE.map(|side| side * start.ui_scale))
             .with_title(format!("{name} (lecture 6)")),
         ..Default::default()
     };
@@ -42,22 +55,21 @@ pub fn open<O: ExampleOptions>(name: &str, options: O, controls: Controls) -> st
         native,
         Box::new(move |cc| {
             let ctx = cc.egui_ctx.clone();
-            let app = Viewer::new(name, options, controls, move || ctx.request_repaint()).map_err(|e| e.to_string())?;
-            Ok(Box::new(app))
+            ctx.set_zoom_factor(start.ui_scale);
+            Ok(Box::new(Viewer::new(start, link.listen(ctx))))
         }),
     )
     .map_err(|e| e.to_string())
 }
 
 /// The window's state.
-struct Viewer<O: ExampleOptions> {
+struct Viewer {
     name: String,
     controls: Controls,
-    /// The options of the picture shown (the last valid ones).
-    options: O,
-    worker: Worker,
-    /// The camera the window moved to; `None` while it is the scene's own.
-    camera: Option<Camera>,
+    /// Where requests go to the example.
+    link: Link,
+    /// What the example sent: the picture, its status, the answers.
+    shown: Arc<Mutex<Shown>>,
     /// Scene units per second of the movement keys.
     speed: f32,
     /// When the camera last moved, while it has not yet settled.
@@ -65,66 +77,64 @@ struct Viewer<O: ExampleOptions> {
     texture: Option<egui::TextureHandle>,
     /// The heat map of the difference from the reference, shown instead of the picture.
     heat_map: Option<egui::TextureHandle>,
-    /// What the last action said (a bad option value, a saved file).
-    message: String,
     /// The last clicked pixel, marked on the picture, and what it sees.
     picked: Option<Picked>,
+    /// The pixel asked about whose answer has not come yet.
+    asked: Option<(u32, u32)>,
+    /// The interface's scale: egui's zoom factor.
+    ui_scale: f32,
 }
 
-impl<O: ExampleOptions> Viewer<O> {
-    fn new(name: String, options: O, controls: Controls, repaint: impl Fn() + Send + Sync + 'static) -> Result<Self> {
-        let worker = Worker::start(options.threads(), repaint)?;
+impl Viewer {
+    fn new(start: Start, link: Link) -> Self {
+        let shown = link.shown.clone();
         let mut viewer = Viewer {
-            name,
-            controls,
-            options,
-            worker,
-            camera: None,
+            name: start.name,
+            controls: start.controls,
+            link,
+            shown,
             speed: 0.0,
             moving_since: None,
             texture: None,
             heat_map: None,
-            message: String::new(),
             picked: None,
+            asked: None,
+            ui_scale: start.ui_scale,
         };
-        viewer.rebuild();
-        Ok(viewer)
-    }
-
-    fn submit(&mut self, rebuild: bool, preview: bool) {
-        let options = self.options.clone();
-        self.heat_map = None;
-        self.worker.submit(Job {
-            rebuild: rebuild.then(|| Box::new(move || options.prepare()) as _),
-            camera: self.camera,
-            film: self.options.film(),
-            preview,
-            cancel: Arc::new(AtomicBool::new(false)),
-        });
-    }
-
-    /// The options changed: parse them as the command line would and render the new scene.
-    fn rebuild(&mut self) {
-        match O::from_controls(&self.controls) {
-            Ok(options) => {
-                self.options = options;
-                self.message.clear();
-                self.submit(true, false);
-            }
-            Err(e) => self.message = e,
+        if let Some((x, y)) = start.pixel {
+            viewer.inspect(x, y);
         }
+        viewer
     }
 
-    /// The camera shown: the one the window moved to, or the scene's.
-    fn current_camera(&self) -> Option<Camera> {
-        self.camera.or_else(|| self.worker.shown.lock().ok()?.scene_camera)
+    /// Sends `request` to the example.
+    fn send(&mut self, request: Request) {
+        self.link.send(&request);
     }
 
-    /// Moves the camera as the keys held and the drag say, and renders the quick preview while it moves,
-    /// the full picture once it settles.
+    /// Sends a request that renders the picture again: the heat map of the last one goes.
+    fn render(&mut self, request: Request) {
+        self.heat_map = None;
+        self.send(request);
+    }
+
+    /// The options changed: the example reads them as the command line would and renders the new scene (or
+    /// says what is wrong with them).
+    fn rebuild(&mut self) {
+        self.render(Request::Options { controls: self.controls.clone() });
+    }
+
+    /// The camera shown, as the example describes it.
+    fn current_camera(&self) -> Option<CameraShown> {
+        self.shown.lock().ok()?.status.camera.clone()
+    }
+
+    /// Moves the camera as the keys held and the drag say (the example moves it and draws the quick
+    /// preview while it moves), and asks for the full picture once it settles.
     fn fly(&mut self, ctx: &egui::Context, drag: egui::Vec2, image_width: f32) {
         let Some(camera) = self.current_camera() else { return };
-        let mut motion = Motion::default();
+        // Forward, right, up (times the speed), yaw, pitch, roll (degrees).
+        let mut motion = [0.0f32; 6];
         if !ctx.wants_keyboard_input() {
             ctx.input(|i| {
                 let dt = i.stable_dt.min(0.1);
@@ -132,27 +142,29 @@ impl<O: ExampleOptions> Viewer<O> {
                     (i.key_down(plus) as i32 - i.key_down(minus) as i32) as f32 * dt
                 };
                 use egui::Key::*;
-                motion.forward = axis(W, S);
-                motion.right = axis(D, A);
-                motion.up = axis(R, F);
-                motion.yaw = axis(ArrowLeft, ArrowRight) * TURN_RATE;
-                motion.pitch = axis(ArrowUp, ArrowDown) * TURN_RATE;
-                motion.roll = axis(E, Q) * TURN_RATE;
+                motion = [
+                    axis(W, S),
+                    axis(D, A),
+                    axis(R, F),
+                    axis(ArrowLeft, ArrowRight) * TURN_RATE,
+                    axis(ArrowUp, ArrowDown) * TURN_RATE,
+                    axis(E, Q) * TURN_RATE,
+                ];
             });
         }
         // Dragging the picture turns the camera by the angle the drag spans on screen.
         let degrees_per_point = camera.fov / image_width.max(1.0) * 0.8;
-        motion.yaw += drag.x * degrees_per_point;
-        motion.pitch += drag.y * degrees_per_point;
-        if !motion.is_still() {
-            self.camera = Some(moved(&camera, &motion, self.speed));
+        motion[3] += drag.x * degrees_per_point;
+        motion[4] += drag.y * degrees_per_point;
+        if motion.iter().any(|&m| m != 0.0) {
+            let [forward, right, up, yaw, pitch, roll] = motion;
+            self.render(Request::Move { forward, right, up, yaw, pitch, roll, distance: self.speed });
             self.moving_since = Some(Instant::now());
-            self.submit(false, true);
             ctx.request_repaint();
         } else if let Some(since) = self.moving_since {
             if since.elapsed() >= SETTLE {
                 self.moving_since = None;
-                self.submit(false, false);
+                self.render(Request::Settle {});
             } else {
                 ctx.request_repaint_after(SETTLE);
             }
@@ -174,6 +186,9 @@ impl<O: ExampleOptions> Viewer<O> {
                 }
                 changed |= control_ui(ui, control);
             }
+            ui.separator();
+            ui.strong("Steps beyond the slides");
+            changed |= steps_ui(ui, &mut self.controls);
         });
         if changed {
             self.rebuild();
@@ -184,21 +199,16 @@ impl<O: ExampleOptions> Viewer<O> {
         let Some(camera) = self.current_camera() else { return };
         if self.speed == 0.0 {
             // Half the camera's distance from the origin per second: the examples are built around it.
-            self.speed = (camera.position.length() * 0.5).max(1.0);
+            self.speed = (camera.distance * 0.5).max(1.0);
         }
         ui.horizontal_wrapped(|ui| {
-            let p = camera.position;
-            ui.monospace(format!(
-                "camera ({:.2}, {:.2}, {:.2}) yaw {:.1} pitch {:.1} roll {:.1} fov {:.1}",
-                p.x, p.y, p.z, camera.yaw, camera.pitch, camera.roll, camera.fov
-            ));
+            ui.monospace(&camera.text);
             if ui.button("Copy as code").clicked() {
-                ui.ctx().copy_text(as_code(&camera));
-                self.message = format!("copied: {}", as_code(&camera));
+                ui.ctx().copy_text(camera.code.clone());
+                self.say(format!("copied: {}", camera.code));
             }
             if ui.button("Reset camera").clicked() {
-                self.camera = None;
-                self.submit(false, false);
+                self.render(Request::ResetCamera {});
             }
             ui.label("speed");
             let step = self.speed * 0.02;
@@ -209,111 +219,67 @@ impl<O: ExampleOptions> Viewer<O> {
     }
 
     fn status_line(&mut self, ui: &mut egui::Ui) {
-        let (status, finished) = {
-            let shown = self.worker.shown.lock().expect("the render thread never panics holding the picture");
-            let secs = shown.elapsed.as_secs_f64();
-            let mut status = format!(
-                "{}x{}, {} spp, {}/{} tiles, {:.2} s, {:.2} Mrays/s",
+        let (text, finished, message) = {
+            let shown = self.shown.lock().expect("the pipe's reader never panics holding the picture");
+            let status = &shown.status;
+            let mut text = format!(
+                "{}x{}, {} spp, {}/{} tiles, {:.2} s, {:.2} M rays, {:.2} Mrays/s",
                 shown.width,
                 shown.height,
-                shown.spp,
-                shown.tiles_done,
-                shown.tiles_total,
-                secs,
-                shown.rays as f64 * 1e-6 / secs.max(1e-9)
+                status.spp,
+                status.tiles_done,
+                status.tiles_total,
+                status.seconds,
+                status.rays as f64 * 1e-6,
+                status.rays as f64 * 1e-6 / status.seconds.max(1e-9)
             );
             if self.moving_since.is_some() {
-                let recent = shown.previews.iter().filter(|t| t.elapsed() < Duration::from_secs(1)).count();
-                status += &format!(", moving: {recent} frames in the last second");
+                text += &format!(", moving: {} frames in the last second", status.frames_last_second);
             }
-            if let Some(e) = &shown.error {
-                status = format!("error: {e}");
+            if let Some(e) = &status.error {
+                text = format!("error: {e}");
             }
-            (status, shown.finished.as_ref().map(|(frame, _)| frame.clone()))
+            (text, status.finished, shown.message.clone())
         };
         ui.horizontal(|ui| {
-            ui.label(status);
-            ui.add_enabled_ui(finished.is_some(), |ui| {
+            ui.label(text);
+            ui.add_enabled_ui(finished, |ui| {
                 for ext in ["png", "exr"] {
-                    if ui.button(format!("Save .{ext}")).clicked()
-                        && let Some(frame) = &finished
-                    {
-                        let path = self.options.output_path(&self.name).with_extension(ext);
-                        let picture = self.options.film().develop(frame.clone(), keeps_linear_light(&path));
-                        self.message = match picture.save(&path) {
-                            Ok(()) => format!("saved {}", path.display()),
-                            Err(e) => e.to_string(),
-                        };
+                    if ui.button(format!("Save .{ext}")).clicked() {
+                        self.send(Request::Save { ext: ext.to_string() });
                     }
                 }
                 let compare_label = if self.heat_map.is_some() { "Show picture" } else { "Compare" };
-                if ui.button(compare_label).clicked()
-                    && let Some(frame) = &finished
-                {
-                    self.toggle_compare(ui.ctx(), frame);
+                if ui.button(compare_label).clicked() {
+                    // The heat map comes back from the example (`--compare`'s, with its colour bar).
+                    if self.heat_map.take().is_none() {
+                        self.send(Request::Compare {});
+                    }
                 }
             });
-        });
-        if !self.message.is_empty() {
-            ui.label(&self.message);
-        }
-    }
-
-    /// Shows the heat map of the difference from the reference (`--compare`'s, or `expected/<name>.png`)
-    /// instead of the picture, or the picture again. The comparison is `--compare`'s: the same figures, the
-    /// same heat map with its colour bar.
-    fn toggle_compare(&mut self, ctx: &egui::Context, frame: &crate::lesson::frame::Frame) {
-        if self.heat_map.take().is_some() {
-            return;
-        }
-        let reference = self.options.reference(&self.name);
-        let comparison = Reference::load(&reference).and_then(|expected| {
-            expected.check_size(&reference, frame.width, frame.height)?;
-            compare::compare(&self.options.film().develop(frame.clone(), keeps_linear_light(&reference)), &expected)
-        });
-        match comparison {
-            Ok(comparison) => {
-                let heat = &comparison.heat_map;
-                let size = [heat.width() as usize, heat.height() as usize];
-                let image = egui::ColorImage::from_rgb(size, heat.as_raw());
-                self.heat_map = Some(ctx.load_texture("heat map", image, egui::TextureOptions::NEAREST));
-                self.message = format!("compared with {}: {comparison}", reference.display());
+            ui.separator();
+            ui.label("UI scale");
+            let scale = egui::DragValue::new(&mut self.ui_scale).speed(0.01).range(UI_SCALES).max_decimals(2);
+            if ui.add(scale).changed() {
+                ui.ctx().set_zoom_factor(self.ui_scale);
             }
-            Err(e) => self.message = e.to_string(),
+        });
+        if !message.is_empty() {
+            ui.label(message);
         }
     }
 
-    /// Describes what pixel (x, y) of the picture sees: its colour on screen, the node and the shader its
-    /// first camera ray hits, and that ray's whole tree as `--trace-pixel` prints it (traced again at the
+    /// Shows `text` under the status line.
+    fn say(&self, text: String) {
+        self.shown.lock().expect("the pipe's reader never panics holding the picture").message = text;
+    }
+
+    /// Asks what pixel (x, y) of the picture sees: its colour on screen, the node and the shader its first
+    /// camera ray hits, and that ray's whole tree as `--trace-pixel` prints it (traced by the example at the
     /// options' full quality, from the camera of the picture shown).
     fn inspect(&mut self, x: u32, y: u32) {
-        let shown = self.worker.shown.lock().expect("the render thread never panics holding the picture");
-        let (Some(scene), Some(settings)) = (shown.scene.clone(), shown.settings) else { return };
-        if x >= shown.width || y >= shown.height {
-            return;
-        }
-        let i = (y as usize * shown.width as usize + x as usize) * 3;
-        let rgb = [shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]];
-        drop(shown);
-        // On a pool's thread: a deep ray tree needs its stack.
-        let traced = thread_pool(Some(1))
-            .and_then(|pool| pool.install(|| ray_tree::trace(&scene, &settings, PixelPos { x, y })));
-        let (sees, tree) = match traced {
-            Ok(trace) => {
-                let first_hit = trace.tree.roots.first().and_then(|&root| trace.tree.rays[root].hit.clone());
-                let sees = match first_hit {
-                    Some(hit) => {
-                        format!("sees node {}, shader {}, at distance {:.3}", hit.node, hit.shader, hit.distance)
-                    }
-                    None => "sees nothing: the environment".to_string(),
-                };
-                let tree = ray_tree::describe(&self.name, PixelPos { x, y }, &trace, 0, TraceFormat::Text);
-                (sees, tree.unwrap_or_else(|e| e.to_string()))
-            }
-            Err(e) => (e.to_string(), String::new()),
-        };
-        let sees = format!("pixel ({x}, {y}), shown as sRGB ({}, {}, {}): {sees}", rgb[0], rgb[1], rgb[2]);
-        self.picked = Some(Picked { x, y, sees, tree });
+        self.asked = Some((x, y));
+        self.send(Request::Inspect { x, y });
     }
 
     /// The clicked pixel's report, beside the picture, until closed.
@@ -336,18 +302,34 @@ impl<O: ExampleOptions> Viewer<O> {
         }
     }
 
-    fn picture(&mut self, ui: &mut egui::Ui) {
-        {
-            let mut shown = self.worker.shown.lock().expect("the render thread never panics holding the picture");
-            if shown.dirty && shown.width > 0 {
-                let image = egui::ColorImage::from_rgb([shown.width as usize, shown.height as usize], &shown.rgb);
-                match &mut self.texture {
-                    Some(texture) => texture.set(image, egui::TextureOptions::NEAREST),
-                    None => self.texture = Some(ui.ctx().load_texture("picture", image, egui::TextureOptions::NEAREST)),
-                }
-                shown.dirty = false;
+    /// Takes what the example sent since the last frame: the picture's new pixels, the heat map of a
+    /// comparison, the ray tree of the pixel asked about. Closes the window when the example has ended.
+    fn receive(&mut self, ctx: &egui::Context) {
+        let mut shown = self.shown.lock().expect("the pipe's reader never panics holding the picture");
+        if shown.dirty && shown.width > 0 {
+            let image = egui::ColorImage::from_rgb([shown.width as usize, shown.height as usize], &shown.rgb);
+            match &mut self.texture {
+                Some(texture) => texture.set(image, egui::TextureOptions::NEAREST),
+                None => self.texture = Some(ctx.load_texture("picture", image, egui::TextureOptions::NEAREST)),
             }
+            shown.dirty = false;
         }
+        if let Some(([width, height], rgb)) = shown.heat_map.take() {
+            let image = egui::ColorImage::from_rgb([width as usize, height as usize], &rgb);
+            self.heat_map = Some(ctx.load_texture("heat map", image, egui::TextureOptions::NEAREST));
+        }
+        if let Some(picked) = shown.picked.take()
+            && self.asked == Some((picked.x, picked.y))
+        {
+            self.asked = None;
+            self.picked = Some(picked);
+        }
+        if shown.ended {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+    }
+
+    fn picture(&mut self, ui: &mut egui::Ui) {
         let Some(texture) = self.heat_map.as_ref().or(self.texture.as_ref()) else {
             ui.label("building the scene...");
             return;
@@ -378,11 +360,15 @@ impl<O: ExampleOptions> Viewer<O> {
 }
 
 /// A clicked pixel and what it sees: a line naming the node and shader it hits, and its ray tree.
-struct Picked {
-    x: u32,
-    y: u32,
-    sees: String,
-    tree: String,
+pub struct Picked {
+    /// Its column.
+    pub x: u32,
+    /// Its row.
+    pub y: u32,
+    /// The node and shader its first camera ray hits.
+    pub sees: String,
+    /// Its ray tree, as `--trace-pixel` prints it.
+    pub tree: String,
 }
 
 /// The keys that move the camera: held, they keep the window redrawing.
@@ -390,6 +376,22 @@ const MOVE_KEYS: [egui::Key; 12] = {
     use egui::Key::*;
     [W, S, A, D, R, F, Q, E, ArrowLeft, ArrowRight, ArrowUp, ArrowDown]
 };
+
+/// Draws the steps beyond the slides: `--slide`, which clears them all, and a check box per step (its
+/// summary on hover); returns whether they changed.
+fn steps_ui(ui: &mut egui::Ui, controls: &mut Controls) -> bool {
+    let mut changed = false;
+    let mut slide = controls.slide();
+    let help = "the slides' reading: none of the steps beyond the slides (untick: all of them)";
+    if ui.checkbox(&mut slide, "--slide").on_hover_text(help).changed() {
+        controls.set_slide(slide);
+        changed = true;
+    }
+    for step in &mut controls.steps {
+        changed |= ui.checkbox(&mut step.taken, step.name.as_str()).on_hover_text(&step.summary).changed();
+    }
+    changed
+}
 
 /// Draws one option's control; returns whether its value changed.
 fn control_ui(ui: &mut egui::Ui, control: &mut Control) -> bool {
@@ -472,8 +474,11 @@ fn number_ui(
     }
 }
 
-impl<O: ExampleOptions> eframe::App for Viewer<O> {
+impl eframe::App for Viewer {
     fn update(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
+        self.receive(ctx);
+        // Ctrl + and Ctrl - change the zoom too: the control follows.
+        self.ui_scale = ctx.zoom_factor();
         egui::SidePanel::left("options").resizable(true).default_width(300.0).show(ctx, |ui| self.side_panel(ui));
         egui::TopBottomPanel::bottom("status").show(ctx, |ui| {
             self.camera_panel(ui);
