@@ -4,6 +4,7 @@
 //!
 //! - [`controls`]: the side panel's controls, one per option of the example's command line;
 //! - [`fly`]: the interactive camera;
+//! - [`pixel_panel`]: a clicked pixel's ray tree;
 //! - [`worker`]: the render thread, drawing with [`crate::instruments::progressive`];
 //! - [`window`]: the window itself (egui through eframe).
 //!
@@ -15,6 +16,7 @@
 
 pub mod controls;
 pub mod fly;
+pub mod pixel_panel;
 pub mod window;
 pub mod worker;
 

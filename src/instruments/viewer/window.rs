@@ -4,18 +4,17 @@
 //!
 //! Keys (while no text field has the focus): W/S forward and back, A/D left and right, R/F up and down,
 //! the arrow keys turn and Q/E roll; dragging the mouse over the picture looks around; a click shows what
-//! the pixel sees: the node and shader it hits and its whole ray tree (see [`crate::instruments::ray_tree`]).
+//! the pixel sees: the node and shader it hits and its whole ray tree ([`super::pixel_panel`]).
 
 use super::ExampleOptions;
 use super::controls::{Control, Controls, Kind};
 use super::fly::{Motion, as_code, moved};
+use super::pixel_panel::Picked;
 use super::worker::{Job, Worker};
 use crate::files::output::keeps_linear_light;
 use crate::instruments::compare::{self, Reference};
-use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::lesson::camera::Camera;
 use crate::lesson::error::Result;
-use crate::lesson::render::thread_pool;
 use eframe::egui;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
@@ -283,55 +282,19 @@ impl<O: ExampleOptions> Viewer<O> {
         }
     }
 
-    /// Describes what pixel (x, y) of the picture sees: its colour on screen, the node and the shader its
-    /// first camera ray hits, and that ray's whole tree as `--trace-pixel` prints it (traced again at the
-    /// options' full quality, from the camera of the picture shown).
+    /// Traces pixel (x, y) of the picture shown and shows its panel.
     fn inspect(&mut self, x: u32, y: u32) {
-        let shown = self.worker.shown.lock().expect("the render thread never panics holding the picture");
-        let (Some(scene), Some(settings)) = (shown.scene.clone(), shown.settings) else { return };
-        if x >= shown.width || y >= shown.height {
-            return;
-        }
-        let i = (y as usize * shown.width as usize + x as usize) * 3;
-        let rgb = [shown.rgb[i], shown.rgb[i + 1], shown.rgb[i + 2]];
-        drop(shown);
-        // On a pool's thread: a deep ray tree needs its stack.
-        let traced = thread_pool(Some(1))
-            .and_then(|pool| pool.install(|| ray_tree::trace(&scene, &settings, PixelPos { x, y })));
-        let (sees, tree) = match traced {
-            Ok(trace) => {
-                let first_hit = trace.tree.roots.first().and_then(|&root| trace.tree.rays[root].hit.clone());
-                let sees = match first_hit {
-                    Some(hit) => {
-                        format!("sees node {}, shader {}, at distance {:.3}", hit.node, hit.shader, hit.distance)
-                    }
-                    None => "sees nothing: the environment".to_string(),
-                };
-                let tree = ray_tree::describe(&self.name, PixelPos { x, y }, &trace, 0, TraceFormat::Text);
-                (sees, tree.unwrap_or_else(|e| e.to_string()))
-            }
-            Err(e) => (e.to_string(), String::new()),
-        };
-        let sees = format!("pixel ({x}, {y}), shown as sRGB ({}, {}, {}): {sees}", rgb[0], rgb[1], rgb[2]);
-        self.picked = Some(Picked { x, y, sees, tree });
+        self.picked = Picked::trace(&self.name, &self.worker.shown, x, y);
     }
 
-    /// The clicked pixel's report, beside the picture, until closed.
+    /// The clicked pixel's panel, beside the picture, until closed; its tree traced again once the camera
+    /// has settled or the options changed.
     fn pixel_panel(&mut self, ctx: &egui::Context) {
-        let Some(picked) = &self.picked else { return };
-        let mut close = false;
-        egui::SidePanel::right("pixel").resizable(true).default_width(520.0).show(ctx, |ui| {
-            ui.horizontal(|ui| {
-                ui.strong("Pixel");
-                close = ui.button("Close").clicked();
-            });
-            ui.label(&picked.sees);
-            ui.separator();
-            // The tree unwrapped, so that its indentation shows; scrolled sideways where it is wider.
-            let tree = egui::Label::new(egui::RichText::new(&picked.tree).monospace()).extend();
-            egui::ScrollArea::both().show(ui, |ui| ui.add(tree));
-        });
-        if close {
+        let stale = self.picked.as_ref().filter(|p| self.moving_since.is_none() && p.is_stale(&self.worker.shown));
+        if let Some((x, y)) = stale.map(|p| (p.x, p.y)) {
+            self.inspect(x, y);
+        }
+        if self.picked.as_ref().is_some_and(|picked| picked.show(ctx)) {
             self.picked = None;
         }
     }
@@ -375,14 +338,6 @@ impl<O: ExampleOptions> Viewer<O> {
         }
         self.fly(ui.ctx(), drag, size.x * scale);
     }
-}
-
-/// A clicked pixel and what it sees: a line naming the node and shader it hits, and its ray tree.
-struct Picked {
-    x: u32,
-    y: u32,
-    sees: String,
-    tree: String,
 }
 
 /// The keys that move the camera: held, they keep the window redrawing.
