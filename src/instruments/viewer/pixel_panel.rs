@@ -94,7 +94,7 @@ impl Picked {
 }
 
 /// `text` with every line longer than `columns` characters wrapped at spaces, its continuations indented
-/// [`CONTINUATION`] characters deeper than the line itself, so that a wrapped line of the tree stays under
+/// four characters deeper than the line itself, so that a wrapped line of the tree stays under
 /// its ray.
 pub fn wrap_tree(text: &str, columns: usize) -> String {
     let mut out = String::new();
