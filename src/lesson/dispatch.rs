@@ -384,7 +384,7 @@ impl MaterialLayer {
 
 impl LayerShading for MaterialLayer {
     #[inline(always)]
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps) -> Color {
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo, _ctx: &mut TraceContext) -> Color {
         match &self.blend_tex {
             Some(tex) => self.blend * tex.get(ray, info),
             None => self.blend,

@@ -94,7 +94,7 @@ pub fn light_loop(
         }
     }
     if let Some(map) = &scene.photon_map {
-        let caustic = map.irradiance(info.ip, n);
+        let caustic = map.irradiance_recorded(info.ip, n, ctx.recorder());
         irradiance += caustic;
         ctx.observe(|o| o.light_found(LightTerm::Photons, caustic));
     }

@@ -42,6 +42,7 @@ pub mod scene;
 pub mod shader;
 pub mod spectral;
 pub mod texture;
+pub mod topic;
 pub mod transform;
 
 /// The last segment of a type's path, without generic arguments: `Reflection` for

@@ -4,7 +4,9 @@
 //! An [`Observer`] put into [`TraceContext::observer`] is told what the recursion does, by the core alone:
 //! [`TraceContext::raytrace`] reports every ray it traces, what the ray hits and what colour it brings back;
 //! the light loop ([`crate::lesson::light::light_loop`]) reports the light it finds at a surface point; and
-//! [`TraceContext::shade_layer`] reports the layers of a `Layered` shader. A shader never reports anything:
+//! [`TraceContext::shade_layer`] reports the layers of a `Layered` shader; and the techniques of the slides
+//! say what they computed at the point being shaded (the Fresnel reflectance, a bitmap's texels, the photon
+//! estimate: [`crate::lesson::topic`]), which an observer hears as a [`Recorder`]. A shader never reports anything:
 //! a student's shader that traces its rays with `ctx.raytrace` and takes its light from the light loop is
 //! observed exactly as the shipped ones are. With no observer (every render but one pixel's), each report is
 //! one test of an `Option`.
@@ -19,6 +21,7 @@ use crate::lesson::node::Node;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::Scene;
 use crate::lesson::shader::Layer;
+use crate::lesson::topic::Recorder;
 
 #[cfg(doc)]
 use crate::lesson::scene::TraceContext;
@@ -94,18 +97,23 @@ impl LightTerm {
 }
 
 /// What an instrument is told about the recursion (see the module documentation). Every method has an
-/// empty default, so an observer implements only what it needs.
-pub trait Observer {
+/// empty default, so an observer implements only what it needs; as a [`Recorder`] it hears what the
+/// techniques computed.
+pub trait Observer: Recorder {
     /// `raytrace` starts tracing `ray`.
     fn ray_begins(&mut self, _ray: &Ray) {}
     /// The ray being traced hit `node` of `scene`, as `info` describes; its shader is about to run.
     fn ray_hits(&mut self, _scene: &Scene, _node: &Node, _info: &IntersectionInfo) {}
     /// The light loop found the term `light`, of colour `color`, at the point being shaded.
     fn light_found(&mut self, _light: LightTerm, _color: Color) {}
-    /// A `Layered` shader starts shading `layer` at the point being shaded.
-    fn layer_begins(&mut self, _layer: &Layer) {}
+    /// A `Layered` shader starts shading `layer` at the point being shaded; the layer's shader sees `ray`
+    /// (whose weight the layer's may scale).
+    fn layer_begins(&mut self, _layer: &Layer, _ray: &Ray) {}
     /// ... and is done with it: the layer's shader returned `color`, which counts `weight` times.
     fn layer_ends(&mut self, _color: Color, _weight: Color) {}
+    /// The slide's Layered loop covers the layers it has shaded so far at this point with the next one, of
+    /// opacity `blend`: what they gave counts `1 - blend` times.
+    fn layers_covered(&mut self, _blend: Color) {}
     /// The ray being traced is finished: it brought back `color`, and was not followed for `stop`, if given.
     fn ray_ends(&mut self, _color: Color, _stop: Option<Stop>) {}
 }

@@ -31,6 +31,7 @@ use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
 use crate::lesson::shader::{Layer, MAX_SHADES_PER_HIT};
 use crate::lesson::spectral::Illuminant;
+use crate::lesson::topic::Recorder;
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -623,7 +624,7 @@ impl<'a> TraceContext<'a> {
     /// `layer.shader.shade(ray, info, ctx) * weight`; going through the context lets an instrument show each
     /// layer's share of the colour.
     pub fn shade_layer(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
-        self.observe(|o| o.layer_begins(layer));
+        self.observe(|o| o.layer_begins(layer, ray));
         self.begin_layer(ray);
         let color = layer.shader.shade(ray, info, self);
         self.observe(|o| o.layer_ends(color, weight));
@@ -646,6 +647,13 @@ impl<'a> TraceContext<'a> {
         let t_max = to_light.length();
         let ray = Ray::new(start, to_light / t_max);
         !self.scene.intersects(&ray, t_max)
+    }
+
+    /// The observer, if there is one, as the recorder of what the techniques compute
+    /// ([`crate::lesson::topic::record`]).
+    #[inline(always)]
+    pub(crate) fn recorder(&mut self) -> Option<&mut dyn Recorder> {
+        self.observer.as_deref_mut().map(|o| o as &mut dyn Recorder)
     }
 
     /// Tells the observer, if there is one, what `report` says (see [`crate::lesson::observer`]); one test of

@@ -3,14 +3,16 @@
 
 use crate::common;
 
-use common::examples::{fresnel, glossy, layered, photon_map, reflect_v02, refract, scene_file};
+use common::examples::{bitmap_textures, fresnel, glossy, layered, photon_map, reflect_v02, refract, scene_file};
 use lecture6::app::cli::Example;
 use lecture6::instruments::debug_view::{DebugImage, DebugView, heat, render_view};
-use lecture6::instruments::ray_tree::{self, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
+use lecture6::instruments::ray_tree::{self, NoteKind, PixelPos, RayKind, RayTree, TermKind, TraceFormat};
 use lecture6::instruments::side_by_side::{Panel, compose};
 use lecture6::lesson::observer::{LightTerm, Stop};
+use lecture6::lesson::photon_map::CONE_FILTER_K;
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::lesson::shader::IntoShader;
+use lecture6::lesson::topic::Topic;
 use lecture6::prelude::*;
 
 /// Whether two colours agree to float rounding of sums of a few hundred terms.
@@ -117,6 +119,9 @@ fn trees_add_up_with_glossy_samples_lamps_and_depth_limits() {
     let samples = |t: &RayTree| kinds(t).iter().filter(|&&k| k == RayKind::Reflection).count();
     assert!(trees.iter().any(|t| samples(t) > 1), "no glossy samples traced");
     assert!(trees.iter().any(|t| t.to_text(0).contains("reflection 2 of ")), "glossy samples are numbered");
+    // An average's rays each carry the mirror's full factor as their weight: the 1/N is common to them.
+    let text: String = trees.iter().map(|t| t.to_text(0)).collect();
+    assert!(text.contains("shared with the other ") && text.contains("not known ray by ray"), "{text}");
     assert!(trees.iter().any(|t| lights(t).iter().any(|l| matches!(l, LightTerm::Lamp { .. }))));
     assert_eq!(own_colours(&trees), 0);
     let trees = check_trees::<reflect_v02::Options>(&["--width", "80", "--height", "60"], &[(40, 30), (20, 30)]);
@@ -524,3 +529,183 @@ fn the_instruments_use_a_scene_files_own_size_and_anti_aliasing() {
     let single_rays = render_view(&scene, &RenderSettings { adaptive_aa: false, ..settings }, DebugView::Rays).unwrap();
     assert!(rays.range.1 > single_rays.range.1, "{:?} against {:?}", rays.range, single_rays.range);
 }
+
+/// The slide's Layered loop covers the layers below with each new one (`res * (1 - blend)`): the tree
+/// counts that too, so under `--slide` the glass's and the floor's layers add up without a colour of their
+/// own, the refraction layer under the Fresnel mirror counting `1 - F` times.
+#[test]
+fn trees_add_up_in_the_slides_reading() {
+    let pixels = [(32, 20), (30, 26), (10, 44), (50, 40)];
+    let trees = check_trees::<fresnel::Options>(&["--width", "64", "--height", "48", "--spp", "1", "--slide"], &pixels);
+    assert_eq!(own_colours(&trees), 0, "{}", trees[0].to_text(0));
+    let trees = check_trees::<layered::Options>(&["--width", "80", "--height", "60", "--slide"], &[(40, 30), (20, 45)]);
+    assert_eq!(own_colours(&trees), 0);
+}
+
+/// A student's Fresnel-blended surface of two unlike rays: a mirror ray spawned with its reflectance as the
+/// attenuation, and a ray straight through with the rest, each times its attenuation.
+struct TwoRays;
+
+const MIRROR_SHARE: f32 = 0.04;
+
+impl Shader for TwoRays {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let n = faceforward(info.normal, ray.dir);
+        let mirror = ctx.raytrace(&ray.spawn(info, reflect(ray.dir, n), MIRROR_SHARE));
+        let through = ctx.raytrace(&ray.spawn(info, ray.dir, 1.0 - MIRROR_SHARE));
+        mirror * MIRROR_SHARE + through * (1.0 - MIRROR_SHARE)
+    }
+}
+
+/// A sky whose colour depends on the direction: the two rays bring back unlike colours.
+struct Gradient;
+
+impl Environment for Gradient {
+    fn get(&self, dir: Vector) -> Color {
+        Color::new(0.5 + 0.5 * dir.y, 0.3, 0.5 - 0.5 * dir.y)
+    }
+}
+
+/// Each ray of a shader counts its own share, which its weight gives (0.04 and 0.96 here), not one factor
+/// common to both; where a factor is shared (a glossy average), the tree says so.
+#[test]
+fn each_ray_shows_its_own_share_from_its_weight() {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 30.0, -60.0), Vector::ZERO, 60.0));
+    scene.environment = Some(Arc::new(Gradient));
+    scene.add(Node::new(Plane::new(0.0, 200.0), TwoRays));
+    let settings = RenderSettings { width: 40, height: 30, spp: 1, ..RenderSettings::default() };
+    let trees = check_scene_trees(&scene, &settings, &[(20, 20), (5, 25)], "two rays");
+    for tree in &trees {
+        let root = &tree.rays[tree.roots[0]];
+        let shares: Vec<(Color, f32)> = root
+            .terms
+            .iter()
+            .filter_map(|t| match t.what {
+                TermKind::Ray(child) => Some((t.factor, tree.rays[child].color.luminance())),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(shares.len(), 2);
+        assert!(shares[0].1 != shares[1].1, "the two rays see the same colour: {shares:?}");
+        assert!(close(shares[0].0, Color::gray(MIRROR_SHARE)), "the mirror ray counts {:?}", shares[0].0);
+        assert!(close(shares[1].0, Color::gray(1.0 - MIRROR_SHARE)), "the ray through counts {:?}", shares[1].0);
+        let text = tree.to_text(0);
+        assert!(text.contains("+ 0.0400 times\n") && text.contains("+ 0.9600 times\n"), "{text}");
+        assert!(!text.contains("shared with"), "{text}");
+    }
+}
+
+/// The text `--trace-pixel X,Y` prints for the example `E` with `args`, and the pixel's tree.
+fn traced<E: Example>(name: &str, args: &[&str], (x, y): (u32, u32)) -> (String, RayTree) {
+    let mut all = args.to_vec();
+    let pixel = format!("{x},{y}");
+    all.extend(["--trace-pixel", &pixel]);
+    let cli = common::parse::<E>(&all);
+    let text = lecture6::app::cli::commands::trace_pixel(name, &cli, PixelPos { x, y }).unwrap();
+    let (scene, settings) = cli.prepare().unwrap();
+    (text, ray_tree::trace(&scene, &settings, PixelPos { x, y }).unwrap().tree)
+}
+
+/// The topic values of the camera ray's hit in `tree`.
+fn topics(tree: &RayTree) -> Vec<Topic> {
+    tree.rays[tree.roots[0]]
+        .notes
+        .iter()
+        .filter_map(|n| match &n.what {
+            NoteKind::Topic(t) => Some(t.clone()),
+            NoteKind::LayerWeight(_) => None,
+        })
+        .collect()
+}
+
+/// The weight the tree gives the layer whose label starts with `label` at the camera ray's hit.
+fn layer_weight(tree: &RayTree, label: &str) -> Color {
+    let notes = &tree.rays[tree.roots[0]].notes;
+    let weights = notes.iter().filter(|n| n.layer.starts_with(label));
+    weights.filter_map(|n| if let NoteKind::LayerWeight(w) = n.what { Some(w) } else { None }).next().unwrap()
+}
+
+/// At a glass pixel the tree prints the Fresnel reflectance (Schlick's formula of the ratio of the indices
+/// and the angle it records) and the weights it gives the layers: the mirror F, the refraction under it
+/// 1 - F, in both readings.
+#[test]
+fn the_tree_prints_the_fresnel_value_and_the_factor_it_becomes() {
+    for reading in [&[][..], &["--slide"]] {
+        let args = [&["--width", "64", "--height", "48", "--spp", "1"][..], reading].concat();
+        let (text, tree) = traced::<fresnel::Options>("fresnel", &args, (32, 20));
+        let Some(&Topic::Fresnel { reflectance, eta, cos, exact }) = topics(&tree).first() else {
+            panic!("{reading:?}: no Fresnel value at the glass:\n{text}")
+        };
+        assert!(!exact && (eta - 1.0 / 1.6).abs() < 1e-6, "entering the glass of 1.6: {eta}");
+        let r0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
+        assert!((reflectance - (r0 + (1.0 - r0) * (1.0 - cos).powi(5))).abs() < 1e-6, "{reflectance}");
+        assert!(text.contains(&format!("Fresnel reflectance {reflectance:.4} (Schlick's approximation")), "{text}");
+        assert!(close(layer_weight(&tree, "layer Reflection"), Color::gray(reflectance)), "{reading:?}\n{text}");
+        assert!(close(layer_weight(&tree, "layer Refraction"), Color::gray(1.0 - reflectance)), "{reading:?}\n{text}");
+        let weight = format!("layer Reflection, blend Fresnel: counts {reflectance:.4} times");
+        assert!(text.contains(&weight), "{reading:?}\n{text}");
+    }
+}
+
+/// At a textured pixel the tree prints u, v and the texels read with their weights: the slide's nearest
+/// texel (weight 1) under `--slide`, the four of the default bilinear filter otherwise; their weighted colours
+/// are the diffuse colour the light at the floor is multiplied by.
+#[test]
+fn the_tree_prints_the_texels_a_bitmap_mixed() {
+    for (reading, count) in [(&[][..], 4), (&["--slide"][..], 1)] {
+        let args = [&["--width", "64", "--height", "48", "--spp", "1"][..], reading].concat();
+        let (text, tree) = traced::<bitmap_textures::Options>("bitmap_textures", &args, (32, 45));
+        let Some(Topic::Texels { u, v, texels }) = topics(&tree).into_iter().next() else {
+            panic!("{reading:?}: no texels at the floor:\n{text}")
+        };
+        assert_eq!(texels.len(), count, "{reading:?}");
+        let total: f32 = texels.iter().map(|t| t.weight).sum();
+        assert!((total - 1.0).abs() < 1e-6 && texels.iter().all(|t| t.weight >= 0.0), "{texels:?}");
+        let mixed = texels.iter().fold(Color::BLACK, |sum, t| sum + t.color * t.weight);
+        let root = &tree.rays[tree.roots[0]];
+        let light = root.terms.iter().find(|t| matches!(t.what, TermKind::Light { .. })).unwrap();
+        assert!(
+            close(mixed, light.factor),
+            "{reading:?}: the texels mix to {mixed:?}, the floor is {:?}",
+            light.factor
+        );
+        assert!(text.contains(&format!("bitmap read at u {u:.4}, v {v:.4}")), "{text}");
+        for texel in &texels {
+            assert!(text.contains(&format!("texel ({}, {}) weight {:.4}", texel.x, texel.y, texel.weight)), "{text}");
+        }
+    }
+}
+
+/// At a caustic pixel the tree prints the photon estimate's k, the radius of its disc and the photons it
+/// found; their power, weighted, over the disc's area is the caustic light the floor gets (the slide's k-d
+/// tree under `--slide`, the grid's cone filter by default).
+#[test]
+fn the_tree_prints_the_photon_estimate() {
+    for reading in [&[][..], &["--slide"]] {
+        let args = [&["--width", "80", "--height", "60", "--spp", "1", "--photons", "40000"][..], reading].concat();
+        let (text, tree) = traced::<photon_map::Options>("photon_map", &args, CAUSTIC_PIXEL);
+        let Some(Topic::Photons { k, radius, max_radius, photons }) = topics(&tree).into_iter().next() else {
+            panic!("{reading:?}: no photon estimate at the floor:\n{text}")
+        };
+        assert_eq!((k, max_radius), (80, 2.0));
+        assert!(photons.iter().filter(|p| p.weight > 0.0).count() > 10, "{reading:?}: not a caustic:\n{text}");
+        assert!(radius > 0.0 && radius <= max_radius && photons.len() <= k);
+        assert!(photons.iter().all(|p| p.distance <= radius * (1.0 + 1e-6)), "{reading:?}: {photons:?}");
+        let sum = photons.iter().fold(Color::BLACK, |sum, p| sum + p.power * p.weight);
+        let area = std::f32::consts::PI * radius * radius;
+        let filter = if reading.is_empty() { 1.0 - 2.0 / (3.0 * CONE_FILTER_K) } else { 1.0 };
+        let root = &tree.rays[tree.roots[0]];
+        let caustic = root.terms.iter().find_map(|t| match t.what {
+            TermKind::Light { kind: LightTerm::Photons, color } => Some(color),
+            _ => None,
+        });
+        assert!(close(sum / (filter * area), caustic.unwrap()), "{reading:?}: {:?} against {caustic:?}", sum / area);
+        assert!(text.contains(&format!("photon estimate: k 80, {} found", photons.len())), "{text}");
+        assert!(text.contains(&format!("the disc of radius {radius:.4}")), "{text}");
+        let nearest = photons.iter().min_by(|a, b| a.distance.total_cmp(&b.distance)).unwrap();
+        assert!(text.contains(&format!("photon {} at distance {:.4}", nearest.index, nearest.distance)), "{text}");
+    }
+}
+
+/// A pixel of the photon map's floor, at 80 x 60, in the glass sphere's caustic.
+const CAUSTIC_PIXEL: (u32, u32) = (24, 37);

@@ -55,7 +55,7 @@ impl Shown {
             }
             Report::Status { status } => self.status = status,
             Report::Message { text } => self.message = text,
-            Report::Picked { x, y, sees, tree } => self.picked = Some(Picked { x, y, sees, tree }),
+            Report::Picked { x, y, sees, tree } => self.picked = Some(Picked { x, y, sees, tree, picture: 0 }),
             Report::HeatMap { width, height, rgb } => self.heat_map = Some(([width, height], rgb)),
             // Said once, at the start: `main` has read it.
             Report::Hello { .. } => {}

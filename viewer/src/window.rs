@@ -79,8 +79,10 @@ struct Viewer {
     heat_map: Option<egui::TextureHandle>,
     /// The last clicked pixel, marked on the picture, and what it sees.
     picked: Option<Picked>,
-    /// The pixel asked about whose answer has not come yet.
-    asked: Option<(u32, u32)>,
+    /// The pixel asked about whose answer has not come yet, and the picture it was asked of.
+    asked: Option<(u32, u32, u64)>,
+    /// How many pictures have been asked for: a clicked pixel's tree traced for an earlier one is stale.
+    picture: u64,
     /// The interface's scale: egui's zoom factor.
     ui_scale: f32,
 }
@@ -99,6 +101,7 @@ impl Viewer {
             heat_map: None,
             picked: None,
             asked: None,
+            picture: 0,
             ui_scale: start.ui_scale,
         };
         if let Some((x, y)) = start.pixel {
@@ -115,6 +118,7 @@ impl Viewer {
     /// Sends a request that renders the picture again: the heat map of the last one goes.
     fn render(&mut self, request: Request) {
         self.heat_map = None;
+        self.picture += 1;
         self.send(request);
     }
 
@@ -278,12 +282,20 @@ impl Viewer {
     /// camera ray hits, and that ray's whole tree as `--trace-pixel` prints it (traced by the example at the
     /// options' full quality, from the camera of the picture shown).
     fn inspect(&mut self, x: u32, y: u32) {
-        self.asked = Some((x, y));
+        self.asked = Some((x, y, self.picture));
         self.send(Request::Inspect { x, y });
     }
 
-    /// The clicked pixel's report, beside the picture, until closed.
+    /// The clicked pixel's report, beside the picture, until closed: its tree wrapped to the panel
+    /// ([`wrap_tree`]), and asked for again once the camera has settled or the options changed since it was
+    /// traced.
     fn pixel_panel(&mut self, ctx: &egui::Context) {
+        let stale = self.picked.as_ref().filter(|p| p.picture != self.picture && self.moving_since.is_none());
+        if let Some((x, y)) = stale.map(|p| (p.x, p.y))
+            && self.asked.is_none_or(|(.., asked_of)| asked_of != self.picture)
+        {
+            self.inspect(x, y);
+        }
         let Some(picked) = &self.picked else { return };
         let mut close = false;
         egui::SidePanel::right("pixel").resizable(true).default_width(520.0).show(ctx, |ui| {
@@ -293,9 +305,13 @@ impl Viewer {
             });
             ui.label(&picked.sees);
             ui.separator();
-            // The tree unwrapped, so that its indentation shows; scrolled sideways where it is wider.
-            let tree = egui::Label::new(egui::RichText::new(&picked.tree).monospace()).extend();
-            egui::ScrollArea::both().show(ui, |ui| ui.add(tree));
+            egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
+                let font = egui::TextStyle::Monospace.resolve(ui.style());
+                let glyph = ui.fonts_mut(|fonts| fonts.glyph_width(&font, 'x')).max(1.0);
+                let columns = (ui.available_width() / glyph).floor().max(1.0) as usize;
+                let tree = egui::RichText::new(wrap_tree(&picked.tree, columns)).monospace();
+                ui.add(egui::Label::new(tree).extend());
+            });
         });
         if close {
             self.picked = None;
@@ -318,10 +334,12 @@ impl Viewer {
             let image = egui::ColorImage::from_rgb([width as usize, height as usize], &rgb);
             self.heat_map = Some(ctx.load_texture("heat map", image, egui::TextureOptions::NEAREST));
         }
-        if let Some(picked) = shown.picked.take()
-            && self.asked == Some((picked.x, picked.y))
+        if let Some(mut picked) = shown.picked.take()
+            && let Some((x, y, picture)) = self.asked
+            && (x, y) == (picked.x, picked.y)
         {
             self.asked = None;
+            picked.picture = picture;
             self.picked = Some(picked);
         }
         if shown.ended {
@@ -369,6 +387,32 @@ pub struct Picked {
     pub sees: String,
     /// Its ray tree, as `--trace-pixel` prints it.
     pub tree: String,
+    /// The picture it was traced in (the count of pictures asked for then).
+    pub picture: u64,
+}
+
+/// How much deeper than its first line a wrapped line's continuation is indented, in characters.
+const CONTINUATION: usize = 4;
+
+/// `text` with every line longer than `columns` characters wrapped at spaces, its continuations indented
+/// [`CONTINUATION`] characters deeper than the line itself, so that a wrapped line of the tree stays under
+/// its ray (nothing is cut off on a projector).
+fn wrap_tree(text: &str, columns: usize) -> String {
+    let mut out = String::new();
+    for line in text.lines() {
+        let indent = " ".repeat(line.len() - line.trim_start().len());
+        let deeper = format!("{indent}{}", " ".repeat(CONTINUATION));
+        let options = textwrap::Options::new(columns)
+            .initial_indent(&indent)
+            .subsequent_indent(&deeper)
+            .break_words(true)
+            .word_splitter(textwrap::WordSplitter::NoHyphenation);
+        for wrapped in textwrap::wrap(line.trim_start(), options) {
+            out.push_str(&wrapped);
+            out.push('\n');
+        }
+    }
+    out
 }
 
 /// The keys that move the camera: held, they keep the window redrawing.
@@ -486,5 +530,30 @@ impl eframe::App for Viewer {
         });
         self.pixel_panel(ctx);
         egui::CentralPanel::default().show(ctx, |ui| self.picture(ui));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every wrapped line fits, no character but the spaces it breaks at is lost, and a continuation is
+    /// indented deeper than the line it continues: the tree's shape stays.
+    #[test]
+    fn wrapped_tree_lines_fit_and_keep_their_indentation() {
+        let tree = "camera ray (depth 0) from (0.000, 60.000, -120.000) dir (0.001, -0.412, 0.911), weight 1.0000\n  \
+                    hits glass sphere at distance 69.2005, shader Layered\n    + layer Reflection, blend Fresnel: \
+                    0.0479 times (its weight gives 0.8000, times 0.0625 shared with the other 15 rays)\n";
+        for columns in [24, 40, 80] {
+            let wrapped = wrap_tree(tree, columns);
+            assert!(wrapped.lines().all(|l| l.chars().count() <= columns), "{columns}:\n{wrapped}");
+            let words = |t: &str| t.split_whitespace().collect::<String>();
+            assert_eq!(words(&wrapped), words(tree), "{columns}");
+            let indent = |l: &str| l.len() - l.trim_start().len();
+            let lines: Vec<&str> = wrapped.lines().collect();
+            let third = lines.iter().position(|l| l.trim_start().starts_with('+')).unwrap();
+            assert!(indent(lines[third + 1]) > indent(lines[third]), "{columns}:\n{wrapped}");
+        }
+        assert_eq!(wrap_tree(tree, 200), tree, "short lines stay as they are");
     }
 }

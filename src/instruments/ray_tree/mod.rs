@@ -11,18 +11,28 @@
 //! shadow ray, the photon map's caustic estimate). The tree does not see the arithmetic a shader does with
 //! them, only what it gathered and what it returned, so it works the factors out when the shader is done:
 //!
-//! - a layer's terms count the layer's weight times (the weight is handed to `shade_layer`), and a highlight
-//!   counts as it is (the light loop adds it as it is);
-//! - every other term (rays and irradiance) takes one common factor per channel, the shader's colour less
-//!   the known terms over what those terms brought: the mirror's colour for a mirror, the diffuse colour for
-//!   a diffuse surface, a glossy mirror's colour over its sample count. For a shader that scales what it
-//!   gathers, this is exactly what it did; for one that does more (a toon shader that bands its light), it
-//!   is how its colour shares out among what it gathered;
+//! - a layer's terms count the layer's weight times (the weight is handed to `shade_layer`; the slide's loop,
+//!   which covers the layers below with each new one, says so too), and a highlight counts as it is (the
+//!   light loop adds it as it is);
+//! - a ray's own share is what its weight says: the `attenuation` it was spawned with, its weight over the
+//!   weight of the ray its shader shaded ([`Ray::spawn`]). A Fresnel mirror ray of weight 0.04 beside a ray
+//!   of 0.96 counts 0.04 times, the other 0.96 times;
+//! - what the weights do not say is one common factor per channel, shared by every term of the shader
+//!   whose factor is not known (its rays and its irradiance): the shader's colour less the known terms over
+//!   what the others brought, each ray's times its own share. That is 1 when the shader multiplies each ray
+//!   by its attenuation (the tree then shows each ray's own share alone), a mirror's tint over its brightest
+//!   channel, 1/N for a glossy average of N rays (the full factor for each ray is its weight), the diffuse
+//!   colour for the light a diffuse surface gathers. The tree says so at each ray whose factor has such a
+//!   common part ([`Share`]);
 //! - what is left (a channel in which the shader gathered nothing but shows colour) is the shader's own
 //!   colour, a term of its own.
 //!
 //! So the shares of all the light terms and of the environment seen by rays that missed add up to the
 //! pixel's colour, whatever the shader (what the tests check).
+//!
+//! At each hit the tree also says what the topic computed there ([`Note`]): the Fresnel reflectance and the
+//! weight it gives its layer, a bitmap's u, v and the texels it mixed with their weights, the photon
+//! estimate's k, radius and photons: the techniques record them ([`crate::lesson::topic`]).
 
 mod report;
 
@@ -38,6 +48,7 @@ use crate::lesson::ray::Ray;
 use crate::lesson::render::{RenderSettings, render_pixel};
 use crate::lesson::scene::{Counters, Scene};
 use crate::lesson::shader::Layer;
+use crate::lesson::topic::{Recorder, Topic};
 
 /// What kind of ray a record is, seen from the surface that sent it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,6 +82,45 @@ pub struct Term {
     pub layer: String,
     /// What the term is: a traced ray, light found at the surface, or the shader's own colour.
     pub what: TermKind,
+    /// For a ray: how its factor was found (its own share and the part it shares with its siblings).
+    pub share: Option<Share>,
+}
+
+/// How a ray's factor was found (see the module documentation): `factor` = the weights of the layers it came
+/// through, times `own`, times `common`.
+#[derive(Clone, Copy, Debug)]
+pub struct Share {
+    /// Its own share, from its weight: its weight over the weight of the ray its shader shaded (the
+    /// `attenuation` of [`Ray::spawn`]); `None` where that ray's weight is 0 (and 1 counts instead).
+    pub own: Option<f32>,
+    /// The rest of its factor, per channel, worked out from the shader's colour: common to it and the other
+    /// terms of its shader whose factor was not known. White where its own share is its whole factor.
+    pub common: Color,
+    /// The other rays of its shader that share `common`.
+    pub rays: usize,
+    /// The light terms (irradiance) of its shader that share `common`.
+    pub lights: usize,
+}
+
+/// What the tree says at a hit beyond its terms: what a technique computed there, or a layer's weight.
+#[derive(Clone, Debug)]
+pub struct Note {
+    /// For a topic, the layers being shaded when it was computed; for a layer's weight, that layer.
+    pub layer: String,
+    /// How many layers deep it was made (0 at the hit's own shader).
+    depth: usize,
+    /// What it says.
+    pub what: NoteKind,
+}
+
+/// What a [`Note`] says.
+#[derive(Clone, Debug)]
+pub enum NoteKind {
+    /// A technique's values ([`crate::lesson::topic`]).
+    Topic(Topic),
+    /// The layer counts this many times in the colour of the shader it is a layer of (its blend, times what
+    /// the layers above it let through).
+    LayerWeight(Color),
 }
 
 /// What a [`Term`] multiplies its factor by.
@@ -131,6 +181,8 @@ pub struct RayRecord {
     pub color: Color,
     /// The parts of the colour of the surface it hit.
     pub terms: Vec<Term>,
+    /// What the techniques computed at the hit, and the weights of its layers, in the order they were found.
+    pub notes: Vec<Note>,
 }
 
 /// The terms of one shader being run (a hit's shader, or one layer of a `Layered` one) that are still open.
@@ -140,6 +192,8 @@ struct Scope {
     label: String,
     /// Its terms are `terms[first..]` of the ray being shaded.
     first: usize,
+    /// The weight of the ray its shader sees: a ray it traces has its own share of it.
+    weight: f32,
 }
 
 /// The rays traced for one pixel: one tree per camera ray, in the order they were traced.
@@ -172,8 +226,15 @@ impl RayTree {
     fn push_term(&mut self, what: TermKind, fixed: bool) {
         let layer = self.layer_label();
         if let (Some(&(id, _)), Some(flags)) = (self.open.last(), self.fixed.last_mut()) {
-            self.rays[id].terms.push(Term { factor: Color::WHITE, layer, what });
+            self.rays[id].terms.push(Term { factor: Color::WHITE, layer, what, share: None });
             flags.push(fixed);
+        }
+    }
+
+    /// Adds a note, labelled `layer`, to the innermost open ray.
+    fn push_note(&mut self, layer: String, what: NoteKind) {
+        if let Some((id, scopes)) = self.open.last() {
+            self.rays[*id].notes.push(Note { layer, depth: scopes.len(), what });
         }
     }
 
@@ -185,41 +246,61 @@ impl RayTree {
         }
     }
 
-    /// The shader whose terms are `terms[first..]` of the innermost open ray returned `color`: works out the
-    /// factor of the terms that have none yet (see the module documentation), adds the shader's own colour
-    /// if some is left, and marks them all as known.
-    fn settle(&mut self, first: usize, color: Color) {
+    /// The shader whose terms are `terms[first..]` of the innermost open ray returned `color`, shading a ray
+    /// of weight `weight`: works out the factor of the terms that have none yet (see the module
+    /// documentation), adds the shader's own colour if some is left, and marks them all as known.
+    fn settle(&mut self, first: usize, color: Color, weight: f32) {
         let (Some(&(id, _)), Some(fixed)) = (self.open.last(), self.fixed.last()) else {
             return;
         };
         let terms = &self.rays[id].terms[first..];
+        // Each open term's own share: a ray's from its weight, 1 for light (and for a ray whose weight says
+        // nothing).
+        let own: Vec<Option<f32>> = terms
+            .iter()
+            .map(|term| match term.what {
+                TermKind::Ray(child) => {
+                    Some(self.rays[child].weight / weight).filter(|s| weight > 0.0 && s.is_finite())
+                }
+                _ => None,
+            })
+            .collect();
         let (mut known, mut gathered, mut magnitude) = (Color::BLACK, Color::BLACK, color.0.abs());
-        for (term, &is_fixed) in terms.iter().zip(&fixed[first..]) {
+        let (mut rays, mut lights) = (0, 0);
+        for ((term, &is_fixed), own) in terms.iter().zip(&fixed[first..]).zip(&own) {
             let part = self.value(term);
             if is_fixed {
                 known += term.factor * part;
                 magnitude += (term.factor * part).0.abs();
             } else {
+                let part = part * own.unwrap_or(1.0);
                 gathered += part;
                 magnitude += part.0.abs();
+                match term.what {
+                    TermKind::Ray(_) => rays += 1,
+                    _ => lights += 1,
+                }
             }
         }
         // Per channel: the common factor of the open terms, and what is left where they brought nothing.
         let rest = color - known;
-        let factor =
+        let common =
             Color::new(ratio(rest.r(), gathered.r()), ratio(rest.g(), gathered.g()), ratio(rest.b(), gathered.b()));
-        let own = rest - factor * gathered;
+        let own_colour = rest - common * gathered;
         let count = terms.len();
         let terms = &mut self.rays[id].terms[first..];
-        for (term, &is_fixed) in terms.iter_mut().zip(&fixed[first..]) {
+        for ((term, &is_fixed), &own) in terms.iter_mut().zip(&fixed[first..]).zip(&own) {
             if !is_fixed {
-                term.factor = factor;
+                term.factor = common * own.unwrap_or(1.0);
+                if let TermKind::Ray(_) = term.what {
+                    term.share = Some(Share { own, common, rays: rays - 1, lights });
+                }
             }
         }
         // What is left beyond the rounding of the shader's own sums is colour of its own.
         let rounding = magnitude * ((count + 4) as f32 * f32::EPSILON);
-        if (own.0.abs() - rounding).max_element() > 0.0 {
-            self.push_term(TermKind::Own { color: own }, true);
+        if (own_colour.0.abs() - rounding).max_element() > 0.0 {
+            self.push_term(TermKind::Own { color: own_colour }, true);
         }
         if let Some(flags) = self.fixed.last_mut() {
             flags[first..].iter_mut().for_each(|f| *f = true);
@@ -280,8 +361,9 @@ impl Observer for RayTree {
             stop: None,
             color: Color::BLACK,
             terms: Vec::new(),
+            notes: Vec::new(),
         });
-        self.open.push((id, vec![Scope { label: String::new(), first: 0 }]));
+        self.open.push((id, vec![Scope { label: String::new(), first: 0, weight: ray.weight }]));
         self.fixed.push(Vec::new());
     }
 
@@ -301,36 +383,58 @@ impl Observer for RayTree {
         self.push_term(TermKind::Light { kind: light, color }, !light.is_irradiance());
     }
 
-    fn layer_begins(&mut self, layer: &Layer) {
+    fn layer_begins(&mut self, layer: &Layer, ray: &Ray) {
         let source = layer.blend_tex.as_ref().map_or(String::new(), |tex| format!(", blend {}", tex.name()));
         let label = format!("layer {}{source}", layer.shader.name());
         if let Some((id, scopes)) = self.open.last_mut() {
-            scopes.push(Scope { label, first: self.rays[*id].terms.len() });
+            scopes.push(Scope { label, first: self.rays[*id].terms.len(), weight: ray.weight });
         }
     }
 
     fn layer_ends(&mut self, color: Color, weight: Color) {
-        let Some(first) = self.open.last().and_then(|(_, scopes)| scopes.last()).map(|scope| scope.first) else {
+        let Some(scope) = self.open.last().and_then(|(_, scopes)| scopes.last()).cloned() else {
             return;
         };
-        self.settle(first, color);
+        self.settle(scope.first, color, scope.weight);
         if let Some((id, scopes)) = self.open.last_mut() {
             scopes.pop();
-            for term in &mut self.rays[*id].terms[first..] {
+            for term in &mut self.rays[*id].terms[scope.first..] {
                 term.factor *= weight;
+            }
+        }
+        self.push_note(scope.label, NoteKind::LayerWeight(weight));
+    }
+
+    fn layers_covered(&mut self, blend: Color) {
+        let Some((id, scopes)) = self.open.last() else {
+            return;
+        };
+        let (first, depth, through) = (scopes.last().map_or(0, |s| s.first), scopes.len(), Color::WHITE - blend);
+        let ray = &mut self.rays[*id];
+        ray.terms[first..].iter_mut().for_each(|term| term.factor *= through);
+        for note in ray.notes.iter_mut().filter(|note| note.depth == depth) {
+            if let NoteKind::LayerWeight(weight) = &mut note.what {
+                *weight *= through;
             }
         }
     }
 
     fn ray_ends(&mut self, color: Color, stop: Option<Stop>) {
-        if self.open.last().is_some_and(|&(id, _)| self.rays[id].hit.is_some()) {
-            self.settle(0, color);
+        if let Some(&(id, _)) = self.open.last().filter(|&&(id, _)| self.rays[id].hit.is_some()) {
+            self.settle(0, color, self.rays[id].weight);
         }
         if let Some((id, _)) = self.open.pop() {
             self.rays[id].color = color;
             self.rays[id].stop = stop;
             self.fixed.pop();
         }
+    }
+}
+
+impl Recorder for RayTree {
+    fn record(&mut self, topic: &Topic) {
+        let layer = self.layer_label();
+        self.push_note(layer, NoteKind::Topic(topic.clone()));
     }
 }
 

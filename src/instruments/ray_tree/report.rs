@@ -1,10 +1,11 @@
 //! The ray tree as `--trace-pixel` prints it: indented text to read, or JSON for tools.
 
-use super::{PixelPos, RayTree, TermKind, TraceFormat, TracedPixel};
+use super::{Note, NoteKind, PixelPos, RayTree, Share, TermKind, TraceFormat, TracedPixel};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::math::Vector;
 use crate::lesson::observer::LightTerm;
+use crate::lesson::topic::Topic;
 use std::fmt::Write;
 
 impl RayTree {
@@ -52,6 +53,9 @@ impl RayTree {
         if let Some(hit) = &ray.hit {
             let _ = writeln!(out, "{pad}  hits {} at distance {:.4}, shader {}", hit.node, hit.distance, hit.shader);
         }
+        for note in &ray.notes {
+            write_note(out, &format!("{pad}  "), note);
+        }
         if let Some(stop) = ray.stop {
             let _ = writeln!(out, "{pad}  stops: {stop}");
         }
@@ -64,7 +68,7 @@ impl RayTree {
             let layer = if term.layer.is_empty() { String::new() } else { format!("{}: ", term.layer) };
             match term.what {
                 TermKind::Ray(child) => {
-                    let _ = writeln!(out, "{pad}  + {layer}{} times", factor(term.factor));
+                    let _ = writeln!(out, "{pad}  + {layer}{} times{}", factor(term.factor), share_text(term.share));
                     let child_label = self.ray_label(Some(id), child);
                     self.write_ray(out, child, throughput * term.factor, indent + 2, &child_label);
                 }
@@ -125,11 +129,13 @@ impl RayTree {
             None => out.push_str("\"hit\":null,"),
         }
         let stop = ray.stop.map_or("null".to_string(), |s| json_str(&s.to_string()));
+        let notes: Vec<String> = ray.notes.iter().map(note_json).collect();
         let _ = write!(
             out,
-            "\"stop\":{stop},\"color\":{},\"throughput\":{},\"terms\":[",
+            "\"stop\":{stop},\"color\":{},\"throughput\":{},\"notes\":[{}],\"terms\":[",
             json_vec(ray.color.to_array()),
-            json_vec(throughput.to_array())
+            json_vec(throughput.to_array()),
+            notes.join(",")
         );
         for (i, term) in ray.terms.iter().enumerate() {
             if i > 0 {
@@ -137,6 +143,10 @@ impl RayTree {
             }
             let _ =
                 write!(out, "{{\"factor\":{},\"layer\":{},", json_vec(term.factor.to_array()), json_str(&term.layer));
+            if let Some(share) = term.share {
+                let own = share.own.map_or("null".to_string(), json_num);
+                let _ = write!(out, "\"own_share\":{own},\"common\":{},", json_vec(share.common.to_array()));
+            }
             match term.what {
                 TermKind::Ray(child) => {
                     out.push_str("\"ray\":");
@@ -201,6 +211,134 @@ pub fn describe(
             tree.to_text(sample)
         ),
     })
+}
+
+/// What a ray's factor is made of, when the tree says: its own share from its weight, times a part worked out
+/// from its shader's colour and shared with its siblings. Nothing when its own share is its whole factor.
+fn share_text(share: Option<Share>) -> String {
+    let Some(share) = share else {
+        return String::new();
+    };
+    if share.own.is_some() && factor(share.common) == factor(Color::WHITE) {
+        return String::new();
+    }
+    let own = share.own.map_or(String::new(), |own| format!("its weight gives {own:.4}, times "));
+    let plural = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+    let mut siblings = Vec::new();
+    if share.rays > 0 {
+        siblings.push(format!("the other {}", plural(share.rays, "ray")));
+    }
+    if share.lights > 0 {
+        siblings.push(plural(share.lights, "light term"));
+    }
+    let common = factor(share.common);
+    if siblings.is_empty() {
+        return format!(" ({own}{common} worked out from its shader's colour)");
+    }
+    format!(
+        " ({own}{common} shared with {} of its shader: worked out from its colour, not known ray by ray)",
+        siblings.join(" and ")
+    )
+}
+
+/// A note at a hit, as lines indented by `pad`.
+fn write_note(out: &mut String, pad: &str, note: &Note) {
+    let layer = if note.layer.is_empty() { String::new() } else { format!("{}: ", note.layer) };
+    let topic = match &note.what {
+        NoteKind::LayerWeight(weight) => {
+            let _ = writeln!(out, "{pad}{layer}counts {} times in its shader's colour", factor(*weight));
+            return;
+        }
+        NoteKind::Topic(topic) => topic,
+    };
+    match topic {
+        Topic::Fresnel { reflectance, eta, cos, exact } => {
+            let formula = if *exact { "the exact Fresnel equations" } else { "Schlick's approximation" };
+            let _ = writeln!(
+                out,
+                "{pad}{layer}Fresnel reflectance {reflectance:.4} ({formula}; n1/n2 {eta:.4}, the ray at cos {cos:.4} \
+                 to the normal): the blend it gives its layer"
+            );
+        }
+        Topic::Texels { u, v, texels } => {
+            let filter = match texels.len() {
+                1 => "the nearest texel (the slide's)".to_string(),
+                n => format!("bilinear, the {n} texels around it"),
+            };
+            let _ = writeln!(out, "{pad}{layer}bitmap read at u {u:.4}, v {v:.4} (one image per unit): {filter}");
+            for texel in texels {
+                let _ = writeln!(
+                    out,
+                    "{pad}    texel ({}, {}) weight {:.4}: {}",
+                    texel.x,
+                    texel.y,
+                    texel.weight,
+                    rgb(texel.color)
+                );
+            }
+        }
+        Topic::Photons { k, radius, max_radius, photons } => {
+            let counted = photons.iter().filter(|p| p.weight > 0.0).count();
+            let _ = writeln!(
+                out,
+                "{pad}{layer}photon estimate: k {k}, {} found within the largest radius {max_radius:.4}, their power \
+                 spread over the disc of radius {radius:.4}; {counted} arrived on this side and count",
+                photons.len()
+            );
+            let mut nearest = photons.clone();
+            nearest.sort_by(|a, b| a.distance.total_cmp(&b.distance).then(a.index.cmp(&b.index)));
+            for photon in nearest {
+                let _ = writeln!(
+                    out,
+                    "{pad}    photon {} at distance {:.4}: power {}, weight {:.4}",
+                    photon.index,
+                    photon.distance,
+                    rgb(photon.power),
+                    photon.weight
+                );
+            }
+        }
+    }
+}
+
+/// A note as a JSON object.
+fn note_json(note: &Note) -> String {
+    let what = match &note.what {
+        NoteKind::LayerWeight(weight) => format!("\"weight\":{}", json_vec(weight.to_array())),
+        NoteKind::Topic(Topic::Fresnel { reflectance, eta, cos, exact }) => format!(
+            "\"fresnel\":{{\"reflectance\":{},\"eta\":{},\"cos\":{},\"exact\":{exact}}}",
+            json_num(*reflectance),
+            json_num(*eta),
+            json_num(*cos)
+        ),
+        NoteKind::Topic(Topic::Texels { u, v, texels }) => {
+            let texels: Vec<String> = texels
+                .iter()
+                .map(|t| {
+                    let color = json_vec(t.color.to_array());
+                    format!("{{\"x\":{},\"y\":{},\"weight\":{},\"color\":{color}}}", t.x, t.y, json_num(t.weight))
+                })
+                .collect();
+            format!("\"texels\":{{\"u\":{},\"v\":{},\"texels\":[{}]}}", json_num(*u), json_num(*v), texels.join(","))
+        }
+        NoteKind::Topic(Topic::Photons { k, radius, max_radius, photons }) => {
+            let photons: Vec<String> = photons
+                .iter()
+                .map(|p| {
+                    let (distance, weight) = (json_num(p.distance), json_num(p.weight));
+                    let power = json_vec(p.power.to_array());
+                    format!("{{\"index\":{},\"distance\":{distance},\"power\":{power},\"weight\":{weight}}}", p.index)
+                })
+                .collect();
+            format!(
+                "\"photons\":{{\"k\":{k},\"radius\":{},\"max_radius\":{},\"photons\":[{}]}}",
+                json_num(*radius),
+                json_num(*max_radius),
+                photons.join(",")
+            )
+        }
+    };
+    format!("{{\"layer\":{},{what}}}", json_str(&note.layer))
 }
 
 /// How the tree names light found at a surface.

@@ -72,6 +72,7 @@ use crate::lesson::geometry::Aabb;
 use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
 use crate::lesson::spectral::clip_to_gamut;
+use crate::lesson::topic::{PhotonSeen, Recorder, Topic, record};
 use grid::{CELLS_PER_RADIUS, Found, PhotonGrid, SEARCH_FRACTIONS};
 use kd_tree::KdTree;
 use std::cell::RefCell;
@@ -269,11 +270,17 @@ impl PhotonMap {
     /// disc of the maximum radius when fewer than k lie within it); with the grid, weighted by the cone
     /// filter. With `--show-photons`, a bright dot where a photon lies instead.
     pub fn irradiance(&self, p: Vector, n: Vector) -> Color {
+        self.irradiance_recorded(p, n, None)
+    }
+
+    /// [`PhotonMap::irradiance`], telling `recorder`, if given, the photons it found, k and the radius
+    /// ([`Topic::Photons`]).
+    pub fn irradiance_recorded(&self, p: Vector, n: Vector, recorder: Option<&mut dyn Recorder>) -> Color {
         if self.show {
             return self.dot(p);
         }
         let grid = match &self.lookup {
-            Lookup::KdTree(tree) => return self.kd_tree_irradiance(tree, p, n),
+            Lookup::KdTree(tree) => return self.kd_tree_irradiance(tree, p, n, recorder),
             Lookup::Grid(grid) => grid,
         };
         beyond!(PhotonGrid);
@@ -305,19 +312,36 @@ impl PhotonMap {
             };
             exercise!(irradiance_estimate(found.iter().map(|f| (f.d2(), &self.photons[f.index()])), r2, n));
             let filter_radius = CONE_FILTER_K * r2.sqrt();
+            let cone = |d2: f32| 1.0 - d2.sqrt() / filter_radius;
             let mut sum = Color::BLACK;
             for f in found.iter() {
                 let (d2, photon) = (f.d2(), &self.photons[f.index()]);
                 if photon.dir.dot(n) < 0.0 {
-                    sum += photon.power * (1.0 - d2.sqrt() / filter_radius);
+                    sum += photon.power * cone(d2);
                 }
             }
-            arriving_light(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2))
+            let irradiance = arriving_light(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2));
+            record(recorder, || self.topic(found.iter().map(|f| (f.d2(), f.index())).collect(), n, r2, cone));
+            irradiance
         })
     }
 
+    /// What an estimate at a point of normal `n` found: the photons `found` (squared distance and index), each
+    /// that arrived on the viewer's side counted `weight(d2)` times, in a disc of squared radius `r2`.
+    fn topic(&self, found: Vec<(f32, usize)>, n: Vector, r2: f32, weight: impl Fn(f32) -> f32) -> Topic {
+        let photons = found
+            .into_iter()
+            .map(|(d2, index)| {
+                let (photon, distance) = (&self.photons[index], d2.sqrt());
+                let weight = if photon.dir.dot(n) < 0.0 { weight(d2) } else { 0.0 };
+                PhotonSeen { index, distance, power: photon.power, weight }
+            })
+            .collect();
+        Topic::Photons { k: self.k.get(), radius: r2.sqrt(), max_radius: self.max_radius, photons }
+    }
+
     /// The slide's estimate: the k nearest photons from the k-d tree, their power over the disc's area.
-    fn kd_tree_irradiance(&self, tree: &KdTree, p: Vector, n: Vector) -> Color {
+    fn kd_tree_irradiance(&self, tree: &KdTree, p: Vector, n: Vector, recorder: Option<&mut dyn Recorder>) -> Color {
         let (max_r2, k) = (self.max_radius * self.max_radius, self.k.get());
         let found = tree.nearest(p, k, max_r2);
         let r2 = if found.len() < k { max_r2 } else { found.iter().fold(0.0, |m, (d2, _)| d2.max(m)) };
@@ -325,13 +349,15 @@ impl PhotonMap {
             return Color::BLACK;
         }
         let mut sum = Color::BLACK;
-        for (_, i) in found {
+        for &(_, i) in &found {
             let photon = &self.photons[i as usize];
             if photon.dir.dot(n) < 0.0 {
                 sum += photon.power;
             }
         }
-        arriving_light(sum / (PI * r2))
+        let irradiance = arriving_light(sum / (PI * r2));
+        record(recorder, || self.topic(found.iter().map(|&(d2, i)| (d2, i as usize)).collect(), n, r2, |_| 1.0));
+        irradiance
     }
 
     /// `--show-photons`: a dot of the nearest photon's colour if one lies within the dot radius.

@@ -20,7 +20,7 @@
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
-use super::{CausticCaster, IntoShader, PhotonScatter, Shader, is_caustic_caster, scatter_photon};
+use super::{CausticCaster, IntoShader, PhotonScatter, Shader, is_caustic_caster, read_texture, scatter_photon};
 use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
@@ -47,7 +47,9 @@ pub struct Layer {
 impl Layer {
     /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
     pub fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
-        Layer::clamp_blend(LayerShading::blend(self, ray, info, Steps::ALL))
+        Layer::clamp_blend(
+            self.blend * self.blend_tex.as_ref().map_or(Color::WHITE, |t| t.color_with(ray, info, Steps::ALL)),
+        )
     }
 
     /// A blend clamped to [0, 1], the range of an opacity.
@@ -61,20 +63,17 @@ impl Layer {
 /// its colour there. A [`Layer`] answers through its trait objects; the renderer's prepared layers
 /// ([`crate::lesson::dispatch`]) answer the same through the workbook's own types.
 pub(crate) trait LayerShading {
-    /// The layer's opacity at the hit, its blend texture read as `steps` say: its blend colour times its
-    /// blend texture, before clamping.
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color;
+    /// The layer's opacity at the hit, its blend texture read as the steps of `ctx`'s scene say: its blend
+    /// colour times its blend texture, before clamping.
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
     /// The layer's colour at the hit times `weight`, its share of the surface's colour, for `ray`.
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color;
 }
 
 impl LayerShading for Layer {
     #[inline(always)]
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color {
-        match &self.blend_tex {
-            Some(tex) => self.blend * tex.color_with(ray, info, steps),
-            None => self.blend,
-        }
+    fn blend(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.blend * self.blend_tex.as_ref().map_or(Color::WHITE, |tex| read_texture(&**tex, ray, info, ctx))
     }
 
     #[inline(always)]
@@ -93,7 +92,8 @@ pub(crate) fn shade_bottom_up<L: LayerShading>(
 ) -> Color {
     let mut res = Color::BLACK;
     for layer in layers {
-        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx.scene.steps));
+        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx));
+        ctx.observe(|o| o.layers_covered(blend));
         res = res * (Color::WHITE - blend) + layer.shade(ray, info, blend, ctx);
     }
     res
@@ -114,7 +114,7 @@ pub(crate) fn shade_pruned<L: LayerShading>(
     let mut uncovered = Color::WHITE;
     let mut layer_ray = *ray;
     for layer in layers.iter().rev() {
-        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx.scene.steps));
+        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx));
         let weight = layer_weight(uncovered, blend);
         let strength = weight.max_channel();
         if strength > 0.0 {

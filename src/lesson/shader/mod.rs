@@ -186,13 +186,14 @@ impl ColorSource {
     }
 
     /// The colour at the hit `info` as the render's reading reads it ([`TraceContext::raytrace`]'s scene's
-    /// steps: one texel of a bitmap under `--slide`, its filter otherwise). The course's shaders read their
-    /// colours so; a shader of a student's may too.
+    /// steps: one texel of a bitmap under `--slide`, its filter otherwise), what the texture computed told to
+    /// the ray tree when one watches. The course's shaders read their colours so; a shader of a student's
+    /// may too.
     #[inline]
-    pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &TraceContext) -> Color {
+    pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
             ColorSource::Color(c) => *c,
-            ColorSource::Texture(t) => t.color_with(ray, info, ctx.scene.steps),
+            ColorSource::Texture(t) => read_texture(&**t, ray, info, ctx),
         }
     }
 
@@ -203,6 +204,17 @@ impl ColorSource {
             ColorSource::Color(_) => None,
             ColorSource::Texture(t) => Some(&**t),
         }
+    }
+}
+
+/// The colour of `texture` at the hit `info` as the render's reading reads it ([`Texture::color_with`]),
+/// telling the observer, if one watches, what the texture computed ([`Texture::color_recorded`]).
+#[inline]
+pub(crate) fn read_texture(texture: &dyn Texture, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+    let steps = ctx.scene.steps;
+    match ctx.recorder() {
+        Some(recorder) => texture.color_recorded(ray, info, steps, recorder),
+        None => texture.color_with(ray, info, steps),
     }
 }
 

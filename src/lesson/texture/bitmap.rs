@@ -14,6 +14,7 @@ use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::ray::Ray;
+use crate::lesson::topic::Recorder;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -61,6 +62,14 @@ impl BitmapTexture {
     }
 }
 
+impl BitmapTexture {
+    /// The colour at the hit as a render that takes `steps` reads it, the texels read told to `recorder`.
+    fn read(&self, info: &IntersectionInfo, steps: Steps, recorder: Option<&mut dyn Recorder>) -> Color {
+        let (u, v) = self.lookup_uv(info.uv());
+        self.bitmap.sample_recorded(u, v, self.filter.under(steps), self.wrap, recorder)
+    }
+}
+
 impl Texture for BitmapTexture {
     #[inline(always)]
     fn get_tex_color(&self, _ray: &Ray, info: &IntersectionInfo) -> Color {
@@ -70,8 +79,12 @@ impl Texture for BitmapTexture {
 
     /// One texel, the slide's, without the step `TexelFilter`; the texture's own filter with it.
     fn color_with(&self, _ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color {
-        let (u, v) = self.lookup_uv(info.uv());
-        self.bitmap.sample(u, v, self.filter.under(steps), self.wrap)
+        self.read(info, steps, None)
+    }
+
+    /// The colour, telling `recorder` where the image was read and the texels mixed.
+    fn color_recorded(&self, _ray: &Ray, info: &IntersectionInfo, steps: Steps, recorder: &mut dyn Recorder) -> Color {
+        self.read(info, steps, Some(recorder))
     }
 
     /// The surface's u/v divided by `tile_size`: one copy of the image per unit.

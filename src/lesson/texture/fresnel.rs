@@ -7,11 +7,13 @@
 //! would give less than 1 and let the refraction layer return black for the rest).
 
 use super::Texture;
+use crate::lesson::beyond::Steps;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
-use crate::lesson::math::{faceforward, fresnel, fresnel_exact};
+use crate::lesson::math::{Vector, faceforward, fresnel, fresnel_exact};
 use crate::lesson::ray::Ray;
 use crate::lesson::spectral::Ior;
+use crate::lesson::topic::{Recorder, Topic};
 
 /// Which formula the Fresnel texture uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -45,17 +47,22 @@ impl Fresnel {
     /// The reflectance for this ray and hit (the slide's `getTexColor`, as a number).
     #[inline(always)]
     pub fn reflectance(&self, ray: &Ray, info: &IntersectionInfo) -> f32 {
-        // Entering, light goes from air (1) into the object (ior); leaving, the other way round: the slide's
-        // "eta flipped when inside". The test is the one `Refraction` makes, so the two always agree on which
-        // side the ray is (and on total internal reflection).
-        let ior = self.ior.at(ray.wavelength);
-        let entering = info.normal.dot(ray.dir) < 0.0;
-        let eta = if entering { 1.0 / ior } else { ior };
-        let n = faceforward(info.normal, ray.dir);
+        let (eta, n) = self.interface(ray, info);
         match self.mode {
             FresnelMode::Schlick => fresnel(ray.dir, n, eta),
             FresnelMode::Exact => fresnel_exact(ray.dir, n, eta),
         }
+    }
+
+    /// The ratio n1 / n2 of the indices on the ray's side and across the surface, and the normal facing the
+    /// ray. Entering, light goes from air (1) into the object (ior); leaving, the other way round: the
+    /// slide's "eta flipped when inside". The test is the one `Refraction` makes, so the two always agree on
+    /// which side the ray is (and on total internal reflection).
+    #[inline(always)]
+    fn interface(&self, ray: &Ray, info: &IntersectionInfo) -> (f32, Vector) {
+        let ior = self.ior.at(ray.wavelength);
+        let entering = info.normal.dot(ray.dir) < 0.0;
+        (if entering { 1.0 / ior } else { ior }, faceforward(info.normal, ray.dir))
     }
 }
 
@@ -63,6 +70,15 @@ impl Texture for Fresnel {
     #[inline]
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
         Color::gray(self.reflectance(ray, info))
+    }
+
+    /// The reflectance, told to `recorder` with the ratio of the indices and the angle it comes from.
+    fn color_recorded(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps, recorder: &mut dyn Recorder) -> Color {
+        let reflectance = self.reflectance(ray, info);
+        let (eta, n) = self.interface(ray, info);
+        let (cos, exact) = ((-n.dot(ray.dir)).clamp(0.0, 1.0), self.mode == FresnelMode::Exact);
+        recorder.record(&Topic::Fresnel { reflectance, eta, cos, exact });
+        Color::gray(reflectance)
     }
 
     fn is_dispersive(&self) -> bool {

@@ -14,6 +14,7 @@ use crate::lesson::beyond::Steps;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::ray::Ray;
+use crate::lesson::topic::Recorder;
 use std::any::Any;
 
 /// The course's `Texture` interface.
@@ -26,6 +27,13 @@ pub trait Texture: Any + Send + Sync {
     /// `TexelFilter`. A texture whose reading depends on no step leaves it as it is.
     fn color_with(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps) -> Color {
         self.get_tex_color(ray, info)
+    }
+
+    /// [`Texture::color_with`], telling `recorder` what the slide's technique computed for it (the Fresnel
+    /// reflectance, the texels a bitmap mixed; [`crate::lesson::topic`]): what the ray tree shows at a hit.
+    /// By default `color_with`, which tells nothing.
+    fn color_recorded(&self, ray: &Ray, info: &IntersectionInfo, steps: Steps, _recorder: &mut dyn Recorder) -> Color {
+        self.color_with(ray, info, steps)
     }
 
     /// The coordinates this texture looks its colour up at, for a point of a surface whose texture
