@@ -98,6 +98,8 @@ const _: () = {
     }
 };
 
+pub mod hooks;
+
 /// Each exercise's switch, as the renderer and the grader read it: whether it is in [`HANDED_OUT`].
 pub mod handed_out {
     use super::{HANDED_OUT, listed};

@@ -113,29 +113,3 @@ pub fn refine_pixel(
     counters.add(&ctx.counters);
     sum / SAMPLES_PER_REFINED_PIXEL as f32
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn pixels_next_to_an_edge_are_marked_and_flat_ones_are_not() {
-        let mut frame = Frame::new(6, 4);
-        for y in 0..4 {
-            for x in 3..6 {
-                frame.pixels[y * 6 + x] = Color::gray(0.5);
-            }
-        }
-        // Above 1 both sides clamp to 1: no difference.
-        frame.pixels[0] = Color::gray(5.0);
-        frame.pixels[1] = Color::gray(1.0);
-        let m = marked(&frame);
-        for y in 0..4 {
-            let row: Vec<bool> = m[y * 6..y * 6 + 6].to_vec();
-            assert_eq!(&row[2..4], &[true, true], "row {y}");
-            assert!(!row[5], "row {y}");
-        }
-        assert!(m[0] && m[1], "a pixel of 1 beside black is marked");
-        assert!(!m[6 * 3], "bottom-left is flat black");
-    }
-}

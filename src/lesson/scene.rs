@@ -12,6 +12,7 @@
 //! brings back cannot move its pixel by a whole 8-bit level (see [`srgb8_finest_step`]). Glass and mirrors stop
 //! recursing as soon as nothing visible is left, instead of always going `max_depth` levels down.
 
+use crate::files::workers::NESTED_CALLS;
 use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
@@ -42,9 +43,9 @@ pub const MAX_RAY_DEPTH: u32 = 2;
 /// A hard limit on the depth of recursion that holds whatever `max_depth` says, even "no limit" (the
 /// slide's Reflection v0.1): between two facing mirrors a ray can bounce forever, and each bounce is a
 /// nested call of `raytrace`, so without it the program would die of a stack overflow. Rays stopped here
-/// return black and are counted in [`Counters::capped_rays`]. The renderer's worker threads get a stack
-/// large enough for this depth (see [`crate::lesson::render`]).
-pub const RECURSION_SAFETY_CAP: u32 = 1000;
+/// return black and are counted in [`Counters::capped_rays`]. It is the depth the renderer's worker threads
+/// have the stack for ([`crate::files::workers::NESTED_CALLS`], 1000).
+pub const RECURSION_SAFETY_CAP: u32 = NESTED_CALLS;
 
 /// The smallest amount of linear light that moves an 8-bit sRGB value by a whole level: the linear value of
 /// the first code above black. The codes are closest together there (the sRGB curve starts with a straight

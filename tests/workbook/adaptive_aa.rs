@@ -5,6 +5,8 @@ use crate::common;
 
 use lecture6::app::scene_file::{LoadOptions, load};
 use lecture6::lesson::adaptive_aa::marked;
+use lecture6::lesson::color::Color;
+use lecture6::lesson::frame::Frame;
 use lecture6::lesson::render::{RenderSettings, render};
 
 fn fresnel_file() -> lecture6::app::scene_file::SceneFile {
@@ -42,4 +44,25 @@ fn adaptive_anti_aliasing_starts_from_one_sample() {
     let settings = RenderSettings { width: 16, height: 12, spp: 4, adaptive_aa: true, ..Default::default() };
     let e = render(&file.scene, &settings).err().map(|e| e.to_string()).unwrap_or_default();
     assert!(e.contains("one sample per pixel"), "{e}");
+}
+
+#[test]
+fn pixels_next_to_an_edge_are_marked_and_flat_ones_are_not() {
+    let mut frame = Frame::new(6, 4);
+    for y in 0..4 {
+        for x in 3..6 {
+            frame.pixels[y * 6 + x] = Color::gray(0.5);
+        }
+    }
+    // Above 1 both sides clamp to 1: no difference.
+    frame.pixels[0] = Color::gray(5.0);
+    frame.pixels[1] = Color::gray(1.0);
+    let m = marked(&frame);
+    for y in 0..4 {
+        let row: Vec<bool> = m[y * 6..y * 6 + 6].to_vec();
+        assert_eq!(&row[2..4], &[true, true], "row {y}");
+        assert!(!row[5], "row {y}");
+    }
+    assert!(m[0] && m[1], "a pixel of 1 beside black is marked");
+    assert!(!m[6 * 3], "bottom-left is flat black");
 }

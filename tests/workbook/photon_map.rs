@@ -388,3 +388,52 @@ fn impossible_photon_settings_are_one_line_naming_the_value() {
         assert!(err.contains(needle) && err.trim_end().lines().count() == 1 && !err.contains("panicked"), "{err}");
     }
 }
+
+/// The photon grid (the step beyond the slides that `PhotonMap::new` sorts photons into) finds exactly the
+/// photons a scan of all of them finds: every photon within the largest radius when k asks for all of them,
+/// the k nearest when it asks for fewer, at points inside, at the edge of and outside the photons' box, for
+/// photons on a surface (a plane, as on the workbook's floors) and in a volume, at several radii.
+#[test]
+fn the_photon_grid_finds_what_a_scan_of_every_photon_finds() {
+    use lecture6::lesson::photon_map::StoredPhoton;
+    use lecture6::lesson::topic::{Recorder, Topic};
+    /// The indices of the photons an estimate found, in order.
+    struct Found(Vec<usize>);
+    impl Recorder for Found {
+        fn record(&mut self, topic: &Topic) {
+            if let Topic::Photons { photons, .. } = topic {
+                self.0 = photons.iter().map(|p| p.index).collect();
+                self.0.sort();
+            }
+        }
+    }
+    let mut rng = Rng::for_keys(&[7]);
+    let mut random = |scale: f32| (rng.next_f32() - 0.5) * scale;
+    for flat in [true, false] {
+        let photons: Vec<StoredPhoton> = (0..3000)
+            .map(|_| StoredPhoton {
+                position: Vector::new(random(20.0), if flat { 1.0 } else { random(20.0) }, random(20.0)),
+                dir: Vector::NEG_Y,
+                power: Color::WHITE,
+            })
+            .collect();
+        for (max_radius, k) in [(0.5, 3000), (1.5, 3000), (1.5, 5), (3.0, 40)] {
+            let map = PhotonMap::new(photons.clone(), k, max_radius, false).unwrap();
+            for _ in 0..100 {
+                let p = Vector::new(random(26.0), if flat { 1.0 + random(4.0) } else { random(26.0) }, random(26.0));
+                let mut found = Found(Vec::new());
+                map.irradiance_recorded(p, Vector::Y, Some(&mut found));
+                // Squared distances as the grid adds them up, nearest first, ties by index.
+                let d2 = |q: Vector| (q - p).x.powi(2) + (q - p).y.powi(2) + (q - p).z.powi(2);
+                let mut scan: Vec<(f32, usize)> = (photons.iter().enumerate())
+                    .map(|(i, photon)| (d2(photon.position), i))
+                    .filter(|&(d2, _)| d2 <= max_radius * max_radius)
+                    .collect();
+                scan.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+                let mut nearest: Vec<usize> = scan.iter().take(k as usize).map(|&(_, i)| i).collect();
+                nearest.sort();
+                assert_eq!(found.0, nearest, "around {p} within {max_radius}, k {k}");
+            }
+        }
+    }
+}

@@ -36,7 +36,6 @@ const PLAIN_PATH: &[(&str, &[Part])] = &[
                 &[
                     "pub struct RenderSettings",
                     "impl RenderSettings",
-                    "pub fn thread_pool(",
                     "pub struct Stratifier",
                     "    pub fn new(spp",
                     "    pub fn offset(",

@@ -176,17 +176,6 @@ pub struct PhotonMap {
     pub stats: PhotonStats,
 }
 
-impl std::fmt::Debug for PhotonMap {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("PhotonMap")
-            .field("stats", &self.stats)
-            .field("k", &self.k)
-            .field("max_radius", &self.max_radius)
-            .field("show", &self.show)
-            .finish_non_exhaustive()
-    }
-}
-
 thread_local! {
     /// The photons an estimate found, reused from estimate to estimate.
     static FOUND: RefCell<Vec<Found>> = const { RefCell::new(Vec::new()) };

@@ -60,9 +60,7 @@ impl BitmapTexture {
     pub fn with_wrap(self, u: Wrap, v: Wrap) -> BitmapTexture {
         BitmapTexture { wrap: (u, v), ..self }
     }
-}
 
-impl BitmapTexture {
     /// The colour at the hit as a render that takes `steps` reads it, the texels read told to `recorder`.
     fn read(&self, info: &IntersectionInfo, steps: Steps, recorder: Option<&mut dyn Recorder>) -> Color {
         let (u, v) = self.lookup_uv(info.uv());
