@@ -154,9 +154,15 @@ pub fn remove_unfinished() {
 struct Unfinished(PathBuf);
 
 impl Unfinished {
-    fn new(path: &Path) -> Unfinished {
-        UNFINISHED.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).push(path.to_path_buf());
-        Unfinished(path.to_path_buf())
+    /// Creates a temporary file with `create` and lists it, holding the list's lock from before the file
+    /// exists until it is listed: a signal's handler, which takes the lock first, finds every temporary file
+    /// listed, however soon after its creation the signal comes.
+    fn create<T>(create: impl FnOnce() -> Result<T>, path_of: impl Fn(&T) -> &Path) -> Result<(T, Unfinished)> {
+        let mut unfinished = UNFINISHED.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        let file = create()?;
+        let path = path_of(&file).to_path_buf();
+        unfinished.push(path.clone());
+        Ok((file, Unfinished(path)))
     }
 }
 
@@ -227,14 +233,14 @@ pub fn save_atomically(
     // Readable as any new file is (0o666 less the umask), not only by its owner as temporary files are.
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    let temporary = loop {
+    let create = || loop {
         let temporary = builder.tempfile_in(dir).map_err(|e| fail(&e))?;
         temporary.as_file().lock().map_err(|e| fail(&e))?;
         if still_named(temporary.as_file()).map_err(|e| fail(&e))? {
-            break temporary;
+            return Ok(temporary);
         }
     };
-    let _unfinished = Unfinished::new(temporary.path());
+    let (temporary, _unfinished) = Unfinished::create(create, |t: &NamedTempFile| t.path())?;
     let mut file = BufWriter::new(temporary);
     write(&mut file).map_err(|e| fail(&e))?;
     let file = file.into_inner().map_err(|e| fail(e.error()))?;

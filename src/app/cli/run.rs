@@ -62,17 +62,24 @@ pub fn run<E: Example>() -> ExitCode {
 /// stack, and the process aborts.
 fn allocator_arenas(threads: usize) -> u64 {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    (threads + 1).min(8 * cores) as u64 * (128 << 20)
+    (threads + 1).min(8 * cores) as u64 * ARENA
 }
+
+/// The address space one arena of the C allocator maps ([`allocator_arenas`]).
+const ARENA: u64 = 128 << 20;
 
 /// The run's worker threads, `--threads` of them (the render, the photon map and the views run on them too),
 /// each with a stack of [`WORKER_STACK_SIZE`]. Where the system limits the address space (`ulimit -v`, as
 /// `/proc/self/limits` says), a count whose stacks do not fit beside what the process has taken and the
 /// allocator's arenas ([`allocator_arenas`]) is refused before any thread starts, naming the option, what the
-/// stacks need and how many threads fit.
+/// stacks need and how many threads fit. That count leaves room for one arena more than this run had taken:
+/// whether the thread that waits for signals has made its arena before the check depends on timing, and the
+/// count must fit in the next run too.
 fn workers(threads: Option<usize>) -> Result<rayon::ThreadPool> {
     if let (Some(count), Some((limit, taken))) = (threads, address_space()) {
-        let fits = |n: usize| taken + n as u64 * WORKER_STACK_SIZE as u64 + allocator_arenas(n) <= limit;
+        let fits_beside =
+            |taken: u64, n: usize| taken + n as u64 * WORKER_STACK_SIZE as u64 + allocator_arenas(n) <= limit;
+        let fits = |n: usize| fits_beside(taken, n);
         if !fits(count) {
             let gib = |bytes: u64| bytes as f64 / (1u64 << 30) as f64;
             return Err(Error::parameter(
@@ -85,7 +92,7 @@ fn workers(threads: Option<usize>) -> Result<rayon::ThreadPool> {
                     gib(limit),
                     gib(taken),
                     gib(allocator_arenas(count)),
-                    (1..count).take_while(|&n| fits(n)).last().unwrap_or(0)
+                    (1..count).take_while(|&n| fits_beside(taken + ARENA, n)).last().unwrap_or(0)
                 ),
             ));
         }
