@@ -6,8 +6,8 @@
 //! own, so every picture it draws is drawn with the student's code:
 //!
 //! ```sh
-//! cargo test -p exercises                                         # grade every exercise
-//! cargo run --features exercises --example fresnel                # a picture drawn with your functions
+//! cargo test --release -p exercises                               # grade every exercise
+//! cargo run --release --features exercises --example fresnel      # a picture drawn with your functions
 //! ```
 //!
 //! The grader checks each exercise against facts (values the slide's formula gives, invariants such as
