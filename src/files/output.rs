@@ -157,10 +157,10 @@ impl Unfinished {
     /// Creates a temporary file with `create` and lists it, holding the list's lock from before the file
     /// exists until it is listed: a signal's handler, which takes the lock first, finds every temporary file
     /// listed, however soon after its creation the signal comes.
-    fn create<T>(create: impl FnOnce() -> Result<T>, path_of: impl Fn(&T) -> &Path) -> Result<(T, Unfinished)> {
+    fn create(create: impl FnOnce() -> Result<NamedTempFile>) -> Result<(NamedTempFile, Unfinished)> {
         let mut unfinished = UNFINISHED.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
         let file = create()?;
-        let path = path_of(&file).to_path_buf();
+        let path = file.path().to_path_buf();
         unfinished.push(path.clone());
         Ok((file, Unfinished(path)))
     }
@@ -240,7 +240,7 @@ pub fn save_atomically(
             return Ok(temporary);
         }
     };
-    let (temporary, _unfinished) = Unfinished::create(create, |t: &NamedTempFile| t.path())?;
+    let (temporary, _unfinished) = Unfinished::create(create)?;
     let mut file = BufWriter::new(temporary);
     write(&mut file).map_err(|e| fail(&e))?;
     let file = file.into_inner().map_err(|e| fail(e.error()))?;
