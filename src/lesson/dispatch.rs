@@ -8,8 +8,8 @@
 //! these; `BitmapTexture`, `CheckerTexture`, `Fresnel`; the cube map, spherical and constant environments)
 //! become the cases of an enum, which `raytrace` matches on, so the compiler sees the whole shading of a hit
 //! as one piece of code. Anything else (a student's own shape, shader, texture or environment, a glossy
-//! mirror, a transformed node) is one more case, `Dyn`, called through its trait object: a new type works
-//! the moment it compiles. pbrt-v4 dispatches its closed set of shapes and materials the same way.
+//! mirror) is one more case, `Dyn`, called through its trait object: a new type works the moment it
+//! compiles. A node's transform wraps its shape's case (`Shape::Transformed`). pbrt-v4 dispatches its closed set of shapes and materials the same way.
 //!
 //! The cases follow the scene's [`Steps`]: without [`Step::TexelFilter`] a bitmap texture or environment is
 //! read one texel at a time, without [`Step::MeshBvh`] a mesh is tested triangle by triangle, without
@@ -45,39 +45,49 @@ use std::any::Any;
 use std::collections::HashMap;
 use std::sync::Arc;
 
-/// A node's geometry: one of the workbook's shapes without a transform, a mesh tested triangle by triangle
-/// (without [`Step::MeshBvh`]), or anything else (another shape, or any shape under a transform) through the
-/// node itself.
+/// A node's geometry: one of the workbook's shapes, a mesh tested triangle by triangle (without
+/// [`Step::MeshBvh`]), or any other geometry through its trait object; under a transform, the same case
+/// inside [`Shape::Transformed`].
 #[derive(Clone)]
 pub(crate) enum Shape {
     Sphere(Sphere),
     Plane(Plane),
-    /// A mesh whose triangles are tested one by one ([`Mesh::hit_one_by_one`]), under the node's transform.
-    MeshOneByOne(Arc<Mesh>, Option<Transform>),
-    /// The node's own [`Node::hit`] and the like: its geometry's trait object, through its transform.
-    Dyn(Box<Node>),
+    /// A mesh whose triangles are tested one by one ([`Mesh::hit_one_by_one`]).
+    MeshOneByOne(Arc<Mesh>),
+    /// Any other geometry (a student's own, a mesh with its BVH) through its trait object.
+    Dyn(Arc<dyn Geometry>),
+    /// A shape under the node's transform: the ray taken to the shape's canonical space, the hit brought
+    /// back ([`Node::intersect`]).
+    Transformed(Box<Shape>, Transform),
 }
 
 impl Shape {
     /// The shape of `node` under `steps`.
     pub(crate) fn of(node: &Node, steps: Steps) -> Shape {
+        match node.transform {
+            Some(t) => Shape::Transformed(Box::new(Shape::of_geometry(&node.geometry, steps)), t),
+            None => Shape::of_geometry(&node.geometry, steps),
+        }
+    }
+
+    /// The shape of a geometry, without a transform.
+    fn of_geometry(geometry: &Arc<dyn Geometry>, steps: Steps) -> Shape {
         if !steps.has(Step::MeshBvh) {
-            let geometry: Arc<dyn Any + Send + Sync> = node.geometry.clone();
-            if let Ok(mesh) = geometry.downcast::<Mesh>() {
-                return Shape::MeshOneByOne(mesh, node.transform);
+            let any: Arc<dyn Any + Send + Sync> = geometry.clone();
+            if let Ok(mesh) = any.downcast::<Mesh>() {
+                return Shape::MeshOneByOne(mesh);
             }
         }
-        let any = &*node.geometry as &dyn Any;
+        let any = &**geometry as &dyn Any;
         match (any.downcast_ref::<Sphere>(), any.downcast_ref::<Plane>()) {
-            _ if node.transform.is_some() => Shape::Dyn(Box::new(node.clone())),
             (Some(sphere), _) => Shape::Sphere(*sphere),
             (_, Some(plane)) => Shape::Plane(*plane),
-            _ => Shape::Dyn(Box::new(node.clone())),
+            _ => Shape::Dyn(geometry.clone()),
         }
     }
 
     /// Whether this is one of the workbook's own shapes that describe their hits exactly (a sphere or a
-    /// plane; a mesh is checked as any other shape is).
+    /// plane without a transform; a mesh is checked as any other shape is).
     pub(crate) fn is_workbook(&self) -> bool {
         matches!(self, Shape::Sphere(_) | Shape::Plane(_))
     }
@@ -88,8 +98,9 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.hit(ray, t_max),
             Shape::Plane(plane) => plane.hit(ray, t_max),
-            Shape::MeshOneByOne(mesh, transform) => mesh_hit(mesh, transform, ray, t_max),
-            Shape::Dyn(node) => node_hit(node, ray, t_max),
+            Shape::MeshOneByOne(mesh) => mesh.hit_one_by_one(ray, t_max),
+            Shape::Dyn(geometry) => geometry.hit(ray, t_max),
+            Shape::Transformed(shape, t) => transformed_hit(shape, t, ray, t_max),
         }
     }
 
@@ -99,8 +110,9 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.intersects(ray, t_max),
             Shape::Plane(plane) => plane.intersects(ray, t_max),
-            Shape::MeshOneByOne(mesh, transform) => mesh_hit(mesh, transform, ray, t_max).is_some(),
-            Shape::Dyn(node) => node_intersects(node, ray, t_max),
+            Shape::MeshOneByOne(mesh) => mesh.hit_one_by_one(ray, t_max).is_some(),
+            Shape::Dyn(geometry) => geometry.intersects(ray, t_max),
+            Shape::Transformed(shape, t) => transformed_intersects(shape, t, ray, t_max),
         }
     }
 
@@ -112,23 +124,22 @@ impl Shape {
             Shape::Sphere(sphere) => sphere.intersect(ray, t_max).map(|info| (info, true)),
             Shape::Plane(plane) => plane.intersect(ray, t_max).map(|info| (info, true)),
             Shape::MeshOneByOne(..) => self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit)),
-            Shape::Dyn(node) => node.checked_intersect(ray, t_max),
+            Shape::Dyn(geometry) => geometry.intersect(ray, t_max).map(|info| (info, Node::is_unit_normal(&info))),
+            Shape::Transformed(shape, t) => transformed_intersect(shape, t, ray, t_max),
         }
     }
 
-    /// The surface at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length: the
-    /// workbook's sphere and plane describe theirs so by construction (a normalised offset from the centre,
-    /// the plane's axis), so only another shape's is checked.
+    /// The surface at `hit` ([`Node::checked_surface`]), and whether its normal is of unit length (as the
+    /// geometry describes it, before a transform): the workbook's sphere and plane describe theirs so by
+    /// construction (a normalised offset from the centre, the plane's axis), so only another shape's is
+    /// checked.
     #[inline(always)]
     pub(crate) fn surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
         match self {
-            Shape::Dyn(node) => node.checked_surface(ray, hit),
-            Shape::MeshOneByOne(mesh, None) => mesh.surface(ray, hit).map(|info| (info, Node::is_unit_normal(&info))),
-            Shape::MeshOneByOne(mesh, Some(t)) => {
-                let info = mesh.surface(&t.ray_to_canonical(ray), hit)?;
-                Some((t.info_to_world(&info), Node::is_unit_normal(&info)))
-            }
             Shape::Sphere(_) | Shape::Plane(_) => self.workbook_surface(ray, hit).map(|info| (info, true)),
+            Shape::MeshOneByOne(mesh) => mesh.surface(ray, hit).map(|info| (info, Node::is_unit_normal(&info))),
+            Shape::Dyn(geometry) => geometry.surface(ray, hit).map(|info| (info, Node::is_unit_normal(&info))),
+            Shape::Transformed(shape, t) => transformed_surface(shape, t, ray, hit),
         }
     }
 
@@ -139,30 +150,33 @@ impl Shape {
         match self {
             Shape::Sphere(sphere) => sphere.surface(ray, hit),
             Shape::Plane(plane) => plane.surface(ray, hit),
-            Shape::MeshOneByOne(..) | Shape::Dyn(_) => None,
+            Shape::MeshOneByOne(_) | Shape::Dyn(_) | Shape::Transformed(..) => None,
         }
     }
 }
 
-/// [`Mesh::hit_one_by_one`] through the node's transform, kept out of the loop over the nodes.
+/// [`Shape::hit`] through a transform, kept out of the loop over the nodes, so that a scene of
+/// untransformed nodes does not prepare every ray for a transform it never applies.
 #[inline(never)]
-fn mesh_hit(mesh: &Mesh, transform: &Option<Transform>, ray: &Ray, t_max: f32) -> Option<Hit> {
-    match transform {
-        None => mesh.hit_one_by_one(ray, t_max),
-        Some(t) => mesh.hit_one_by_one(&t.ray_to_canonical(ray), t_max),
-    }
+fn transformed_hit(shape: &Shape, t: &Transform, ray: &Ray, t_max: f32) -> Option<Hit> {
+    shape.hit(&t.ray_to_canonical(ray), t_max)
 }
 
-/// [`Node::hit`], kept out of the loop over the workbook's own shapes.
+/// [`Shape::intersects`] through a transform, out of the loop as [`transformed_hit`].
 #[inline(never)]
-fn node_hit(node: &Node, ray: &Ray, t_max: f32) -> Option<Hit> {
-    node.hit(ray, t_max)
+fn transformed_intersects(shape: &Shape, t: &Transform, ray: &Ray, t_max: f32) -> bool {
+    shape.intersects(&t.ray_to_canonical(ray), t_max)
 }
 
-/// [`Node::intersects`], kept out of the loop over the workbook's own shapes.
+/// [`Shape::surface`] through a transform.
+fn transformed_surface(shape: &Shape, t: &Transform, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
+    shape.surface(&t.ray_to_canonical(ray), hit).map(|(info, unit_normal)| (t.info_to_world(&info), unit_normal))
+}
+
+/// [`Shape::intersect`] through a transform, out of the loop as [`transformed_hit`].
 #[inline(never)]
-fn node_intersects(node: &Node, ray: &Ray, t_max: f32) -> bool {
-    node.intersects(ray, t_max)
+fn transformed_intersect(shape: &Shape, t: &Transform, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
+    shape.intersect(&t.ray_to_canonical(ray), t_max).map(|(info, unit_normal)| (t.info_to_world(&info), unit_normal))
 }
 
 /// What a ray that hits nothing sees: one of the workbook's environments, black, or any other through its

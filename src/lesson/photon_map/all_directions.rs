@@ -39,9 +39,10 @@ const PHOTON_STREAM: u64 = 0x534c_4944_4550_4830;
 pub fn shoot_photons(scene: &Scene, count: u32, seed: u64) -> (Vec<StoredPhoton>, u64) {
     let mut photons = Vec::new();
     let mut shot = 0u64;
+    let dispersive = scene.is_dispersive();
     for _ in 0..MAX_BATCHES {
         let batch = shot..shot + count as u64;
-        photons.par_extend(batch.into_par_iter().filter_map(|i| shoot(scene, seed, i)));
+        photons.par_extend(batch.into_par_iter().filter_map(|i| shoot(scene, dispersive, seed, i)));
         shot += count as u64;
         if photons.len() >= count as usize {
             break;
@@ -55,13 +56,14 @@ pub fn shoot_photons(scene: &Scene, count: u32, seed: u64) -> (Vec<StoredPhoton>
 
 /// Shoots photon number `index`: from lamp `index % lamps`, in a random direction, carrying 4π times the
 /// lamp's intensity times the number of lamps (divided by the photons shot once they are all shot). The
-/// photon as stored, if it lands on a diffuse surface after a reflection or refraction.
-fn shoot(scene: &Scene, seed: u64, index: u64) -> Option<StoredPhoton> {
+/// photon as stored, if it lands on a diffuse surface after a reflection or refraction. A photon of a
+/// `dispersive` scene carries a wavelength.
+fn shoot(scene: &Scene, dispersive: bool, seed: u64, index: u64) -> Option<StoredPhoton> {
     let mut rng = Rng::for_keys(&[seed, PHOTON_STREAM, index]);
     let light = &scene.lights[(index % scene.lights.len() as u64) as usize];
     let mut power = light.color * (light.intensity * 4.0 * PI * scene.lights.len() as f32);
     let mut ray = Ray::new(light.position, random_direction(&mut rng));
-    if scene.is_dispersive() {
+    if dispersive {
         let band = Band::nth(rng.below(PHOTON_BANDS), PHOTON_BANDS, scene.illuminant);
         ray.wavelength = Some(band.at(rng.next_f32()));
         power = power * band.color() * PHOTON_BANDS as f32;
