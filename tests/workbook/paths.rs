@@ -39,7 +39,11 @@ fn cited(text: &str) -> Vec<String> {
         let start = text[..i]
             .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
             .map_or(0, |s| s + text[s..].chars().next().map_or(1, char::len_utf8));
-        if !FOLDERS.contains(&&text[start..i]) || text[..start].ends_with(['/', '.', ':', '-', '<', '{', '$']) {
+        // A cargo feature of a package (`--features exercises/solutions`) is not a path either.
+        if !FOLDERS.contains(&&text[start..i])
+            || text[..start].ends_with(['/', '.', ':', '-', '<', '{', '$'])
+            || text[..start].ends_with("--features ")
+        {
             continue;
         }
         let end = text[i..]
