@@ -46,9 +46,8 @@ use lecture6::lesson::photon_map::all_directions::MAX_BATCHES;
 use lecture6::lesson::photon_map::{PhotonMap, PhotonStats};
 use lecture6::lesson::ray::Ray;
 use lecture6::lesson::render::{RenderSettings, RenderStats, render, thread_pool};
-use lecture6::prelude::{Camera, Color, Cube, Environment, Layered, Scene, Shader};
+use lecture6::prelude::{Camera, Color, Cube, Environment, Material, Scene, Shader, Shape};
 use shared::{cpu_time, median, spheres_scene};
-use std::any::Any;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
@@ -207,7 +206,7 @@ fn with_steps(scene: &Scene, steps: Steps) -> Scene {
 
 /// Whether a node of the scene has a `Layered` shader.
 fn has_layered(scene: &Scene) -> bool {
-    scene.nodes.iter().any(|node| (&*node.shader as &dyn Any).is::<Layered>())
+    scene.nodes.iter().any(|node| matches!(node.shader, Material::Layered(_)))
 }
 
 /// PSNR (dB) and largest difference (8-bit levels) between two pictures as written.
@@ -910,8 +909,11 @@ fn mesh_bvh(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>) {
     eprintln!("mesh BVH");
     let mt = &all[example(all, "model_transform")];
     let (scene, _) = (mt.prepare)(&strings(&SIZE_160));
-    let meshes: Vec<&Mesh> =
-        scene.nodes.iter().filter_map(|n| (&*n.geometry as &dyn Any).downcast_ref::<Mesh>()).collect();
+    let meshes: Vec<&Mesh> = scene
+        .nodes
+        .iter()
+        .filter_map(|n| if let Shape::Mesh { mesh, .. } = &n.geometry { Some(&**mesh) } else { None })
+        .collect();
     let triangles: usize = meshes.iter().map(|m| m.triangle_count()).sum();
     let bvh = with_steps(&scene, Steps::ALL);
     let one_by_one = with_steps(&scene, Steps::ALL.without(Step::MeshBvh));
@@ -1547,7 +1549,7 @@ fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, 
     writeln!(doc).unwrap();
     writeln!(doc, "One renderer reads every example in two ways. `--slide` renders it as the slides write it (every step of `src/lesson/beyond.rs` left out); the default takes, beside each slide's code, the steps below. Each step is a setting: `--no-step NAME` leaves one out of the default, `--step NAME` adds one to `--slide`. Each step's row measures the renderer with the step against the same renderer without it, side by side in one run: the time at equal error for the steps that leave the picture as it is, the error at equal time (and the time at equal error) for the steps that change the noise; and the lines of code the step costs. The verdict says why a step stays (for speed, for noise, or as a guard, its row then showing the scene where it pays) or that it buys nothing beyond the noise. Below the steps, rows for what runs beyond the slides without being a step: the guards that hold in both readings, and the deviations from the slides' formulas.").unwrap();
     writeln!(doc).unwrap();
-    writeln!(doc, "The glossy split depth and static dispatch are no longer steps: the first reached no example and the core's branching bound now does its job in both readings; the second is the one place that dispatches the course's types (`src/lesson/dispatch.rs`), which both readings go through, so there is nothing left to switch.").unwrap();
+    writeln!(doc, "The glossy split depth and static dispatch are no longer steps: the first reached no example and the core's branching bound now does its job in both readings; the second is how each course type is stored, once, as the node's own value (`src/lesson/shader/material.rs` and its like for shapes, textures and environments), which both readings go through, so there is nothing left to switch.").unwrap();
     writeln!(doc).unwrap();
     writeln!(doc, "Written by `cargo bench --bench beyond` ({}), in {:.0} s on {date}: {machine}, {cores} cores shared with other work (load average {load} at the end). Every render runs on one thread; each figure is the median of {} interleaved round(s); \"CPU s\" is user plus system time of the whole process. In the equal-time and equal-error comparisons of a sweep, a point's time is its rays times its curve's median CPU time per ray (steadier on a loaded machine than one point's own median, which the tables give). The bench is `benches/beyond.rs`; its doc comment says how each figure is made.", if plan.quick { "`--quick`" } else { "full" }, seconds, plan.rounds).unwrap();
     writeln!(doc).unwrap();

@@ -1,6 +1,6 @@
 //! # Glossy reflections (lecture 6, slides "Грапави (glossy) отражения" to "Резултати (2)")
 //!
-//! The slide's code: `Reflection::shade_with` in `src/lesson/shader/reflection.rs` with random points of the unit disc
+//! The slide's code: `Reflection::shade` in `src/lesson/shader/reflection.rs` with random points of the unit disc
 //! (`src/lesson/sampling.rs`). `--slide` renders this example with the slides' choice of every step beyond them
 //! (`--step NAME` adds one back); `--side-by-side "--slide"` shows what they change (docs/beyond-the-slides.md).
 //!

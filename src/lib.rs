@@ -67,7 +67,9 @@ pub mod prelude {
         ConstantEnvironment, CubemapEnvironment, Environment, SphericalEnvironment, load as load_environment,
     };
     pub use crate::lesson::error::{Error, Result};
-    pub use crate::lesson::geometry::{Aabb, Cube, Geometry, IntersectionInfo, Mesh, Plane, Prism, Sphere, TexCoords};
+    pub use crate::lesson::geometry::{
+        Aabb, Cube, Geometry, IntersectionInfo, IntoGeometry, Mesh, Plane, Prism, Shape, Sphere, TexCoords,
+    };
     pub use crate::lesson::light::{PointLight, diffuse_light, light_loop};
     pub use crate::lesson::math::{Vector, faceforward, reflect, refract};
     pub use crate::lesson::node::Node;
@@ -77,11 +79,11 @@ pub mod prelude {
     pub use crate::lesson::sampling::DiscSampler;
     pub use crate::lesson::scene::{MAX_RAY_DEPTH, Scene, TraceContext};
     pub use crate::lesson::shader::{
-        CausticCaster, ColorSource, Lambert, Layered, Phong, PhotonScatter, Reflection, Refraction, Shader,
-        fresnel_glass,
+        CausticCaster, ColorSource, IntoShader, Lambert, Layered, Material, Phong, PhotonScatter, Reflection,
+        Refraction, Shader, fresnel_glass,
     };
     pub use crate::lesson::spectral::Ior;
-    pub use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
+    pub use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Tex, Texture};
     pub use crate::lesson::transform::Transform;
     pub use std::path::{Path, PathBuf};
     pub use std::process::ExitCode;

@@ -31,6 +31,7 @@ use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::node::Node;
 use crate::lesson::render::{RenderSettings, on_workers, render_row};
 use crate::lesson::scene::{Counters, Scene};
+use crate::lesson::shader::Shader;
 use legend::HeatScale;
 use rayon::prelude::*;
 use std::collections::BTreeSet;

@@ -47,8 +47,8 @@
 //! flat colour, one that glows) or of one (a mirror) is left alone. [`Problems::report`] names a node whose
 //! shader gains on at least 1% of those hits.
 //!
-//! Nor does it cost the workbook's own nodes anything: where the renderer knows a node's shape and every
-//! shader of it ([`crate::lesson::dispatch`]), the point needs no budget (those shaders stay within theirs)
+//! Nor does it cost the workbook's own nodes anything: where a node's shape and every shader of it are the
+//! workbook's own ([`Node::is_workbook`]), the point needs no budget (those shaders stay within theirs)
 //! and no check for rays that find their own surface (those shapes describe their hits exactly and those
 //! shaders spawn their rays with [`Ray::spawn`]), so `raytrace` keeps no shading point for it: its rays
 //! skip the bookkeeping, and only what they bring back NaN or infinite is noted (`Shading`).
@@ -58,9 +58,9 @@ use crate::lesson::diagnostics::{Gains, Problems, Source};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::Node;
-use crate::lesson::prepared::Preparation;
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::scene::TraceContext;
+use crate::lesson::shader::Shader;
 use glam::Vec3A;
 use std::collections::BTreeMap;
 
@@ -296,16 +296,9 @@ impl<'a> TraceContext<'a> {
     /// (its rays bounded by its budget), and what went wrong there counted for the end-of-run report: a
     /// normal that was not of unit length as the geometry returned it (`unit_normal` false), a ray that
     /// found the surface it left (black, not followed), a NaN or infinite colour made here. A node of the
-    /// workbook's own shape and shaders, unwatched, is shaded through its prepared material and keeps no
-    /// shading point.
+    /// workbook's own shape and shaders is shaded by [`TraceContext::shade_workbook_hit`] instead.
     #[inline(always)]
-    pub(crate) fn shade_hit<const WATCHED: bool>(
-        &mut self,
-        i: usize,
-        ray: &Ray,
-        info: &IntersectionInfo,
-        unit_normal: bool,
-    ) -> Color {
+    pub(crate) fn shade_hit(&mut self, i: usize, ray: &Ray, info: &IntersectionInfo, unit_normal: bool) -> Color {
         let scene = self.scene;
         let node = &scene.nodes[i];
         if !unit_normal {
@@ -331,10 +324,7 @@ impl<'a> TraceContext<'a> {
                 rays: 0,
             },
         );
-        let color = match scene.preparation() {
-            Some(prepared) if !WATCHED => prepared.shade(i, ray, info, self),
-            _ => node.shader.shade(ray, info, self),
-        };
+        let color = node.shader.shade(ray, info, self);
         self.note_non_finite(i, color);
         if self.shading.rays >= 2 && color.is_finite() {
             self.weigh_energy(i, color);
@@ -366,20 +356,13 @@ impl<'a> TraceContext<'a> {
     }
 
     /// The colour of the hit `info` of `ray` on node `i`, one of the workbook's own shapes under the
-    /// workbook's own shaders ([`Preparation::workbook_surface`]): shaded through its prepared material,
-    /// with no shading point of its own; a NaN or infinite colour it makes is counted against it.
+    /// workbook's own shaders ([`Node::is_workbook`]): shaded with no shading point of its own; a NaN or
+    /// infinite colour it makes is counted against it.
     #[inline(always)]
-    pub(crate) fn shade_workbook_hit(
-        &mut self,
-        prepared: &Preparation,
-        i: usize,
-        ray: &Ray,
-        info: &IntersectionInfo,
-    ) -> Color {
-        self.met_dispersion |= ray.wavelength.is_some() && prepared.is_dispersive(i);
+    pub(crate) fn shade_workbook_hit(&mut self, i: usize, ray: &Ray, info: &IntersectionInfo) -> Color {
         let outer = (self.shading.workbook, self.shading.non_finite_below);
         (self.shading.workbook, self.shading.non_finite_below) = (true, false);
-        let color = prepared.shade(i, ray, info, self);
+        let color = self.scene.nodes[i].shader.shade(ray, info, self);
         self.note_non_finite(i, color);
         (self.shading.workbook, self.shading.non_finite_below) = outer;
         color

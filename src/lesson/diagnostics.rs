@@ -28,12 +28,10 @@ use crate::lesson::color::Color;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::{Counters, RECURSION_SAFETY_CAP, Scene, TraceContext};
+use crate::lesson::shader::{Material, Shader};
 use crate::lesson::spectral::{LAMBDA_MAX, LAMBDA_MIN};
 use std::collections::{BTreeMap, BTreeSet, HashSet};
 use std::sync::Arc;
-
-#[cfg(doc)]
-use crate::lesson::shader::Shader;
 
 /// Where a NaN or infinite colour came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -226,8 +224,13 @@ pub fn undeclared_dispersion(scene: &Scene, camera: &CameraFrame, width: u32, he
     let mut tried = HashSet::new();
     let mut found = BTreeSet::new();
     for (i, node) in scene.nodes.iter().enumerate() {
-        let shader = Arc::as_ptr(&node.shader) as *const () as usize;
-        if node.shader.is_dispersive() || tried.contains(&shader) {
+        // A shader shared between nodes is tried once: a student's, or a Layered, by its address.
+        let shared = match &node.shader {
+            Material::Own(shader) => Some(Arc::as_ptr(shader) as *const () as usize),
+            Material::Layered(layered) => Some(Arc::as_ptr(layered) as usize),
+            _ => None,
+        };
+        if node.shader.is_dispersive() || shared.is_some_and(|shader| tried.contains(&shader)) {
             continue;
         }
         let alone = scene.around(vec![node.clone()]);
@@ -235,7 +238,7 @@ pub fn undeclared_dispersion(scene: &Scene, camera: &CameraFrame, width: u32, he
         let Some(ray) = rays.iter().find(|ray| alone.intersects(ray, f32::INFINITY)) else {
             continue;
         };
-        tried.insert(shader);
+        tried.extend(shared);
         let colour = |wavelength: Option<f32>| {
             TraceContext::new(&alone, Rng::for_keys(&[PROBE_KEY])).raytrace(&Ray { wavelength, ..*ray })
         };

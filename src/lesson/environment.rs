@@ -50,6 +50,7 @@
 //! matters), and a degenerate direction returns a colour of the image rather than failing.
 
 use crate::files::encoding;
+use crate::lesson::beyond::Steps;
 use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
@@ -62,9 +63,77 @@ use std::path::Path;
 use std::sync::Arc;
 
 /// The course's `Environment` interface (`getEnvironment(dir)`).
-pub trait Environment: Any + Send + Sync {
+pub trait Environment: Any + Send + Sync + EnvironmentObject {
     /// The colour seen in the unit direction `dir`.
     fn get(&self, dir: Vector) -> Color;
+
+    /// The environment as a prepared scene stores it ([`Sky`]): for any environment but the workbook's own,
+    /// the case that calls it through its trait object, [`Sky::Own`]. A new environment leaves it as it is.
+    fn into_sky(self: Arc<Self>) -> Sky {
+        Sky::Own(self.into_object())
+    }
+}
+
+/// Any sized [`Environment`] as a trait object: what [`Environment::into_sky`] keeps of an environment that
+/// is not one of the workbook's. Implemented for every environment; nothing to write.
+pub trait EnvironmentObject {
+    /// The environment behind a trait object.
+    fn into_object(self: Arc<Self>) -> Arc<dyn Environment>;
+}
+
+impl<E: Environment> EnvironmentObject for E {
+    fn into_object(self: Arc<Self>) -> Arc<dyn Environment> {
+        self
+    }
+}
+
+/// An environment as a prepared scene stores it ([`crate::lesson::scene::Scene::prepared`]): one of the
+/// workbook's, each image-based one with the filter the scene's steps read it with (one texel, the slide's,
+/// without [`Step::TexelFilter`]; its own filter with it), or any other through its trait object. The one
+/// place that lists the workbook's environments.
+#[derive(Clone)]
+pub enum Sky {
+    /// The same colour everywhere.
+    Constant(ConstantEnvironment),
+    /// One equirectangular image, read with the filter given.
+    Spherical(SphericalEnvironment, Filter),
+    /// Six images on a cube, read with the filter given.
+    Cubemap(CubemapEnvironment, Filter),
+    /// Any other environment, through its trait object.
+    Own(Arc<dyn Environment>),
+}
+
+impl Sky {
+    /// The same environment as a render that takes `steps` reads it.
+    pub fn under(self, steps: Steps) -> Sky {
+        match self {
+            Sky::Spherical(spherical, _) => {
+                let filter = spherical.filter.under(steps);
+                Sky::Spherical(spherical, filter)
+            }
+            Sky::Cubemap(cubemap, _) => {
+                let filter = cubemap.filter.under(steps);
+                Sky::Cubemap(cubemap, filter)
+            }
+            other => other,
+        }
+    }
+}
+
+impl Environment for Sky {
+    #[inline(always)]
+    fn get(&self, dir: Vector) -> Color {
+        match self {
+            Sky::Constant(constant) => constant.get(dir),
+            Sky::Spherical(spherical, filter) => spherical.look_up(dir, *filter),
+            Sky::Cubemap(cubemap, filter) => cubemap.look_up(dir, *filter),
+            Sky::Own(environment) => environment.get(dir),
+        }
+    }
+
+    fn into_sky(self: Arc<Self>) -> Sky {
+        Arc::unwrap_or_clone(self)
+    }
 }
 
 /// The same colour in every direction (a uniformly lit sky, useful for tests and energy checks).
@@ -75,6 +144,10 @@ impl Environment for ConstantEnvironment {
     #[inline(always)]
     fn get(&self, _dir: Vector) -> Color {
         self.0
+    }
+
+    fn into_sky(self: Arc<Self>) -> Sky {
+        Sky::Constant(*self)
     }
 }
 
@@ -143,12 +216,24 @@ impl SphericalEnvironment {
     }
 }
 
-impl Environment for SphericalEnvironment {
+impl SphericalEnvironment {
+    /// The colour seen in the direction `dir`, the image read with `filter`.
     #[inline(always)]
-    fn get(&self, dir: Vector) -> Color {
+    fn look_up(&self, dir: Vector, filter: Filter) -> Color {
         let (u, v) = equirect_uv(dir);
         // Longitude goes round (repeat); latitude stops at the poles (clamp).
-        self.bitmap.sample(u, v, self.filter, (Wrap::Repeat, Wrap::Clamp))
+        self.bitmap.sample(u, v, filter, (Wrap::Repeat, Wrap::Clamp))
+    }
+}
+
+impl Environment for SphericalEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        self.look_up(dir, self.filter)
+    }
+
+    fn into_sky(self: Arc<Self>) -> Sky {
+        let filter = self.filter;
+        Sky::Spherical(Arc::unwrap_or_clone(self), filter)
     }
 }
 
@@ -325,16 +410,28 @@ impl CubemapEnvironment {
 }
 
 impl Environment for CubemapEnvironment {
-    #[inline(always)]
     fn get(&self, dir: Vector) -> Color {
+        self.look_up(dir, self.filter)
+    }
+
+    fn into_sky(self: Arc<Self>) -> Sky {
+        let filter = self.filter;
+        Sky::Cubemap(Arc::unwrap_or_clone(self), filter)
+    }
+}
+
+impl CubemapEnvironment {
+    /// The colour seen in the direction `dir`, the faces read with `filter`.
+    #[inline(always)]
+    fn look_up(&self, dir: Vector, filter: Filter) -> Color {
         let (face, u, v) = cube_face_uv(dir);
         let bitmap = &self.faces[face as usize];
-        if self.course_lookup && self.filter == Filter::Nearest {
+        if self.course_lookup && filter == Filter::Nearest {
             // The course's program takes texel floor(u (W - 1)): its face a texel narrower than the image.
             let span = |n: usize, t: f32| (t * (n - 1) as f32) as usize;
             return bitmap.get_pixel(span(bitmap.width(), u), span(bitmap.height(), v));
         }
         // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.
-        bitmap.sample(u, v, self.filter, (Wrap::Clamp, Wrap::Clamp))
+        bitmap.sample(u, v, filter, (Wrap::Clamp, Wrap::Clamp))
     }
 }

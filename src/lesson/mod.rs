@@ -22,7 +22,6 @@ pub mod branching;
 pub mod camera;
 pub mod color;
 pub mod diagnostics;
-pub mod dispatch;
 pub mod environment;
 #[cfg(feature = "exercises")]
 pub mod exercise_hooks;

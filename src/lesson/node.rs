@@ -4,46 +4,22 @@
 //! show the same mesh with different transforms and shaders (instancing) without a copy.
 
 use crate::lesson::geometry::bvh::Bvh;
-use crate::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo};
+use crate::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo, Shape};
 use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
-use crate::lesson::shader::{IntoShader, Shader};
+use crate::lesson::shader::{IntoShader, Material};
 use crate::lesson::transform::Transform;
-use std::sync::Arc;
 
-/// Anything that can be a node's geometry: a shape, or a shape shared with other nodes (`Arc<Mesh>`,
-/// `Arc<dyn Geometry>`), which is how two nodes show one mesh without a copy (instancing).
-pub trait IntoGeometry {
-    /// The geometry, boxed in an `Arc` so that nodes can share it.
-    fn into_geometry(self) -> Arc<dyn Geometry>;
-}
-
-impl<G: Geometry + 'static> IntoGeometry for G {
-    fn into_geometry(self) -> Arc<dyn Geometry> {
-        Arc::new(self)
-    }
-}
-
-impl<G: Geometry + 'static> IntoGeometry for Arc<G> {
-    fn into_geometry(self) -> Arc<dyn Geometry> {
-        self
-    }
-}
-
-impl IntoGeometry for Arc<dyn Geometry> {
-    fn into_geometry(self) -> Arc<dyn Geometry> {
-        self
-    }
-}
+pub use crate::lesson::geometry::IntoGeometry;
 
 /// One object of the scene: a geometry in its canonical form, the shader that colours it and the transform
 /// that places it in the world (slide "Model трансформация").
 #[derive(Clone)]
 pub struct Node {
     /// The shape, in its canonical form (a sphere, a cube, a mesh as loaded); nodes may share it (instancing).
-    pub geometry: Arc<dyn Geometry>,
+    pub geometry: Shape,
     /// What colours the node's surface; can be shared with other nodes.
-    pub shader: Arc<dyn Shader>,
+    pub shader: Material,
     /// `None` is the identity, and skips the two matrix products per ray.
     pub transform: Option<Transform>,
     /// What the ray tree (`--trace-pixel`) calls the node; `None` names it by its geometry and its position
@@ -96,25 +72,32 @@ impl Node {
     ///     geometry->intersect(t_ray, info)
     ///     info = info * T
     /// ```
+    #[inline(always)]
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
         self.checked_intersect(ray, t_max).map(|(info, _)| info)
     }
 
     /// [`Node::intersect`], and whether the geometry described the hit with a unit normal (see
     /// [`Node::checked_surface`]).
+    #[inline(always)]
     pub(crate) fn checked_intersect(&self, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
         match &self.transform {
-            None => self.geometry.intersect(ray, t_max).map(|info| (info, Node::is_unit_normal(&info))),
-            Some(t) => {
-                let info = self.geometry.intersect(&t.ray_to_canonical(ray), t_max)?;
-                Some((t.info_to_world(&info), Node::is_unit_normal(&info)))
-            }
+            None => self.geometry.intersect(ray, t_max).map(|info| (info, self.is_unit_normal(&info))),
+            Some(t) => self.intersect_transformed(t, ray, t_max),
         }
+    }
+
+    /// [`Node::checked_intersect`] through the node's transform, out of the node loop as
+    /// [`Node::hit_transformed`].
+    #[inline(never)]
+    fn intersect_transformed(&self, t: &Transform, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
+        let info = self.geometry.intersect(&t.ray_to_canonical(ray), t_max)?;
+        Some((t.info_to_world(&info), self.is_unit_normal(&info)))
     }
 
     /// The first phase of [`Node::intersect`] ([`Geometry::hit`] in canonical space): where the ray meets
     /// the node, with the surface not yet described.
-    #[inline]
+    #[inline(always)]
     pub fn hit(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         match &self.transform {
             None => self.geometry.hit(ray, t_max),
@@ -138,26 +121,37 @@ impl Node {
     /// [`Node::surface`], and whether the geometry described it with a unit normal: checked as the geometry
     /// returns it, before a transform normalises it (a NaN or unnormalised normal shades wrong, often
     /// without a NaN in the picture; `raytrace` counts it for the end-of-run report).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn checked_surface(&self, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, bool)> {
         match &self.transform {
-            None => self.geometry.surface(ray, hit).map(|info| (info, Node::is_unit_normal(&info))),
+            None => self.geometry.surface(ray, hit).map(|info| (info, self.is_unit_normal(&info))),
             Some(t) => self
                 .geometry
                 .surface(&t.ray_to_canonical(ray), hit)
-                .map(|info| (t.info_to_world(&info), Node::is_unit_normal(&info))),
+                .map(|info| (t.info_to_world(&info), self.is_unit_normal(&info))),
         }
     }
 
-    /// Whether a geometry described its surface with a normal of unit length (within
-    /// [`UNIT_NORMAL_TOLERANCE`]); false for a NaN normal.
+    /// Whether the node's geometry described its surface with a normal of unit length (within
+    /// [`UNIT_NORMAL_TOLERANCE`]; false for a NaN normal): the workbook's sphere and plane do so by
+    /// construction (a normalised offset from the centre, the plane's axis), so only another shape's is
+    /// checked.
     #[inline(always)]
-    pub(crate) fn is_unit_normal(info: &IntersectionInfo) -> bool {
-        (info.normal.length_squared() - 1.0).abs() <= UNIT_NORMAL_TOLERANCE
+    fn is_unit_normal(&self, info: &IntersectionInfo) -> bool {
+        self.geometry.is_exact() || (info.normal.length_squared() - 1.0).abs() <= UNIT_NORMAL_TOLERANCE
+    }
+
+    /// Whether the node is one of the workbook's own exact shapes, not transformed, under the workbook's own
+    /// shaders ([`crate::lesson::shader::Material::is_workbook`]): its hits are described exactly and its
+    /// shaders spawn their rays with [`Ray::spawn`] within their budget, so `raytrace` shades it without
+    /// the bookkeeping of [`crate::lesson::branching`].
+    #[inline(always)]
+    pub(crate) fn is_workbook(&self) -> bool {
+        self.transform.is_none() && self.geometry.is_exact() && self.shader.is_workbook()
     }
 
     /// Whether the ray hits this node before `t_max` (shadow rays).
-    #[inline]
+    #[inline(always)]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
         match &self.transform {
             None => self.geometry.intersects(ray, t_max),
@@ -237,13 +231,13 @@ impl Closest {
     /// Tests node `i` of `nodes`: a hit before the best so far wins, unless it is a tie ([`TIE`]); a tie
     /// goes to the node that comes earlier in the scene.
     #[inline]
-    fn consider(&mut self, i: usize, nodes: &impl NodeHits) {
+    fn consider(&mut self, i: usize, nodes: &[Node], ray: &Ray) {
         let limit = match self.best {
             None => f32::INFINITY,
             Some((_, b)) if i < b => self.t_max + tie(self.start_scale, self.t_max),
             Some(_) => self.t_max - tie(self.start_scale, self.t_max),
         };
-        if let Some(hit) = nodes.hit(i, limit) {
+        if let Some(hit) = nodes[i].hit(ray, limit) {
             self.t_max = hit.distance;
             self.best = Some((hit, i));
         }
@@ -266,47 +260,33 @@ impl Closest {
 /// each hit, the next nodes are searched up to that hit's distance less a tie.
 #[inline]
 pub fn nearest_hit_linear<'a>(nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
-    nearest_of(&(nodes, ray), ray).map(|(hit, i)| (hit, &nodes[i]))
-}
-
-/// A scene's nodes as the searches for a ray's hits see them: each tested by its index, for one ray.
-pub(crate) trait NodeHits {
-    /// How many nodes there are.
-    fn count(&self) -> usize;
-    /// [`Node::hit`] of node `i` up to `t_max`.
-    fn hit(&self, i: usize, t_max: f32) -> Option<Hit>;
-    /// [`Node::intersects`] of node `i` before `t_max`.
-    fn intersects(&self, i: usize, t_max: f32) -> bool;
-}
-
-/// The nodes themselves, tested for one ray through their trait objects.
-impl NodeHits for (&[Node], &Ray) {
-    fn count(&self) -> usize {
-        self.0.len()
-    }
-    #[inline(always)]
-    fn hit(&self, i: usize, t_max: f32) -> Option<Hit> {
-        self.0[i].hit(self.1, t_max)
-    }
-    #[inline(always)]
-    fn intersects(&self, i: usize, t_max: f32) -> bool {
-        self.0[i].intersects(self.1, t_max)
-    }
+    nearest_of(nodes, ray).map(|(hit, i)| (hit, &nodes[i]))
 }
 
 /// [`nearest_hit_linear`] over `nodes`, tested for `ray`: where the nearest is hit, and its index.
 #[inline(always)]
-pub(crate) fn nearest_of(nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize)> {
+pub(crate) fn nearest_of(nodes: &[Node], ray: &Ray) -> Option<(Hit, usize)> {
     let start_scale = max_abs(ray.start);
     let mut nearest = None;
     let mut limit = f32::INFINITY;
-    for i in 0..nodes.count() {
-        if let Some(found) = nodes.hit(i, limit) {
+    for (i, node) in nodes.iter().enumerate() {
+        if let Some(found) = node.hit(ray, limit) {
             limit = found.distance - tie(start_scale, found.distance);
             nearest = Some((found, i));
         }
     }
     nearest
+}
+
+/// Whether any of `nodes` is hit by `ray` before `t_max`, testing them in turn.
+#[inline(always)]
+pub(crate) fn any_of(nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
+    for node in nodes {
+        if node.intersects(ray, t_max) {
+            return true;
+        }
+    }
+    false
 }
 
 /// The slides' loop over the nodes (slide "Model трансформация"): `intersect(i, t_max)` of every node `i` in
@@ -326,17 +306,6 @@ pub(crate) fn closest_of(
         }
     }
     closest
-}
-
-/// Whether any of `nodes` is hit before `t_max`, testing them in turn.
-#[inline(always)]
-pub(crate) fn any_of(nodes: &impl NodeHits, t_max: f32) -> bool {
-    for i in 0..nodes.count() {
-        if nodes.intersects(i, t_max) {
-            return true;
-        }
-    }
-    false
 }
 
 impl NodeTree {
@@ -364,21 +333,21 @@ impl NodeTree {
 
     /// The nearest of `nodes` (the ones the tree was built over) hit by the ray, and where.
     pub fn nearest_hit<'a>(&self, nodes: &'a [Node], ray: &Ray) -> Option<(Hit, &'a Node)> {
-        self.nearest_of(&(nodes, ray), ray).map(|(hit, i)| (hit, &nodes[i]))
+        self.nearest_of(nodes, ray).map(|(hit, i)| (hit, &nodes[i]))
     }
 
     /// [`NodeTree::nearest_hit`] over `nodes`, tested for `ray`: where the nearest is hit, and its index.
     /// Kept out of line: the loop over a few nodes, inlined into `raytrace`, stays small.
     #[inline(never)]
-    pub(crate) fn nearest_of(&self, nodes: &impl NodeHits, ray: &Ray) -> Option<(Hit, usize)> {
+    pub(crate) fn nearest_of(&self, nodes: &[Node], ray: &Ray) -> Option<(Hit, usize)> {
         beyond!(NodeTree);
         let mut closest = Closest::new(ray);
         for &i in &self.unbounded {
-            closest.consider(i as usize, nodes);
+            closest.consider(i as usize, nodes, ray);
         }
         self.bvh.traverse(ray.start, ray.dir, closest.reach(), |range, t_max| {
             for &i in &self.bounded[range] {
-                closest.consider(i as usize, nodes);
+                closest.consider(i as usize, nodes, ray);
             }
             *t_max = closest.reach();
             false
@@ -387,21 +356,16 @@ impl NodeTree {
     }
 
     /// Whether any of `nodes` is hit before `t_max` (shadow rays).
-    pub fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
-        self.any_of(&(nodes, ray), ray, t_max)
-    }
-
-    /// [`NodeTree::intersects`] over `nodes`, tested for `ray`. Kept out of line, as
-    /// [`NodeTree::nearest_of`].
+    /// Kept out of line, as [`NodeTree::nearest_of`].
     #[inline(never)]
-    pub(crate) fn any_of(&self, nodes: &impl NodeHits, ray: &Ray, t_max: f32) -> bool {
+    pub fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
         beyond!(NodeTree);
-        if self.unbounded.iter().any(|&i| nodes.intersects(i as usize, t_max)) {
+        if self.unbounded.iter().any(|&i| nodes[i as usize].intersects(ray, t_max)) {
             return true;
         }
         let mut hit = false;
         self.bvh.traverse(ray.start, ray.dir, t_max, |range, t_max| {
-            hit = self.bounded[range].iter().any(|&i| nodes.intersects(i as usize, *t_max));
+            hit = self.bounded[range].iter().any(|&i| nodes[i as usize].intersects(ray, *t_max));
             hit
         });
         hit

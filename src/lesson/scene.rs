@@ -18,19 +18,18 @@ use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::diagnostics::{Problems, Source};
-use crate::lesson::dispatch::shades_per_hit;
 use crate::lesson::environment::Environment;
 use crate::lesson::error::{Error, Result};
-use crate::lesson::geometry::{Hit, IntersectionInfo};
+use crate::lesson::geometry::{Geometry, Hit, IntersectionInfo};
 use crate::lesson::light::PointLight;
 use crate::lesson::math::{Vector, max_abs};
-use crate::lesson::node::{Node, closest_of, nearest_of};
+use crate::lesson::node::{Node, NodeTree, any_of, closest_of, nearest_of};
 use crate::lesson::observer::{Observer, Stop};
 use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::prepared::Preparation;
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
-use crate::lesson::shader::{Layer, MAX_SHADES_PER_HIT};
+use crate::lesson::shader::{Layer, MAX_SHADES_PER_HIT, Shader, shades_per_hit};
 use crate::lesson::spectral::Illuminant;
 use crate::lesson::topic::Recorder;
 use std::borrow::Cow;
@@ -89,7 +88,7 @@ pub struct Scene {
     /// The caustic photon map, built before rendering ([`PhotonMap::build`]); `None` renders without
     /// caustics.
     pub photon_map: Option<Arc<PhotonMap>>,
-    /// What the renderer works out once from the nodes ([`Scene::prepared`]); `None` until then.
+    /// What the renderer works out once from the nodes ([`Scene::prepared`]): the node tree; `None` until then.
     preparation: Option<Arc<Preparation>>,
     /// Where the origin of the coordinates the renderer computes with lies in the world the scene was built
     /// in: zero, or the camera's first position once [`Scene::relative_to_camera`] moved the scene.
@@ -239,22 +238,26 @@ impl Scene {
 
     /// The scene ready to be traced: itself if it was prepared already and its nodes and steps have not
     /// changed since, else a copy prepared for them ([`crate::lesson::prepared`]: the BVH over its nodes, if
-    /// it has enough of them and takes that step). The renderer and the photon tracer trace the prepared scene; preparing it once
-    /// before both saves the second preparation.
+    /// it has enough of them and takes that step; its meshes and environment read as its steps say). The
+    /// renderer and the photon tracer trace the prepared scene; preparing it once before both saves the
+    /// second preparation.
     pub fn prepared(&self) -> Cow<'_, Scene> {
         match &self.preparation {
-            Some(p) if p.describes(&self.nodes, &self.environment, self.steps) => Cow::Borrowed(self),
+            Some(p) if p.describes(&self.nodes, self.steps) => Cow::Borrowed(self),
             _ => {
-                let preparation = Preparation::new(&self.nodes, &self.environment, self.steps);
-                Cow::Owned(Scene { preparation: Some(Arc::new(preparation)), ..self.clone() })
+                let mut scene = self.clone();
+                scene.environment =
+                    scene.environment.map(|e| Arc::new(e.into_sky().under(self.steps)) as Arc<dyn Environment>);
+                scene.preparation = Some(Arc::new(Preparation::new(&mut scene.nodes, self.steps)));
+                Cow::Owned(scene)
             }
         }
     }
 
-    /// What [`Scene::prepared`] worked out for this scene, if it is a prepared one.
+    /// The BVH over the nodes, if the scene was prepared with one ([`Scene::prepared`]).
     #[inline(always)]
-    pub(crate) fn preparation(&self) -> Option<&Preparation> {
-        self.preparation.as_deref()
+    fn node_tree(&self) -> Option<&NodeTree> {
+        self.preparation.as_ref().and_then(|p| p.node_tree.as_ref())
     }
 
     /// A copy of the scene prepared for tracing ([`Scene::prepared`]).
@@ -283,9 +286,9 @@ impl Scene {
     /// [`Scene::nearest_hit`], the node given by its index.
     #[inline(always)]
     fn nearest_hit_index(&self, ray: &Ray) -> Option<(Hit, usize)> {
-        match &self.preparation {
-            Some(p) => p.nearest_hit(ray),
-            None => nearest_of(&(&self.nodes[..], ray), ray),
+        match self.node_tree() {
+            Some(tree) => tree.nearest_of(&self.nodes, ray),
+            None => nearest_of(&self.nodes, ray),
         }
     }
 
@@ -313,20 +316,14 @@ impl Scene {
     /// ([`Node::intersect`]), each searched up to the closest hit so far, so that a node added earlier keeps
     /// a tie; the node's index, and whether its geometry gave a unit normal.
     pub(crate) fn closest_by_loop(&self, ray: &Ray) -> Option<(IntersectionInfo, usize, bool)> {
-        match &self.preparation {
-            Some(p) => p.closest_by_loop(ray),
-            None => closest_of(self.nodes.len(), |i, t_max| self.nodes[i].checked_intersect(ray, t_max)),
-        }
+        closest_of(self.nodes.len(), |i, t_max| self.nodes[i].checked_intersect(ray, t_max))
     }
 
     /// The surface of node `i` where the ray hit it ([`Node::checked_surface`]), the index, and whether the
     /// geometry gave a unit normal.
     #[inline(always)]
     fn surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, usize, bool)> {
-        let (info, unit_normal) = match &self.preparation {
-            Some(p) => p.surface(i, ray, hit)?,
-            None => self.nodes[i].checked_surface(ray, hit)?,
-        };
+        let (info, unit_normal) = self.nodes[i].checked_surface(ray, hit)?;
         Some((info, i, unit_normal))
     }
 
@@ -335,10 +332,12 @@ impl Scene {
     /// tree, with that step).
     #[inline(always)]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
-        match &self.preparation {
-            Some(p) if self.steps.has(Step::TwoPhaseHit) => p.intersects(ray, t_max),
-            Some(p) => p.any_by_loop(ray, t_max),
-            None => self.nodes.iter().any(|node| node.intersects(ray, t_max)),
+        if !self.steps.has(Step::TwoPhaseHit) {
+            return self.nodes.iter().any(|node| node.intersect(ray, t_max).is_some());
+        }
+        match self.node_tree() {
+            Some(tree) => tree.intersects(&self.nodes, ray, t_max),
+            None => any_of(&self.nodes, ray, t_max),
         }
     }
 }
@@ -442,10 +441,13 @@ impl<'a> TraceContext<'a> {
         self.shading = Shading::camera();
     }
 
-    /// The slides' `raytrace(ray)`: the colour seen along the ray. Black past the depth limit (or the
-    /// [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth control); the
-    /// environment when nothing is hit; otherwise whatever the hit node's shader says. A ray over its shading
-    /// point's budget is not traced and brings back its siblings' mean colour ([`crate::lesson::branching`]).
+    /// The slides' `raytrace(ray)` ("Reflection v0.2"): the colour seen along the ray. Black past the depth
+    /// limit (or the [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth
+    /// control, a step); the environment when nothing is hit; otherwise whatever the hit node's shader says.
+    /// A ray over its shading point's budget is not traced and brings back its siblings' mean colour
+    /// ([`crate::lesson::branching`]). An observer in the context (the ray tree) is told what it does: the
+    /// same code makes the picture and the ray tree, compiled once with the reports to the observer and once
+    /// without them, for every render but one pixel's.
     #[inline(always)]
     pub fn raytrace(&mut self, ray: &Ray) -> Color {
         if self.observer.is_some() {
@@ -454,28 +456,22 @@ impl<'a> TraceContext<'a> {
         self.raytrace_unwatched(ray)
     }
 
-    /// `raytrace` of the default reading, with no observer: what every render but one pixel's runs.
+    /// `raytrace` with no observer to tell.
     #[inline(never)]
     fn raytrace_unwatched(&mut self, ray: &Ray) -> Color {
         self.trace::<false>(ray)
     }
 
-    /// `raytrace` with an observer to tell: kept out of the unwatched one.
+    /// `raytrace` with an observer to tell.
     #[inline(never)]
     fn raytrace_watched(&mut self, ray: &Ray) -> Color {
         self.trace::<true>(ray)
     }
 
-    /// `raytrace`, telling the observer what it does when `WATCHED`: the slide's `raytrace` ("Reflection
-    /// v0.2"), with the guards that hold in both readings (the safety cap, the branching bound) and the steps
-    /// the scene takes (adaptive depth control, the two-phase hit). Unwatched, a prepared scene's nodes are
-    /// shaded through their prepared materials ([`crate::lesson::dispatch`]); watched, through their shaders,
-    /// whose layers the observer sees.
+    /// `raytrace`, telling the observer what it does when `WATCHED`.
     #[inline(always)]
     fn trace<const WATCHED: bool>(&mut self, ray: &Ray) -> Color {
-        if WATCHED {
-            self.observe(|o| o.ray_begins(ray));
-        }
+        self.tell::<WATCHED>(|o| o.ray_begins(ray));
         // A student's shader's ray is at least one level deeper than the ray it shades: one made with
         // `Ray::new` (depth 0) cannot restart the count, so the recursion stops at the depth limit whatever
         // the shader does.
@@ -500,9 +496,7 @@ impl<'a> TraceContext<'a> {
         }
         if let Some(shared) = self.shading.share(ray.weight) {
             self.counters.shared_rays += 1;
-            if WATCHED {
-                self.observe(|o| o.ray_ends(shared, Some(Stop::Shared)));
-            }
+            self.tell::<WATCHED>(|o| o.ray_ends(shared, Some(Stop::Shared)));
             return shared;
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
@@ -512,20 +506,12 @@ impl<'a> TraceContext<'a> {
         } else {
             beyond!(TwoPhaseHit);
             match scene.nearest_hit_index(ray) {
-                Some((hit, i)) => match scene.preparation() {
-                    Some(prepared) if !WATCHED => match prepared.workbook_surface(i, ray, &hit) {
-                        Some(info) => (self.shade_workbook_hit(prepared, i, ray, &info), None),
-                        None => self.shade_any_hit::<WATCHED>(i, ray, &hit),
-                    },
-                    _ => self.shade_any_hit::<WATCHED>(i, ray, &hit),
-                },
+                Some((hit, i)) => self.shade_any_hit::<WATCHED>(i, ray, &hit),
                 None => (self.environment(ray), Some(Stop::Missed)),
             }
         };
         self.shading.traced(color);
-        if WATCHED {
-            self.observe(|o| o.ray_ends(color, stop));
-        }
+        self.tell::<WATCHED>(|o| o.ray_ends(color, stop));
         color
     }
 
@@ -542,10 +528,9 @@ impl<'a> TraceContext<'a> {
     }
 
     /// The colour of the hit `hit` of `ray` on node `i`, any node, with its surface described as its shape
-    /// does ([`Scene::surface`]), told to the observer when `WATCHED`: what the shader makes of it, or what
-    /// the environment shows if the shape cannot find the hit again. Kept out of the unwatched `raytrace`,
-    /// whose usual case is a node of the workbook's own.
-    #[inline(never)]
+    /// does ([`Scene::surface`]), told to the observer, if there is one: what the shader makes of it, or what
+    /// the environment shows if the shape cannot find the hit again.
+    #[inline(always)]
     fn shade_any_hit<const WATCHED: bool>(&mut self, i: usize, ray: &Ray, hit: &Hit) -> (Color, Option<Stop>) {
         let scene = self.scene;
         let Some((info, i, unit_normal)) = scene.surface(i, ray, hit) else {
@@ -561,17 +546,14 @@ impl<'a> TraceContext<'a> {
     fn trace_by_loop<const WATCHED: bool>(&mut self, ray: &Ray) -> (Color, Option<Stop>) {
         let scene = self.scene;
         match scene.closest_by_loop(ray) {
-            Some((info, i, unit_normal)) => match scene.preparation() {
-                Some(prepared) if !WATCHED && prepared.is_workbook(i) => {
-                    (self.shade_workbook_hit(prepared, i, ray, &info), None)
-                }
-                _ => self.shade_found::<WATCHED>(i, ray, &info, unit_normal),
-            },
+            Some((info, i, unit_normal)) => self.shade_found::<WATCHED>(i, ray, &info, unit_normal),
             None => (self.environment(ray), Some(Stop::Missed)),
         }
     }
 
-    /// The colour of the hit `info` of `ray` on node `i`, any node, told to the observer when `WATCHED`.
+    /// The colour of the hit `info` of `ray` on node `i`, any node, told to the observer, if there is one: a
+    /// node of the workbook's own shape and shaders is shaded without a shading point of its own
+    /// ([`crate::lesson::branching`]).
     #[inline(always)]
     fn shade_found<const WATCHED: bool>(
         &mut self,
@@ -582,22 +564,19 @@ impl<'a> TraceContext<'a> {
     ) -> (Color, Option<Stop>) {
         let scene = self.scene;
         let node = &scene.nodes[i];
-        if WATCHED {
-            self.observe(|o| o.ray_hits(scene, node, info));
+        self.tell::<WATCHED>(|o| o.ray_hits(scene, node, info));
+        self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
+        if node.is_workbook() {
+            return (self.shade_workbook_hit(i, ray, info), None);
         }
-        self.met_dispersion |= ray.wavelength.is_some()
-            && scene.preparation().map_or_else(|| node.shader.is_dispersive(), |p| p.is_dispersive(i));
-        (self.shade_hit::<WATCHED>(i, ray, info, unit_normal), None)
+        (self.shade_hit(i, ray, info, unit_normal), None)
     }
 
     /// What a ray that hit nothing sees: the environment, or black.
     #[inline(always)]
     fn environment(&mut self, ray: &Ray) -> Color {
         let scene = self.scene;
-        let color = match scene.preparation() {
-            Some(prepared) => prepared.sky(ray.dir),
-            None => scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir)),
-        };
+        let color = scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir));
         if !color.is_finite() {
             self.note_environment_non_finite();
         }
@@ -614,9 +593,7 @@ impl<'a> TraceContext<'a> {
     /// A ray not traced, for the reason `stop`: black.
     #[inline(always)]
     fn stop<const WATCHED: bool>(&mut self, stop: Stop) -> Color {
-        if WATCHED {
-            self.observe(|o| o.ray_ends(Color::BLACK, Some(stop)));
-        }
+        self.tell::<WATCHED>(|o| o.ray_ends(Color::BLACK, Some(stop)));
         Color::BLACK
     }
 
@@ -655,6 +632,14 @@ impl<'a> TraceContext<'a> {
     #[inline(always)]
     pub(crate) fn recorder(&mut self) -> Option<&mut dyn Recorder> {
         self.observer.as_deref_mut().map(|o| o as &mut dyn Recorder)
+    }
+
+    /// Tells the observer what `report` says when `WATCHED` (the trace that has one); nothing otherwise.
+    #[inline(always)]
+    fn tell<const WATCHED: bool>(&mut self, report: impl FnOnce(&mut dyn Observer)) {
+        if WATCHED {
+            self.observe(report);
+        }
     }
 
     /// Tells the observer, if there is one, what `report` says (see [`crate::lesson::observer`]); one test of

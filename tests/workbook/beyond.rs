@@ -3,7 +3,7 @@
 //! The steps that already have tests of their own against the slide's version: adaptive depth control
 //! (layered_fresnel: within one level of `--exhaustive`), layer pruning (layered_fresnel: the slide's loop),
 //! the mesh BVH (mesh: brute force), camera-relative coordinates (stress: scenes moved 1e6 away), and every
-//! example against `--slide` (slide). Static dispatch is tested here against the trait objects it replaces.
+//! example against `--slide` (slide). A student's own types are tested here against the workbook's.
 
 use crate::common::hidden::through_trait_objects;
 use crate::common::{examples, parse, random_unit, root};
@@ -160,11 +160,11 @@ fn aimed_photons_in_a_grid_carry_the_slides_caustic() {
     assert!((a - b).abs() <= 0.10 * a, "estimates at the caustic: {a} by default, {b} on the slide's map");
 }
 
-/// Static dispatch computes what the trait objects compute: every example renders the same picture bit for
-/// bit, and traces the same rays, when each node's geometry and shader is hidden behind a type the dispatch
-/// does not know (as a student's own types are).
+/// A student's own types work as the workbook's do: every example renders the same picture bit for bit, and
+/// traces the same rays, when each node's geometry and shader, and the environment, is hidden behind a type
+/// of the test's own (called through its trait object, the case `Own` of its family, as a student's is).
 #[test]
-fn static_dispatch_renders_what_the_trait_objects_render() {
+fn own_types_render_what_the_workbooks_types_render() {
     macro_rules! compare {
         ($($name:ident),*) => {$(
             let (scene, settings) =

@@ -403,9 +403,10 @@ fn the_pages_picture_of_the_naive_sum_is_what_the_homework_renders() {
     assert!(right_stats.warnings.is_empty(), "{:?}", right_stats.warnings);
     let mut naive = scene.clone();
     let ball = naive.nodes.iter_mut().find(|n| n.name.as_deref() == Some("glossy ball")).unwrap();
-    let glossy = (&*ball.shader as &dyn std::any::Any).downcast_ref::<TintedGlossy>().unwrap();
+    let Material::Own(glossy) = &ball.shader else { panic!("the homework's ball is a shader of its own") };
+    let glossy = (&**glossy as &dyn std::any::Any).downcast_ref::<TintedGlossy>().unwrap();
     let (tint, glossiness, n) = (glossy.tint, glossy.glossiness, glossy.n);
-    ball.shader = Arc::new(NaiveSum(TintedGlossy { tint, glossiness, n }));
+    ball.shader = NaiveSum(TintedGlossy { tint, glossiness, n }).into_shader();
     let (wrong, wrong_stats) = render(&naive, &settings).unwrap();
     assert!(wrong_stats.warnings.iter().any(|l| l.contains("glossy ball (NaiveSum)")), "{:?}", wrong_stats.warnings);
     // The ball is what changes, and it is brighter: the picture shows the sum's gain.
@@ -476,7 +477,7 @@ fn the_energy_check_leaves_correct_shaders_alone_in_both_readings() {
     for (what, shader, weighed) in shaders {
         for steps in [Steps::ALL, Steps::SLIDES] {
             let mut scene = ball_on_floor(&|| Arc::new(glossy()), steps);
-            scene.nodes[0].shader = shader.clone();
+            scene.nodes[0].shader = shader.clone().into_shader();
             scene.ambient = Color::gray(0.2);
             scene.lights.push(PointLight::new(Vector::new(-20.0, 40.0, -30.0), Color::WHITE, 3000.0));
             let (_, stats) = render(&scene, &settings(1)).unwrap();

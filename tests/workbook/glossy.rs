@@ -16,7 +16,7 @@ use lecture6::lesson::render::{RenderJob, RenderSettings, render, spectral_plan}
 use lecture6::lesson::rng::Rng;
 use lecture6::lesson::sampling::{DiscSampler, DiscSamples};
 use lecture6::lesson::scene::Scene;
-use lecture6::lesson::shader::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
+use lecture6::lesson::shader::{GlossyCone, IntoShader, Reflection, SECONDARY_GLOSSY_SAMPLES};
 use std::sync::{Arc, Mutex};
 
 fn small(spp: u32) -> RenderSettings {
@@ -30,7 +30,7 @@ fn glossiness_one_is_the_mirror_exactly() {
     let mut mirror_scene = glossy_scene.clone();
     let spheres = mirror_scene.nodes.len() - 3;
     for node in &mut mirror_scene.nodes[spheres..] {
-        node.shader = Arc::new(Reflection::new(0.85));
+        node.shader = Reflection::new(0.85).into_shader();
     }
     let (a, stats_a) = render(&glossy_scene, &small(4)).unwrap();
     let (b, stats_b) = render(&mirror_scene, &small(4)).unwrap();

@@ -709,3 +709,28 @@ fn the_tree_prints_the_photon_estimate() {
 
 /// A pixel of the photon map's floor, at 80 x 60, in the glass sphere's caustic.
 const CAUSTIC_PIXEL: (u32, u32) = (24, 37);
+
+/// The ray tree runs the code that made the picture: at every pixel of a small render of every example, in
+/// both readings, the colour the pixel's ray tree brings back is the frame's, bit for bit.
+#[test]
+fn the_ray_tree_of_every_pixel_is_the_pictures() {
+    macro_rules! every_pixel {
+        ($($name:ident),*) => {$(
+            for reading in [&[][..], &["--slide"][..]] {
+                let args: Vec<&str> = ["--width", "16", "--height", "12"].iter().chain(reading).copied().collect();
+                let (scene, settings) = common::parse::<common::examples::$name::Options>(&args).prepare().unwrap();
+                let (frame, _) = render(&scene, &settings).unwrap();
+                for (x, y) in (0..12).flat_map(|y| (0..16).map(move |x| (x, y))) {
+                    let traced = ray_tree::trace(&scene, &settings, PixelPos { x, y }).unwrap();
+                    let (tree, picture) = (traced.color.to_array(), frame.get(x, y).to_array());
+                    assert!(
+                        tree.map(f32::to_bits) == picture.map(f32::to_bits),
+                        "{} {reading:?} ({x}, {y}): the ray tree brings back {tree:?}, the picture has {picture:?}",
+                        stringify!($name)
+                    );
+                }
+            }
+        )*};
+    }
+    every_example!(every_pixel);
+}

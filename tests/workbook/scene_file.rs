@@ -12,7 +12,8 @@ use lecture6::instruments::compare::difference;
 use lecture6::lesson::color::Color;
 use lecture6::lesson::ray::Ray;
 use lecture6::lesson::render::{RenderSettings, render};
-use lecture6::lesson::texture::{BitmapTexture, CheckerTexture};
+use lecture6::lesson::shader::Shader;
+use lecture6::lesson::texture::{BitmapTexture, CheckerTexture, Tex};
 use std::path::PathBuf;
 
 const FOLDER: &str = "scene-file-tests";
@@ -200,9 +201,12 @@ fn shaders_and_textures_render_with_their_properties() {
     assert!(frame.pixels.iter().all(|p| p.is_finite()));
     // The file's `scaling` keeps the format's meaning: the bitmap's is its tile size as it is, the checker's
     // is 5 times its squares per unit.
-    let texture_of = |node: usize| file.scene.nodes[node].shader.texture().map(|t| t as &dyn std::any::Any).unwrap();
-    assert_eq!(texture_of(2).downcast_ref::<BitmapTexture>().unwrap().tile_size, 2.0);
-    assert_eq!(texture_of(0).downcast_ref::<CheckerTexture>().unwrap().scaling, 1.0);
+    let texture_of = |node: usize| {
+        let texture = file.scene.nodes[node].shader.texture().map(|t| t as &dyn std::any::Any).unwrap();
+        texture.downcast_ref::<Tex>().expect("a shader's texture is stored as a `Tex`").clone()
+    };
+    assert!(matches!(texture_of(2), Tex::Bitmap(BitmapTexture { tile_size: 2.0, .. })));
+    assert!(matches!(texture_of(0), Tex::Checker(CheckerTexture { scaling: 1.0, .. })));
     // The checker's squares are 5 / scaling = 1 unit wide: the floor alternates at x = 0 and x = 1.
     let floor_at = |x: f32| {
         let ray = Ray::new(Vector::new(x, 0.5, -20.0), Vector::new(0.0, -1.5, 15.0).normalize());

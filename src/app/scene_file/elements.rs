@@ -9,13 +9,15 @@ use super::*;
 use crate::files::encoding::{self, Encoding};
 use crate::lesson::camera::{Camera, FOV_LIMITS, FovAxis};
 use crate::lesson::color::{Color, linear_to_srgb, srgb_to_linear};
-use crate::lesson::dispatch::shades_per_hit;
 use crate::lesson::environment::{CubemapEnvironment, CubemapLayout, Environment};
 use crate::lesson::error::Result;
 use crate::lesson::geometry::{Cube, Geometry, Mesh, Plane, Sphere};
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
-use crate::lesson::shader::{ColorSource, Lambert, Layered, MAX_SHADES_PER_HIT, Phong, Reflection, Refraction, Shader};
+use crate::lesson::shader::{
+    ColorSource, IntoShader, Lambert, Layered, MAX_SHADES_PER_HIT, Material, Phong, Reflection, Refraction,
+    shades_per_hit,
+};
 use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
 use crate::lesson::transform::Transform;
 use rayon::prelude::*;
@@ -204,7 +206,7 @@ impl Loader<'_> {
     }
 
     /// Builds the shader of block `i` (once; a Layered builds the shaders of its layers first).
-    pub(super) fn shader(&mut self, blocks: &[Block], i: usize) -> Result<Option<Arc<dyn Shader>>> {
+    pub(super) fn shader(&mut self, blocks: &[Block], i: usize) -> Result<Option<Material>> {
         if let Some(built) = self.shaders.get(&i) {
             return Ok(built.clone());
         }
@@ -233,10 +235,10 @@ impl Loader<'_> {
         }
         self.building.push(i);
         let mut r = Reader::new(b);
-        let shader: Arc<dyn Shader> = match b.class.as_str() {
+        let shader: Material = match b.class.as_str() {
             "Lambert" => {
                 let color = self.color_source(&mut r, Color::BLACK)?;
-                Arc::new(Lambert::new(color))
+                Lambert::new(color).into_shader()
             }
             "Phong" => {
                 let color = self.color_source(&mut r, Color::gray(0.5))?;
@@ -244,7 +246,7 @@ impl Loader<'_> {
                 let exponent = r.float(self, "specularExponent", 10.0, 0.0, 1e120)?;
                 let multiplier = r.float(self, "specularMultiplier", 0.4, -1e120, 1e120)?;
                 r.check_lit(self, "specularMultiplier", &[multiplier])?;
-                Arc::new(Phong::new(color, multiplier as f32, exponent as f32))
+                Phong::new(color, multiplier as f32, exponent as f32).into_shader()
             }
             "Refl" => {
                 let multiplier = r.float(self, "multiplier", 0.99, 0.0, 1.0)? as f32;
@@ -252,18 +254,18 @@ impl Loader<'_> {
                 let samples = r.int(self, "numSamples", 32, 1, i32::MAX as i64)?;
                 // Glossiness 0 (an unbounded cone) is refused by `Reflection::glossy`, as on the command line.
                 if glossiness == 1.0 {
-                    Arc::new(Reflection::new(multiplier))
+                    Reflection::new(multiplier).into_shader()
                 } else {
                     let glossy = Reflection::glossy(Color::gray(multiplier), glossiness as f32, samples as u32);
-                    Arc::new(glossy.map_err(|e| self.error(r.line_of("glossiness"), e))?)
+                    glossy.map_err(|e| self.error(r.line_of("glossiness"), e))?.into_shader()
                 }
             }
             "Refr" => {
                 let ior = r.float(self, "ior", 1.33, 1e-6, 10.0)?;
                 let multiplier = r.float(self, "multiplier", 0.99, 0.0, 1.0)?;
-                Arc::new(Refraction::new(ior as f32, multiplier as f32))
+                Refraction::new(ior as f32, multiplier as f32).into_shader()
             }
-            _ => Arc::new(self.layered(blocks, b)?),
+            _ => self.layered(blocks, b)?.into_shader(),
         };
         if b.class != "Layered" {
             r.finish(self);
@@ -278,7 +280,7 @@ impl Loader<'_> {
         let color = r.surface_color(self, "color", default)?;
         let Some(p) = r.raw("texture") else { return Ok(ColorSource::Color(color)) };
         match self.texture_ref(p, &p.value)? {
-            Some(t) => Ok(ColorSource::Texture(t)),
+            Some(t) => Ok(ColorSource::Texture(t.into_tex())),
             None => {
                 self.warn(p.line, format!("texture `{}` was skipped: the colour is used instead", p.value));
                 Ok(ColorSource::Color(color))

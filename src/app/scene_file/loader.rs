@@ -13,7 +13,7 @@ use crate::lesson::geometry::Geometry;
 use crate::lesson::light::PointLight;
 use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
-use crate::lesson::shader::Shader;
+use crate::lesson::shader::Material;
 use crate::lesson::texture::Texture;
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
@@ -33,11 +33,11 @@ pub(super) struct Loader<'a> {
     pub(super) names: HashMap<(Namespace, String), usize>,
     pub(super) geometries: Built<Arc<dyn Geometry>>,
     pub(super) textures: Built<Arc<dyn Texture>>,
-    pub(super) shaders: Built<Arc<dyn Shader>>,
+    pub(super) shaders: Built<Material>,
     /// Shaders being built, to report a Layered that contains itself.
     pub(super) building: Vec<usize>,
     /// How many shaders one hit of each built shader shades, by its address
-    /// ([`crate::lesson::dispatch::shades_per_hit`]; the shaders live in `shaders`).
+    /// ([`crate::lesson::shader::shades_per_hit`]; the shaders live in `shaders`).
     pub(super) counted_shades: HashMap<usize, u64>,
     /// The largest channel of the light a surface a unit from a lamp gets (the lamp's colour times its
     /// power), or of the ambient light, over the scene's lights: they are read before the textures and

@@ -47,7 +47,8 @@ use crate::lesson::observer::{LightTerm, Observer, Stop};
 use crate::lesson::ray::Ray;
 use crate::lesson::render::{RenderSettings, render_pixel};
 use crate::lesson::scene::{Counters, Scene};
-use crate::lesson::shader::Layer;
+use crate::lesson::shader::{Layer, Shader};
+use crate::lesson::texture::Texture;
 use crate::lesson::topic::{Recorder, Topic};
 
 /// What kind of ray a record is, seen from the surface that sent it.

@@ -23,13 +23,14 @@ use super::bvh::Bvh;
 use super::polygon;
 pub use super::triangle4::intersect_triangle;
 use super::triangle4::{LANES, ShearedRay, Triangle4};
-use super::{Aabb, Geometry, Hit, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo, Shape};
 use crate::files::obj;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
 use crate::lesson::math::{MAX_COORDINATE, Vector, gamma};
 use crate::lesson::ray::Ray;
 use std::path::Path;
+use std::sync::Arc;
 
 /// A triangle mesh with a BVH; see the module documentation.
 #[derive(Clone, Debug)]
@@ -360,5 +361,9 @@ impl Geometry for Mesh {
 
     fn bounds(&self) -> Option<Aabb> {
         self.bvh.bounds()
+    }
+
+    fn into_shape(self: Arc<Self>) -> Shape {
+        Shape::Mesh { mesh: self, bvh: true }
     }
 }

@@ -14,6 +14,7 @@ mod one_by_one;
 mod plane;
 pub mod polygon;
 mod prism;
+mod shape;
 mod sphere;
 pub mod triangle4;
 
@@ -21,11 +22,13 @@ pub use cube::Cube;
 pub use mesh::Mesh;
 pub use plane::Plane;
 pub use prism::Prism;
+pub use shape::{IntoGeometry, Shape};
 pub use sphere::Sphere;
 
 use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
 use std::any::Any;
+use std::sync::Arc;
 
 /// What a ray hit (the course's `IntersectionInfo`).
 ///
@@ -166,7 +169,7 @@ impl Hit {
 /// the surface of the winner. A shape whose surface description is expensive (or that wants to avoid the
 /// second intersection) overrides [`hit`](Geometry::hit), to return just the ray parameter and what it needs
 /// later, together with [`surface`](Geometry::surface), which finishes it.
-pub trait Geometry: Any + Send + Sync {
+pub trait Geometry: Any + Send + Sync + GeometryObject {
     /// The closest hit with ray parameter in (0, `t_max`), if any. The ray direction need not be unit
     /// (rays reach here through a node's inverse transform); `distance` is the ray parameter either way.
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo>;
@@ -196,6 +199,25 @@ pub trait Geometry: Any + Send + Sync {
     /// What the ray tree (`--trace-pixel`) calls this shape: its type's name.
     fn name(&self) -> &'static str {
         crate::lesson::type_label::<Self>()
+    }
+
+    /// The shape as a node stores it ([`Shape`]): for any shape but the workbook's own, the case that calls
+    /// it through its trait object, [`Shape::Own`]. A new shape leaves it as it is.
+    fn into_shape(self: Arc<Self>) -> Shape {
+        Shape::Own(self.into_object())
+    }
+}
+
+/// Any sized [`Geometry`] as a trait object: what [`Geometry::into_shape`] keeps of a shape that is not one
+/// of the workbook's. Implemented for every shape; nothing to write.
+pub trait GeometryObject {
+    /// The shape behind a trait object.
+    fn into_object(self: Arc<Self>) -> Arc<dyn Geometry>;
+}
+
+impl<G: Geometry> GeometryObject for G {
+    fn into_object(self: Arc<Self>) -> Arc<dyn Geometry> {
+        self
     }
 }
 

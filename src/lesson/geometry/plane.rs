@@ -2,9 +2,10 @@
 //! (a bitmap's tile size or a checker's scaling turns these world units into texture repeats). Tilt or move
 //! it with a node transform; its u/v stay attached to it.
 
-use super::{Aabb, Geometry, Hit, IntersectionInfo};
+use super::{Aabb, Geometry, Hit, IntersectionInfo, Shape};
 use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
+use std::sync::Arc;
 
 /// The course's horizontal plane y = `y`, with u = x and v = z; its normal is +Y (up) whichever side a ray comes from.
 #[derive(Clone, Copy, Debug)]
@@ -59,5 +60,9 @@ impl Geometry for Plane {
         self.limit.is_finite().then(|| {
             Aabb::new(Vector::new(-self.limit, self.y, -self.limit), Vector::new(self.limit, self.y, self.limit))
         })
+    }
+
+    fn into_shape(self: Arc<Self>) -> Shape {
+        Shape::Plane(*self)
     }
 }

@@ -2,10 +2,11 @@
 //! (u = longitude / 2 pi, measured from -X through +Z; v = 0 at the top, 1 at the bottom), as in the course.
 //! Scale it with a node transform to get an ellipsoid.
 
-use super::{Aabb, Geometry, Hit, IntersectionInfo, TexCoords};
+use super::{Aabb, Geometry, Hit, IntersectionInfo, Shape, TexCoords};
 use crate::lesson::math::{Vector, gamma, max_abs};
 use crate::lesson::ray::Ray;
 use std::f32::consts::{FRAC_1_PI, PI};
+use std::sync::Arc;
 
 /// The course's sphere, with u/v from longitude and latitude; its normals point out of it. A node's transform
 /// scales it into an ellipsoid.
@@ -107,5 +108,9 @@ impl Geometry for Sphere {
 
     fn bounds(&self) -> Option<Aabb> {
         Some(Aabb::new(self.center - self.radius, self.center + self.radius))
+    }
+
+    fn into_shape(self: Arc<Self>) -> Shape {
+        Shape::Sphere(*self)
     }
 }

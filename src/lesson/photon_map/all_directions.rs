@@ -88,7 +88,7 @@ pub(crate) fn follow(
             return None;
         }
         let (info, node) = scene.closest_hit(&ray)?;
-        match scatter_photon(&*node.shader, &ray, &info, rng) {
+        match scatter_photon(&node.shader, &ray, &info, rng) {
             PhotonScatter::Land { scale } => {
                 return (ray.depth > 0).then(|| StoredPhoton { position: info.ip, dir: ray.dir, power: power * scale });
             }

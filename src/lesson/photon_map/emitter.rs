@@ -101,7 +101,7 @@ impl Emitter {
         let spheres: Vec<Option<(Vector, f32)>> = scene
             .nodes
             .iter()
-            .filter(|node| is_caustic_caster(&*node.shader))
+            .filter(|node| is_caustic_caster(&node.shader))
             .map(|node| node.bounds().map(|b| (b.center(), 0.5 * (b.max - b.min).length())))
             .collect();
         let mut cones = Vec::new();

@@ -71,6 +71,7 @@ use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::Aabb;
 use crate::lesson::math::Vector;
 use crate::lesson::scene::Scene;
+use crate::lesson::shader::Shader;
 use crate::lesson::spectral::clip_to_gamut;
 use crate::lesson::topic::{PhotonSeen, Recorder, Topic, record};
 use grid::{CELLS_PER_RADIUS, Found, PhotonGrid, SEARCH_FRACTIONS};

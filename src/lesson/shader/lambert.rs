@@ -2,7 +2,7 @@
 //! plus, for each light that reaches the point, the light's irradiance times the cosine of its angle, plus the
 //! caustic light from the photon map, if the scene has one).
 
-use super::{ColorSource, Shader};
+use super::{ColorSource, Material, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::diffuse_light;
@@ -10,6 +10,7 @@ use crate::lesson::math::faceforward;
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::texture::Texture;
+use std::sync::Arc;
 
 /// A perfectly diffuse (matte) surface, lit by the light loop (lectures 2-3).
 #[derive(Clone)]
@@ -23,22 +24,22 @@ impl Lambert {
     pub fn new(color: impl Into<ColorSource>) -> Lambert {
         Lambert { color: color.into() }
     }
-
-    /// The surface's colour at the hit when its diffuse colour there is `diffuse`: `diffuse` times the light
-    /// the point receives.
-    #[inline(always)]
-    pub fn shade_with(&self, diffuse: Color, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let n = faceforward(info.normal, ray.dir);
-        diffuse * diffuse_light(ctx, info, n)
-    }
 }
 
 impl Shader for Lambert {
+    /// The diffuse colour at the hit times the light the point receives.
+    #[inline(always)]
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.shade_with(self.color.at(ray, info, ctx), ray, info, ctx)
+        let diffuse = self.color.at(ray, info, ctx);
+        let n = faceforward(info.normal, ray.dir);
+        diffuse * diffuse_light(ctx, info, n)
     }
 
     fn texture(&self) -> Option<&dyn Texture> {
         self.color.texture()
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Lambert(Arc::unwrap_or_clone(self))
     }
 }

@@ -20,36 +20,35 @@
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
 //! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
 
-use super::{CausticCaster, IntoShader, PhotonScatter, Shader, is_caustic_caster, read_texture, scatter_photon};
-use crate::lesson::beyond::{Step, Steps};
+use super::{CausticCaster, IntoShader, Material, PhotonScatter, Shader, is_caustic_caster, scatter_photon};
+use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::photon_map::strength;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::texture::Texture;
+use crate::lesson::texture::{Tex, Texture};
 use glam::Vec3A;
+use std::collections::HashMap;
 use std::sync::Arc;
 
 /// One layer of a [`Layered`] shader: a shader and how opaque it is (slide "Layered Shader").
 #[derive(Clone)]
 pub struct Layer {
     /// What the layer looks like where it covers the layers below.
-    pub shader: Arc<dyn Shader>,
+    pub shader: Material,
     /// The layer's opacity, per channel: 0 transparent, 1 opaque.
     pub blend: Color,
     /// A texture whose colour multiplies `blend` at each point (the Fresnel texture of the glass); `None`
     /// leaves `blend` as it is.
-    pub blend_tex: Option<Arc<dyn Texture>>,
+    pub blend_tex: Option<Tex>,
 }
 
 impl Layer {
     /// The layer's opacity at this point: its blend colour times its blend texture, clamped to [0, 1].
     pub fn blend_at(&self, ray: &Ray, info: &IntersectionInfo) -> Color {
-        Layer::clamp_blend(
-            self.blend * self.blend_tex.as_ref().map_or(Color::WHITE, |t| t.color_with(ray, info, Steps::ALL)),
-        )
+        Layer::clamp_blend(self.blend * self.blend_tex.as_ref().map_or(Color::WHITE, |t| t.get_tex_color(ray, info)))
     }
 
     /// A blend clamped to [0, 1], the range of an opacity.
@@ -57,44 +56,26 @@ impl Layer {
     pub(crate) fn clamp_blend(blend: Color) -> Color {
         Color(blend.0.clamp(Vec3A::ZERO, Vec3A::ONE))
     }
-}
 
-/// What the Layered loops ([`shade_bottom_up`], [`shade_pruned`]) need of a layer: its opacity at a hit, and
-/// its colour there. A [`Layer`] answers through its trait objects; the renderer's prepared layers
-/// ([`crate::lesson::dispatch`]) answer the same through the workbook's own types.
-pub(crate) trait LayerShading {
-    /// The layer's opacity at the hit, its blend texture read as the steps of `ctx`'s scene say: its blend
-    /// colour times its blend texture, before clamping.
-    fn blend(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
-    /// The layer's colour at the hit times `weight`, its share of the surface's colour, for `ray`.
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color;
-}
-
-impl LayerShading for Layer {
+    /// The layer's opacity at the hit, its blend texture read as the steps of `ctx`'s scene say (and told
+    /// to the ray tree): its blend colour times its blend texture, before clamping.
     #[inline(always)]
     fn blend(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.blend * self.blend_tex.as_ref().map_or(Color::WHITE, |tex| read_texture(&**tex, ray, info, ctx))
-    }
-
-    #[inline(always)]
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, weight: Color, ctx: &mut TraceContext) -> Color {
-        ctx.shade_layer(self, ray, info, weight)
+        match &self.blend_tex {
+            Some(tex) => self.blend * tex.color(ray, info, ctx.scene.steps, ctx.recorder()),
+            None => self.blend,
+        }
     }
 }
 
 /// The slide's Layered loop: every layer from the bottom up, `res = res * (1 - blend) + layer_color * blend`.
 #[inline(always)]
-pub(crate) fn shade_bottom_up<L: LayerShading>(
-    layers: &[L],
-    ray: &Ray,
-    info: &IntersectionInfo,
-    ctx: &mut TraceContext,
-) -> Color {
+fn shade_bottom_up(layers: &[Layer], ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
     let mut res = Color::BLACK;
     for layer in layers {
         let blend = Layer::clamp_blend(layer.blend(ray, info, ctx));
         ctx.observe(|o| o.layers_covered(blend));
-        res = res * (Color::WHITE - blend) + layer.shade(ray, info, blend, ctx);
+        res = res * (Color::WHITE - blend) + ctx.shade_layer(layer, ray, info, blend);
     }
     res
 }
@@ -103,12 +84,7 @@ pub(crate) fn shade_bottom_up<L: LayerShading>(
 /// far lets through, and a layer's weight follows from it and the layer's blend ([`layer_weight`]); a layer
 /// of no weight is not shaded, and the loop stops at the first layer that covers everything below it.
 #[inline(always)]
-pub(crate) fn shade_pruned<L: LayerShading>(
-    layers: &[L],
-    ray: &Ray,
-    info: &IntersectionInfo,
-    ctx: &mut TraceContext,
-) -> Color {
+fn shade_pruned(layers: &[Layer], ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
     beyond!(LayerPruning);
     let mut res = Color::BLACK;
     let mut uncovered = Color::WHITE;
@@ -119,7 +95,7 @@ pub(crate) fn shade_pruned<L: LayerShading>(
         let strength = weight.max_channel();
         if strength > 0.0 {
             layer_ray.weight = ray.weight * strength;
-            res += layer.shade(&layer_ray, info, weight, ctx);
+            res += ctx.shade_layer(layer, &layer_ray, info, weight);
         }
         uncovered *= Color::WHITE - blend;
         if uncovered.max_channel() <= 0.0 {
@@ -152,6 +128,9 @@ pub const MAX_SHADES_PER_HIT: u64 = 4096;
 pub struct Layered {
     layers: Vec<Layer>,
     every_layer: bool,
+    /// Whether some layer's shader is not one of the workbook's own that stay within their budget of rays
+    /// ([`Material::is_workbook`]).
+    own_layer: bool,
 }
 
 impl Layered {
@@ -169,7 +148,9 @@ impl Layered {
         blend_tex: Option<Arc<dyn Texture>>,
     ) -> &mut Layered {
         assert!(self.layers.len() < MAX_LAYERS, "a Layered shader holds at most {MAX_LAYERS} layers");
-        self.layers.push(Layer { shader: shader.into_shader(), blend, blend_tex });
+        let shader = shader.into_shader();
+        self.own_layer |= !shader.is_workbook();
+        self.layers.push(Layer { shader, blend, blend_tex: blend_tex.map(Texture::into_tex) });
         self
     }
 
@@ -189,6 +170,12 @@ impl Layered {
     /// Whether every layer is shaded at every point ([`Layered::shade_every_layer`]).
     pub fn shades_every_layer(&self) -> bool {
         self.every_layer
+    }
+
+    /// Whether every layer's shader is one of the workbook's own ([`Material::is_workbook`]).
+    #[inline(always)]
+    pub(crate) fn is_workbook(&self) -> bool {
+        !self.own_layer
     }
 
     /// The weight of each layer at this hit, computed from the top down as `shade` does, and the lowest
@@ -212,11 +199,16 @@ impl Layered {
 }
 
 impl Shader for Layered {
+    #[inline(always)]
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         if ctx.scene.steps.has(Step::LayerPruning) && !self.every_layer {
             return shade_pruned(&self.layers, ray, info, ctx);
         }
         shade_bottom_up(&self.layers, ray, info, ctx)
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Layered(self)
     }
 
     fn is_dispersive(&self) -> bool {
@@ -225,7 +217,7 @@ impl Shader for Layered {
 
     /// A caustic caster when one of its layers is.
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        self.layers.iter().any(|layer| is_caustic_caster(&*layer.shader)).then_some(self as &dyn CausticCaster)
+        self.layers.iter().any(|layer| is_caustic_caster(&layer.shader)).then_some(self as &dyn CausticCaster)
     }
 
     /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a
@@ -234,7 +226,10 @@ impl Shader for Layered {
     /// pattern painted with a checker as a layer's blend shows the checker's coordinates, and a glass
     /// blended by the Fresnel texture, which reads no u/v, names none.
     fn texture(&self) -> Option<&dyn Texture> {
-        let blend = || self.layers.iter().filter_map(|layer| layer.blend_tex.as_deref()).find(|t| t.reads_uv());
+        let blend = || {
+            let blend_textures = self.layers.iter().filter_map(|layer| layer.blend_tex.as_ref());
+            blend_textures.map(|t| t as &dyn Texture).find(|t| t.reads_uv())
+        };
         self.layers.iter().find_map(|layer| layer.shader.texture()).or_else(blend)
     }
 }
@@ -260,7 +255,7 @@ impl CausticCaster for Layered {
             })
             .unwrap_or(last);
         let probability = strength(weights[chosen]) / total;
-        match scatter_photon(&*self.layers[chosen].shader, ray, info, rng) {
+        match scatter_photon(&self.layers[chosen].shader, ray, info, rng) {
             PhotonScatter::Land { scale } => PhotonScatter::Land { scale: scale / probability },
             PhotonScatter::Continue { dir, filter } => {
                 PhotonScatter::Continue { dir, filter: filter * weights[chosen] / probability }
@@ -268,4 +263,39 @@ impl CausticCaster for Layered {
             PhotonScatter::Absorb => PhotonScatter::Absorb,
         }
     }
+}
+
+/// How many shaders one hit of `shader` shades ([`MAX_SHADES_PER_HIT`]): 1, and for a `Layered` 1 more than
+/// its layers' shaders together, each as often as a layer names it (saturating). Each `Layered` is counted
+/// once and its count kept in `counted`, by address (the shaders must live as long as it does), so that
+/// Layered shaders sharing their layers' shaders are counted in time linear in their layers; the count
+/// recurses through a list, not the stack, so a chain of thousands of Layered shaders is counted too. A
+/// student's shader counts 1: what it calls cannot be seen.
+pub fn shades_per_hit(shader: &Material, counted: &mut HashMap<usize, u64>) -> u64 {
+    let Material::Layered(top) = shader else {
+        return 1;
+    };
+    let address = |layered: &Arc<Layered>| Arc::as_ptr(layered) as usize;
+    let nested = |layered: &Arc<Layered>| -> Vec<Arc<Layered>> {
+        let layers = layered.layers.iter().map(|layer| &layer.shader);
+        layers.filter_map(|s| if let Material::Layered(l) = s { Some(l.clone()) } else { None }).collect()
+    };
+    let mut todo = vec![top.clone()];
+    while let Some(layered) = todo.last().cloned() {
+        let uncounted: Vec<_> = nested(&layered).into_iter().filter(|l| !counted.contains_key(&address(l))).collect();
+        if uncounted.is_empty() {
+            let shades = layered.layers.iter().fold(1u64, |n, layer| {
+                let layer_shades = match &layer.shader {
+                    Material::Layered(l) => counted[&address(l)],
+                    _ => 1,
+                };
+                n.saturating_add(layer_shades)
+            });
+            counted.insert(address(&layered), shades);
+            todo.pop();
+        } else {
+            todo.extend(uncounted);
+        }
+    }
+    counted[&address(top)]
 }

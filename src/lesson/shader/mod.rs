@@ -6,14 +6,15 @@
 mod glass;
 mod lambert;
 mod layered;
+mod material;
 mod phong;
 mod reflection;
 mod refraction;
 
 pub use glass::fresnel_glass;
 pub use lambert::Lambert;
-pub use layered::{Layer, Layered, MAX_LAYERS, MAX_SHADES_PER_HIT};
-pub(crate) use layered::{LayerShading, shade_bottom_up, shade_pruned};
+pub use layered::{Layer, Layered, MAX_LAYERS, MAX_SHADES_PER_HIT, shades_per_hit};
+pub use material::{IntoShader, Material};
 pub use phong::Phong;
 #[allow(deprecated)]
 pub use reflection::GLOSSY_SPLIT_DEPTH;
@@ -26,7 +27,7 @@ use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
-use crate::lesson::texture::Texture;
+use crate::lesson::texture::{Tex, Texture};
 use std::any::Any;
 use std::sync::Arc;
 
@@ -74,7 +75,7 @@ pub enum PhotonScatter {
 /// - a shader whose colour comes from a texture returns it from [`Shader::texture`], so that `--view uv`
 ///   shows the coordinates that texture looks up; the default, `None`, shows the surface's own u/v;
 /// - [`Shader::name`] names it in the ray tree, its type's name by default.
-pub trait Shader: Any + Send + Sync {
+pub trait Shader: Any + Send + Sync + ShaderObject {
     /// The colour seen along `ray`, which hit a surface as described by `info`.
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color;
 
@@ -109,6 +110,25 @@ pub trait Shader: Any + Send + Sync {
     fn name(&self) -> &'static str {
         crate::lesson::type_label::<Self>()
     }
+
+    /// The shader as a node or a layer stores it ([`Material`]): for any shader but the workbook's own, the
+    /// case that calls it through its trait object, [`Material::Own`]. A new shader leaves it as it is.
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Own(self.into_object())
+    }
+}
+
+/// Any sized [`Shader`] as a trait object: what [`Shader::into_material`] keeps of a shader that is not one
+/// of the workbook's. Implemented for every shader; nothing to write.
+pub trait ShaderObject {
+    /// The shader behind a trait object.
+    fn into_object(self: Arc<Self>) -> Arc<dyn Shader>;
+}
+
+impl<S: Shader> ShaderObject for S {
+    fn into_object(self: Arc<Self>) -> Arc<dyn Shader> {
+        self
+    }
 }
 
 /// A surface that photons leave by reflection or refraction (slide "Photon Mapping"): a mirror, glass, or a
@@ -142,38 +162,13 @@ pub fn scatter_photon(shader: &dyn Shader, ray: &Ray, info: &IntersectionInfo, r
     }
 }
 
-/// Anything that can be a node's or a layer's shader: a shader, or a shader shared with other nodes
-/// (`Arc<Reflection>`, `Arc<dyn Shader>`).
-pub trait IntoShader {
-    /// The shader, in an `Arc` so that nodes and layers can share it.
-    fn into_shader(self) -> Arc<dyn Shader>;
-}
-
-impl<S: Shader + 'static> IntoShader for S {
-    fn into_shader(self) -> Arc<dyn Shader> {
-        Arc::new(self)
-    }
-}
-
-impl<S: Shader + 'static> IntoShader for Arc<S> {
-    fn into_shader(self) -> Arc<dyn Shader> {
-        self
-    }
-}
-
-impl IntoShader for Arc<dyn Shader> {
-    fn into_shader(self) -> Arc<dyn Shader> {
-        self
-    }
-}
-
 /// A constant colour or a texture: how the course's shaders take their diffuse colour.
 #[derive(Clone)]
 pub enum ColorSource {
     /// The same colour everywhere (linear RGB).
     Color(Color),
     /// A texture's colour at the hit's u/v.
-    Texture(Arc<dyn Texture>),
+    Texture(Tex),
 }
 
 impl ColorSource {
@@ -193,7 +188,7 @@ impl ColorSource {
     pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
             ColorSource::Color(c) => *c,
-            ColorSource::Texture(t) => read_texture(&**t, ray, info, ctx),
+            ColorSource::Texture(t) => t.color(ray, info, ctx.scene.steps, ctx.recorder()),
         }
     }
 
@@ -202,19 +197,8 @@ impl ColorSource {
     pub fn texture(&self) -> Option<&dyn Texture> {
         match self {
             ColorSource::Color(_) => None,
-            ColorSource::Texture(t) => Some(&**t),
+            ColorSource::Texture(t) => Some(t),
         }
-    }
-}
-
-/// The colour of `texture` at the hit `info` as the render's reading reads it ([`Texture::color_with`]),
-/// telling the observer, if one watches, what the texture computed ([`Texture::color_recorded`]).
-#[inline]
-pub(crate) fn read_texture(texture: &dyn Texture, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-    let steps = ctx.scene.steps;
-    match ctx.recorder() {
-        Some(recorder) => texture.color_recorded(ray, info, steps, recorder),
-        None => texture.color_with(ray, info, steps),
     }
 }
 
@@ -224,8 +208,8 @@ impl From<Color> for ColorSource {
     }
 }
 
-impl<T: Texture + 'static> From<T> for ColorSource {
+impl<T: Texture> From<T> for ColorSource {
     fn from(t: T) -> ColorSource {
-        ColorSource::Texture(Arc::new(t))
+        ColorSource::Texture(Arc::new(t).into_tex())
     }
 }

@@ -2,7 +2,7 @@
 //! where gamma is the angle between the light's mirror direction and the direction to the eye (as in the
 //! course's Phong shader). Caustic light from the photon map, if the scene has one, adds to the diffuse term.
 
-use super::{ColorSource, Shader};
+use super::{ColorSource, Material, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::light::light_loop;
@@ -10,6 +10,7 @@ use crate::lesson::math::{faceforward, reflect};
 use crate::lesson::ray::Ray;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::texture::Texture;
+use std::sync::Arc;
 
 /// A diffuse surface with the lamps' highlights on it (the course's Phong shader).
 #[derive(Clone)]
@@ -27,17 +28,13 @@ impl Phong {
     pub fn new(color: impl Into<ColorSource>, specular: f32, exponent: f32) -> Phong {
         Phong { color: color.into(), specular, exponent }
     }
+}
 
-    /// The surface's colour at the hit when its diffuse colour there is `diffuse_color`: the diffuse colour
-    /// times the light the point receives, plus the lamps' highlights.
+impl Shader for Phong {
+    /// The diffuse colour at the hit times the light the point receives, plus the lamps' highlights.
     #[inline]
-    pub fn shade_with(
-        &self,
-        diffuse_color: Color,
-        ray: &Ray,
-        info: &IntersectionInfo,
-        ctx: &mut TraceContext,
-    ) -> Color {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let diffuse_color = self.color.at(ray, info, ctx);
         let n = faceforward(info.normal, ray.dir);
         let light = light_loop(ctx, info, n, |l, irradiance| {
             let cos_gamma = (-ray.dir).dot(reflect(-l, n));
@@ -45,14 +42,12 @@ impl Phong {
         });
         diffuse_color * light.irradiance + light.highlights
     }
-}
-
-impl Shader for Phong {
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.shade_with(self.color.at(ray, info, ctx), ray, info, ctx)
-    }
 
     fn texture(&self) -> Option<&dyn Texture> {
         self.color.texture()
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Phong(Arc::unwrap_or_clone(self))
     }
 }

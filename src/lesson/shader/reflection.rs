@@ -35,7 +35,7 @@
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
 //!   samples would converge to a different picture.
 
-use super::{CausticCaster, ColorSource, PhotonScatter, Shader};
+use super::{CausticCaster, ColorSource, Material, PhotonScatter, Shader};
 use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
@@ -47,6 +47,7 @@ use crate::lesson::sampling::{DiscSampler, DiscSamples, random_unit_disc_point};
 use crate::lesson::scene::TraceContext;
 use crate::lesson::texture::Texture;
 use std::f32::consts::FRAC_PI_2;
+use std::sync::Arc;
 
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
 /// uses 2. The core's bound on every shader's branching ([`crate::lesson::branching`]) allows the same.
@@ -121,28 +122,17 @@ impl Reflection {
         ctx.raytrace(&new_ray) * m
     }
 
-    /// A perfect mirror's colour at the hit (its glossiness 1) when its colour there is `multiplier`:
-    /// [`Reflection::shade_with`] without the glossy cone, for the renderer's static dispatch.
-    #[inline(always)]
-    pub(crate) fn shade_perfect(
+    /// The glossy mirror's colour at the hit when its colour there is `multiplier`: the average of its cone
+    /// of rays (the slide's steps 1-7).
+    #[inline(never)]
+    fn shade_glossy(
         &self,
         multiplier: Color,
         ray: &Ray,
         info: &IntersectionInfo,
+        n: Vector,
         ctx: &mut TraceContext,
     ) -> Color {
-        let n = faceforward(info.normal, ray.dir);
-        self.trace_mirror(ray, info, n, ctx, multiplier)
-    }
-
-    /// The mirror's colour at the hit when its colour there is `multiplier` (what [`Shader::shade`]
-    /// computes, with the multiplier read from its colour or texture).
-    #[inline]
-    pub fn shade_with(&self, multiplier: Color, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let n = faceforward(info.normal, ray.dir);
-        if self.glossiness >= 1.0 {
-            return self.trace_mirror(ray, info, n, ctx, multiplier);
-        }
         let steps = ctx.scene.steps;
         let num_samples =
             if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
@@ -173,8 +163,15 @@ impl Reflection {
 }
 
 impl Shader for Reflection {
+    /// The mirror ray, or the glossy cone's average, times the mirror's colour at the hit.
+    #[inline(always)]
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        self.shade_with(self.multiplier.at(ray, info, ctx), ray, info, ctx)
+        let multiplier = self.multiplier.at(ray, info, ctx);
+        let n = faceforward(info.normal, ray.dir);
+        if self.glossiness >= 1.0 {
+            return self.trace_mirror(ray, info, n, ctx, multiplier);
+        }
+        self.shade_glossy(multiplier, ray, info, n, ctx)
     }
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
@@ -184,6 +181,10 @@ impl Shader for Reflection {
     /// The texture of a textured mirror's colour.
     fn texture(&self) -> Option<&dyn Texture> {
         self.multiplier.texture()
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Reflection(Arc::unwrap_or_clone(self))
     }
 }
 

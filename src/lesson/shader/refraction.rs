@@ -11,7 +11,7 @@
 //! Deviation from the slides: the new ray starts at the hit point offset by its error bound to the side the
 //! refracted ray goes to ([`Ray::spawn`](crate::lesson::ray::Ray::spawn)), instead of `1e-6 * ray.dir`.
 
-use super::{CausticCaster, PhotonScatter, Shader};
+use super::{CausticCaster, Material, PhotonScatter, Shader};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, faceforward, refract};
@@ -19,6 +19,7 @@ use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
 use crate::lesson::scene::TraceContext;
 use crate::lesson::spectral::Ior;
+use std::sync::Arc;
 
 /// A transparent surface that bends rays by Snell's law (slide "Refraction 0.2"); glass without Fresnel's
 /// reflection, which [`fresnel_glass`](super::fresnel_glass) adds.
@@ -70,6 +71,10 @@ impl Shader for Refraction {
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
         Some(self)
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Refraction(*self)
     }
 }
 

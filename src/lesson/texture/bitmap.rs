@@ -7,8 +7,7 @@
 //! names it for what it is, because a checker's `scaling` ([`super::CheckerTexture`]) multiplies u/v
 //! instead; a scene file's `scaling` is read as the tile size, unchanged.
 
-use super::Texture;
-use crate::lesson::beyond::Steps;
+use super::{Tex, Texture};
 use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
@@ -61,10 +60,11 @@ impl BitmapTexture {
         BitmapTexture { wrap: (u, v), ..self }
     }
 
-    /// The colour at the hit as a render that takes `steps` reads it, the texels read told to `recorder`.
-    fn read(&self, info: &IntersectionInfo, steps: Steps, recorder: Option<&mut dyn Recorder>) -> Color {
+    /// The colour at the hit read through `filter` (the texture's own, or one texel on the slide), the
+    /// texels read told to `recorder`.
+    pub(super) fn read(&self, info: &IntersectionInfo, filter: Filter, recorder: Option<&mut dyn Recorder>) -> Color {
         let (u, v) = self.lookup_uv(info.uv());
-        self.bitmap.sample_recorded(u, v, self.filter.under(steps), self.wrap, recorder)
+        self.bitmap.sample_recorded(u, v, filter, self.wrap, recorder)
     }
 }
 
@@ -75,19 +75,13 @@ impl Texture for BitmapTexture {
         self.bitmap.sample(u, v, self.filter, self.wrap)
     }
 
-    /// One texel, the slide's, without the step `TexelFilter`; the texture's own filter with it.
-    fn color_with(&self, _ray: &Ray, info: &IntersectionInfo, steps: Steps) -> Color {
-        self.read(info, steps, None)
-    }
-
-    /// The colour, telling `recorder` where the image was read and the texels mixed.
-    fn color_recorded(&self, _ray: &Ray, info: &IntersectionInfo, steps: Steps, recorder: &mut dyn Recorder) -> Color {
-        self.read(info, steps, Some(recorder))
-    }
-
     /// The surface's u/v divided by `tile_size`: one copy of the image per unit.
     #[inline]
     fn lookup_uv(&self, (u, v): (f32, f32)) -> (f32, f32) {
         (u / self.tile_size, v / self.tile_size)
+    }
+
+    fn into_tex(self: Arc<Self>) -> Tex {
+        Tex::Bitmap(Arc::unwrap_or_clone(self))
     }
 }

@@ -2,11 +2,12 @@
 //! procedural texture, kept for comparison with bitmaps). Its `scaling` multiplies u/v, as "scaling" does
 //! everywhere in the workbook; a bitmap's tile size divides them ([`super::BitmapTexture::tile_size`]).
 
-use super::Texture;
+use super::{Tex, Texture};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::floor;
 use crate::lesson::ray::Ray;
+use std::sync::Arc;
 
 /// A checkerboard of two colours over the surface's u/v (the course's first procedural texture).
 #[derive(Clone, Copy, Debug)]
@@ -30,5 +31,9 @@ impl Texture for CheckerTexture {
     /// The surface's u/v times `scaling`: one square per unit.
     fn lookup_uv(&self, (u, v): (f32, f32)) -> (f32, f32) {
         (u * self.scaling, v * self.scaling)
+    }
+
+    fn into_tex(self: Arc<Self>) -> Tex {
+        Tex::Checker(*self)
     }
 }

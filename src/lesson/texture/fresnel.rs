@@ -6,14 +6,14 @@
 //! blended by this texture loses no light there (the slide's formula, used as is when leaving the glass,
 //! would give less than 1 and let the refraction layer return black for the rest).
 
-use super::Texture;
-use crate::lesson::beyond::Steps;
+use super::{Tex, Texture};
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, faceforward, fresnel, fresnel_exact};
 use crate::lesson::ray::Ray;
 use crate::lesson::spectral::Ior;
-use crate::lesson::topic::{Recorder, Topic};
+use crate::lesson::topic::{Recorder, Topic, record};
+use std::sync::Arc;
 
 /// Which formula the Fresnel texture uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -58,6 +58,19 @@ impl Fresnel {
     /// ray. Entering, light goes from air (1) into the object (ior); leaving, the other way round: the
     /// slide's "eta flipped when inside". The test is the one `Refraction` makes, so the two always agree on
     /// which side the ray is (and on total internal reflection).
+    /// The reflectance as a grey colour, telling `recorder`, if there is one, the values it was computed from
+    /// (what the ray tree shows at a hit).
+    #[inline(always)]
+    pub(super) fn color(&self, ray: &Ray, info: &IntersectionInfo, recorder: Option<&mut dyn Recorder>) -> Color {
+        let reflectance = self.reflectance(ray, info);
+        record(recorder, || {
+            let (eta, n) = self.interface(ray, info);
+            let (cos, exact) = ((-n.dot(ray.dir)).clamp(0.0, 1.0), self.mode == FresnelMode::Exact);
+            Topic::Fresnel { reflectance, eta, cos, exact }
+        });
+        Color::gray(reflectance)
+    }
+
     #[inline(always)]
     fn interface(&self, ray: &Ray, info: &IntersectionInfo) -> (f32, Vector) {
         let ior = self.ior.at(ray.wavelength);
@@ -73,14 +86,6 @@ impl Texture for Fresnel {
     }
 
     /// The reflectance, told to `recorder` with the ratio of the indices and the angle it comes from.
-    fn color_recorded(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps, recorder: &mut dyn Recorder) -> Color {
-        let reflectance = self.reflectance(ray, info);
-        let (eta, n) = self.interface(ray, info);
-        let (cos, exact) = ((-n.dot(ray.dir)).clamp(0.0, 1.0), self.mode == FresnelMode::Exact);
-        recorder.record(&Topic::Fresnel { reflectance, eta, cos, exact });
-        Color::gray(reflectance)
-    }
-
     fn is_dispersive(&self) -> bool {
         self.ior.is_dispersive()
     }
@@ -88,5 +93,9 @@ impl Texture for Fresnel {
     /// The reflectance depends on the angle alone.
     fn reads_uv(&self) -> bool {
         false
+    }
+
+    fn into_tex(self: Arc<Self>) -> Tex {
+        Tex::Fresnel(*self)
     }
 }

@@ -5,36 +5,23 @@
 mod bitmap;
 mod checker;
 mod fresnel;
+mod tex;
 
 pub use bitmap::BitmapTexture;
 pub use checker::CheckerTexture;
 pub use fresnel::{Fresnel, FresnelMode};
+pub use tex::Tex;
 
-use crate::lesson::beyond::Steps;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::ray::Ray;
-use crate::lesson::topic::Recorder;
 use std::any::Any;
+use std::sync::Arc;
 
 /// The course's `Texture` interface.
-pub trait Texture: Any + Send + Sync {
+pub trait Texture: Any + Send + Sync + TextureObject {
     /// The texture's colour where `ray` hit the surface described by `info`.
     fn get_tex_color(&self, ray: &Ray, info: &IntersectionInfo) -> Color;
-
-    /// The colour as a render that takes `steps` reads it ([`crate::lesson::beyond`]): by default
-    /// [`Texture::get_tex_color`], whatever the steps; a bitmap texture reads one texel without the step
-    /// `TexelFilter`. A texture whose reading depends on no step leaves it as it is.
-    fn color_with(&self, ray: &Ray, info: &IntersectionInfo, _steps: Steps) -> Color {
-        self.get_tex_color(ray, info)
-    }
-
-    /// [`Texture::color_with`], telling `recorder` what the slide's technique computed for it (the Fresnel
-    /// reflectance, the texels a bitmap mixed; [`crate::lesson::topic`]): what the ray tree shows at a hit.
-    /// By default `color_with`, which tells nothing.
-    fn color_recorded(&self, ray: &Ray, info: &IntersectionInfo, steps: Steps, _recorder: &mut dyn Recorder) -> Color {
-        self.color_with(ray, info, steps)
-    }
 
     /// The coordinates this texture looks its colour up at, for a point of a surface whose texture
     /// coordinates are `uv` (the hit's `info.uv()`): after the texture's own scaling, before any wrapping.
@@ -62,5 +49,24 @@ pub trait Texture: Any + Send + Sync {
     /// What the ray tree (`--trace-pixel`) calls this texture: its type's name.
     fn name(&self) -> &'static str {
         crate::lesson::type_label::<Self>()
+    }
+
+    /// The texture as a shader stores it ([`Tex`]): for any texture but the workbook's own, the case that
+    /// calls it through its trait object, [`Tex::Own`]. A new texture leaves it as it is.
+    fn into_tex(self: Arc<Self>) -> Tex {
+        Tex::Own(self.into_object())
+    }
+}
+
+/// Any sized [`Texture`] as a trait object: what [`Texture::into_tex`] keeps of a texture that is not one of
+/// the workbook's. Implemented for every texture; nothing to write.
+pub trait TextureObject {
+    /// The texture behind a trait object.
+    fn into_object(self: Arc<Self>) -> Arc<dyn Texture>;
+}
+
+impl<T: Texture> TextureObject for T {
+    fn into_object(self: Arc<Self>) -> Arc<dyn Texture> {
+        self
     }
 }

@@ -1,14 +1,14 @@
-//! The scene with every node's geometry and shader, and the environment, hidden behind a type the renderer's
-//! dispatch (src/lesson/dispatch.rs) does not know, so that it is traced as a student's own types are,
-//! through their trait objects.
+//! The scene with every node's geometry and shader, and the environment, hidden behind a type of the test's
+//! own, so that it is traced as a student's own types are, through their trait objects (the cases `Own` of
+//! `Shape`, `Material` and `Sky`).
 
 use lecture6::lesson::color::Color;
 use lecture6::lesson::environment::Environment;
-use lecture6::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo};
+use lecture6::lesson::geometry::{Aabb, Geometry, Hit, IntersectionInfo, IntoGeometry, Shape};
 use lecture6::lesson::math::Vector;
 use lecture6::lesson::ray::Ray;
 use lecture6::lesson::scene::{Scene, TraceContext};
-use lecture6::lesson::shader::{CausticCaster, Shader};
+use lecture6::lesson::shader::{CausticCaster, IntoShader, Material, Shader};
 use lecture6::lesson::texture::Texture;
 use std::sync::Arc;
 
@@ -16,17 +16,17 @@ use std::sync::Arc;
 pub fn through_trait_objects(scene: &Scene) -> Scene {
     let mut hidden = scene.clone();
     for node in &mut hidden.nodes {
-        node.geometry = Arc::new(Hidden(node.geometry.clone()));
-        node.shader = Arc::new(Hidden(node.shader.clone()));
+        node.geometry = Hidden(node.geometry.clone()).into_geometry();
+        node.shader = Hidden(node.shader.clone()).into_shader();
     }
     hidden.environment = scene.environment.clone().map(|e| Arc::new(Hidden(e)) as Arc<dyn Environment>);
     hidden
 }
 
-/// A trait object under a type of its own, which forwards every call to it.
-struct Hidden<T: ?Sized>(Arc<T>);
+/// A value under a type of its own, which forwards every call to it.
+struct Hidden<T>(T);
 
-impl Geometry for Hidden<dyn Geometry> {
+impl Geometry for Hidden<Shape> {
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
         self.0.intersect(ray, t_max)
     }
@@ -47,13 +47,13 @@ impl Geometry for Hidden<dyn Geometry> {
     }
 }
 
-impl Environment for Hidden<dyn Environment> {
+impl Environment for Hidden<Arc<dyn Environment>> {
     fn get(&self, dir: Vector) -> Color {
         self.0.get(dir)
     }
 }
 
-impl Shader for Hidden<dyn Shader> {
+impl Shader for Hidden<Material> {
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         self.0.shade(ray, info, ctx)
     }
