@@ -836,7 +836,10 @@ fn two_phase_nearest_hit(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: 
         verdict: verdict.to_string(),
         code: vec![
             Code::Items("src/lesson/geometry/mod.rs", &["struct Hit", "impl Hit", "fn hit(", "fn surface("]),
-            Code::Items("src/lesson/node.rs", &["fn hit(", "fn hit_transformed", "fn surface(", "fn nearest_hit_linear"]),
+            Code::Items(
+                "src/lesson/node.rs",
+                &["fn hit(", "fn hit_transformed", "fn surface(", "fn nearest_hit_linear", "const TIE", "fn tie"],
+            ),
             Code::Items("src/lesson/scene.rs", &["fn nearest_hit", "fn closest_hit"]),
         ],
     });
@@ -888,15 +891,7 @@ fn node_bvh(plan: &Plan, rows: &mut Vec<Row>, details: &mut String) {
         code: vec![
             Code::Items(
                 "src/lesson/node.rs",
-                &[
-                    "struct NodeTree",
-                    "impl NodeTree",
-                    "const LINEAR_NODES",
-                    "const TIE",
-                    "fn tie",
-                    "struct Closest",
-                    "impl Closest",
-                ],
+                &["struct NodeTree", "impl NodeTree", "const LINEAR_NODES", "struct Closest", "impl Closest"],
             ),
             Code::Items("src/lesson/scene.rs", &["fn prepared", "fn intersects"]),
         ],
@@ -985,7 +980,7 @@ fn bitmap_filtering(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
         ),
         verdict: noise_verdict(&v, &modeled(&bilinear)),
         code: vec![
-            Code::Items("src/lesson/bitmap.rs", &["fn neighbours", "fn wrapped_pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "fn decode", "enum Filter"]),
+            Code::Items("src/lesson/bitmap.rs", &["fn neighbours", "fn wrapped_pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "enum Filter"]),
             Code::Items("src/lesson/color.rs", &["fn srgb8_to_linear_table"]),
         ],
     });
@@ -1478,6 +1473,96 @@ fn deviations(rows: &mut Vec<Row>) {
     });
 }
 
+/// The deviations from the slides that are not steps, for the ledger's section "What stays in both readings":
+/// (row, where, the slides or the course, why it stays in both readings). `tests/workbook/deviations.rs` checks that
+/// every "Deviation" comment of `src/lesson` names a row of it or a step.
+const BOTH_READINGS: &[(&str, &str, &str, &str)] = &[
+    (
+        "robust-offsets",
+        "src/lesson/ray.rs (`Ray::spawn`), the reflection and refraction shaders",
+        "a new ray starts `1e-6` along the normal or the ray",
+        "a fixed offset is too large for a scene at 1e-4 and too small for one at 1e6 (DESIGN: scenes scaled by 1e-4..1e5 and moved 1e6 render the same picture); the offset by the hit's error bound is the guard that makes every reading's picture right at any scale",
+    ),
+    (
+        "centred-aa-pattern",
+        "src/lesson/adaptive_aa.rs",
+        "the course's five samples centred on (0.3, 0.3) of the pixel",
+        "the same pattern moved by 0.2 to centre on the pixel's centre, where the single sample of every other render goes: otherwise the refined pixels shift by 0.2 pixels against the rest",
+    ),
+    (
+        "srgb-output",
+        "src/lesson/color.rs, src/lesson/bitmap.rs (the 8-bit table)",
+        "the course's program reads and writes the codes as light, with no curve",
+        "images are sRGB: without the curve every picture is too dark and every texture too bright; `--encoding raw` renders the course's way. 8-bit texels are decoded by a table of the same curve (the curve, computed once), which is not the filter step's (`texel-filter` changes which texels are read, not how a code becomes light)",
+    ),
+    (
+        "unit-free-direction",
+        "src/lesson/environment.rs",
+        "`Environment::get` assumes a unit direction",
+        "only the direction matters; a shader's unnormalised direction (or a degenerate one) still gives a colour of the image instead of a wrong look-up or a NaN",
+    ),
+    (
+        "ear-clipping",
+        "src/lesson/geometry/polygon.rs",
+        "the course fan-triangulates a polygon",
+        "a fan is wrong for a concave polygon; for a convex one both give the same surface (not the same triangles)",
+    ),
+    (
+        "fov-axis",
+        "src/lesson/camera.rs",
+        "the course measures `fov` across the diagonal",
+        "an option (`--fov-axis`), whose first choice is the course's diagonal: nothing changes unless it is asked for",
+    ),
+    (
+        "blend-clamp",
+        "src/lesson/shader/layered.rs",
+        "`res = res * (1 - blend) + layer * blend` with any blend",
+        "a blend outside [0, 1] (a bright HDR image as a blend texture) would give a layer a negative or larger-than-one weight: light from nothing. Clamped to the range of an opacity; the examples' blends are within it, so their pictures do not change",
+    ),
+    (
+        "glossy-kept-samples",
+        "src/lesson/shader/reflection.rs",
+        "a sample under the surface must be caught (the slide does not say how)",
+        "such a sample is dropped and the average taken over the samples kept; should every one be dropped (grazing angles, low glossiness) the mirror ray is traced, so the surface never turns black",
+    ),
+    (
+        "branching-bound",
+        "src/lesson/branching.rs",
+        "every ray a shader asks for is traced",
+        "two averaging shaders facing each other branch N^depth rays per camera ray (a render that never ends); the core bounds a shading point's rays (section \"The branching bound\"), below the course's default `maxTraceDepth`, so the course's scenes and the examples trace exactly their rays",
+    ),
+    (
+        "tile-size",
+        "src/lesson/texture/bitmap.rs",
+        "the course's `scaling` of a bitmap texture",
+        "the same number, named `tile_size` for what it is (a checker's `scaling` multiplies u/v instead); a scene file's `scaling` is read unchanged",
+    ),
+    (
+        "pixel-streams",
+        "src/lesson/sampling.rs, src/lesson/rng.rs",
+        "the C library's global `rand()`",
+        "every random number comes from the pixel's own stream, so a picture is the same byte for byte whatever the thread count (DESIGN: deterministic output)",
+    ),
+    (
+        "wavelength-bands",
+        "src/lesson/spectral/mod.rs",
+        "each pass one spectral line, weighted by its colour",
+        "each pass a band of wavelengths, its colour the integral of the colour-matching functions over the band, so that the K colours add up to the light's colour exactly for any K (white light stays white)",
+    ),
+    (
+        "lamp-side-check",
+        "src/lesson/light.rs",
+        "the light loop tests the shading normal alone",
+        "a lamp is skipped when the shading normal and the surface's own normal disagree about its side (a smooth mesh near its silhouette), where it would light a point that faces away from it",
+    ),
+    (
+        "eta-ratio",
+        "src/lesson/math.rs",
+        "`refract`'s comment says `ior = eta2 / eta1`",
+        "the formula (and its caller, which passes `1 / ior` entering) uses incoming over outgoing; the parameter is named for what the formula needs. Nothing is computed differently",
+    ),
+];
+
 /// Step 11: camera-relative coordinates against world coordinates, on every example moved far away.
 fn camera_relative(all: &[Ex], rows: &mut Vec<Row>, details: &mut String) {
     eprintln!("camera-relative coordinates");
@@ -1567,6 +1652,11 @@ fn write_ledger(plan: &Plan, rows: &[Row], examples_table: &str, details: &str, 
     writeln!(doc).unwrap();
     writeln!(doc, "## `--slide` against the default, every example\n\nAt 320x240, the examples' default samples, one thread, both readings through the one renderer. The two readings differ where the default's steps change the picture: other random numbers (stratified pixel and disc samples, hero wavelengths against 8 passes), bilinear against nearest texels, the photon grid's estimate against the k nearest, and adaptive depth control (within a few levels, see step 1).\n\n{examples_table}").unwrap();
     doc.push_str(details);
+    writeln!(doc, "## What stays in both readings\n\nThe deviations from the slides and the course's program that are not steps: each runs under `--slide` as in the default, for the reason given. A comment in `src/lesson` that says \"Deviation\" names its row here (`ledger: NAME`) or the step it belongs to (`tests/workbook/deviations.rs`).\n\n| row | where | the slides or the course | why it stays in both readings |\n|---|---|---|---|").unwrap();
+    for (row, place, slides, why) in BOTH_READINGS {
+        writeln!(doc, "| `{row}` | {place} | {slides} | {why} |").unwrap();
+    }
+    writeln!(doc).unwrap();
     writeln!(doc, "## What the lines count\n\nNon-blank lines that are not comments, of the step's own items (code the step shares with the slide's version, such as the layered shader's loop that pruning works in, or the render loop that calls a sampler, is not counted):\n").unwrap();
     for row in rows.iter().filter(|row| !row.code.is_empty()) {
         let parts: Vec<String> = row.code.iter().map(|c| format!("{} ({})", describe_code(c), lines_of(c))).collect();

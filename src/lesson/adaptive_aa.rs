@@ -7,7 +7,7 @@
 //! (0.6, 0.6) from the pixel's corner, centred on (0.3, 0.3); here the same pattern is moved by 0.2 so that
 //! it centres on the pixel's centre, where the workbook's single sample goes: the first sample is the
 //! ordinary one through the centre, and the picture is not shifted by 0.2 pixels against the workbook's
-//! other renders.
+//! other renders (ledger: `centred-aa-pattern`).
 //!
 //! Samplers that spread their points over a whole pixel ([`PixelSample`]): every pixel is rendered as one
 //! that may get [`SAMPLES_PER_REFINED_PIXEL`] samples, the first pass tracing sample 0 of them and this
@@ -18,9 +18,10 @@ use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
 use crate::lesson::frame::Frame;
 use crate::lesson::observer::Observer;
-use crate::lesson::render::{RenderSettings, pixel_key};
-use crate::lesson::rng::Rng;
-use crate::lesson::scene::{Counters, PixelSample, Scene, TraceContext};
+use crate::lesson::render_settings::RenderSettings;
+use crate::lesson::rng::{Rng, pixel_key};
+use crate::lesson::sampling::PixelSample;
+use crate::lesson::scene::{Counters, Scene, TraceContext};
 use rayon::prelude::*;
 
 /// The largest difference from a neighbour (per channel, after clamping both to 1) a pixel may have

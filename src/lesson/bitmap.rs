@@ -81,11 +81,11 @@ enum Texels {
 }
 
 /// The brightest light an image may hold: the renderer adds the samples of a pixel before it averages them,
-/// and [`MAX_SPP`](crate::lesson::render::MAX_SPP) samples of up to this much light add up to a finite 32-bit number (an environment's light
+/// and [`MAX_SPP`](crate::lesson::frame::MAX_SPP) samples of up to this much light add up to a finite 32-bit number (an environment's light
 /// reaches a pixel as it is). 5.2e33, far above any real sky (the sun's disc in an HDR panorama is under
 /// 1e6); a Radiance pixel whose exponent byte is 255 (2^119 = 6.6e35 at least) or an EXR texel of 3e38 is
 /// beyond it.
-pub const MAX_IMAGE_LIGHT: f32 = f32::MAX / crate::lesson::render::MAX_SPP as f32;
+pub const MAX_IMAGE_LIGHT: f32 = f32::MAX / crate::lesson::frame::MAX_SPP as f32;
 
 /// An image in linear light, addressed by pixel or sampled by texture coordinates (slide "Bitmap текстури").
 #[derive(Clone, Debug)]

@@ -54,10 +54,10 @@
 //! skip the bookkeeping, and only what they bring back NaN or infinite is noted (`Shading`).
 
 use crate::lesson::color::Color;
-use crate::lesson::diagnostics::{Gains, Problems, Source};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::Node;
+use crate::lesson::problems::{Gains, Problems, Source};
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::scene::TraceContext;
 use crate::lesson::shader::Shader;

@@ -9,7 +9,8 @@
 //!
 //! Deviation: [`FovAxis`] lets `fov` be measured across the height or the width instead (`--fov-axis`). With
 //! the course's diagonal a wider picture shows less at the top and bottom (1920 x 1080 crops the top of the
-//! fresnel sphere that 640 x 480 shows); with `vertical` the vertical extent stays whatever the aspect ratio.
+//! fresnel sphere that 640 x 480 shows); with `vertical` the vertical extent stays whatever the aspect ratio
+//! (ledger: `fov-axis`).
 
 use crate::lesson::math::Vector;
 use crate::lesson::ray::Ray;

@@ -7,7 +7,7 @@
 //! read: see [`crate::lesson::bitmap`]) and the frame is encoded with [`linear_to_srgb`] when written.
 //!
 //! Deviation from the course: its lecture-6 program applies no curve at all, reading and writing the codes as
-//! light; `--encoding raw` renders its way ([`crate::files::encoding`]).
+//! light; `--encoding raw` renders its way ([`crate::files::encoding`]) (ledger: `srgb-output`).
 
 use glam::Vec3A;
 use std::ops::{Add, AddAssign, Div, Mul, MulAssign, Sub};

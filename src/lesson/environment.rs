@@ -47,7 +47,8 @@
 //! their extension (`posx.PNG`); all six must be square and of one size.
 //!
 //! Deviation from the slides: the direction is not assumed to be of unit length (only its direction
-//! matters), and a degenerate direction returns a colour of the image rather than failing.
+//! matters), and a degenerate direction returns a colour of the image rather than failing (ledger:
+//! `unit-free-direction`).
 
 use crate::files::encoding;
 use crate::lesson::beyond::Steps;

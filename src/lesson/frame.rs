@@ -7,6 +7,11 @@ use crate::lesson::error::Result;
 use rayon::prelude::*;
 use std::path::Path;
 
+/// The most anti-aliasing samples per pixel the renderer accepts: far beyond what a picture needs (the
+/// examples use 1 to 16; a reference for an error study a few thousand), low enough that a mistyped count
+/// is refused at once instead of rendering for days.
+pub const MAX_SPP: u32 = 1 << 16;
+
 /// A rendered picture in linear light, rows from the top.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Frame {

@@ -54,7 +54,7 @@ pub struct Lighting {
 /// Deviation from the slides: a lamp is skipped, with no shadow ray, when the shading normal and the
 /// surface's own normal disagree about which side it is on (a smooth mesh's interpolated normal near its
 /// silhouette): the slides' loop tests the shading normal alone, and such a lamp would light a point that
-/// faces away from it.
+/// faces away from it (ledger: `lamp-side-check`).
 #[inline(always)]
 pub fn light_loop(
     ctx: &mut TraceContext,

@@ -33,7 +33,7 @@ pub fn reflect(i: Vector, n: Vector) -> Vector {
 ///
 /// Deviation from the slide: the slide's comment says `ior = eta2 / eta1` but its formula (and its caller,
 /// which passes `1 / ior` when entering) uses the incoming-over-outgoing ratio; the name here says what the
-/// formula needs.
+/// formula needs (ledger: `eta-ratio`).
 #[inline(always)]
 pub fn refract(i: Vector, n: Vector, eta1_over_eta2: f32) -> Option<Vector> {
     exercise!(refract(i, n, eta1_over_eta2));

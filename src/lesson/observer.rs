@@ -1,10 +1,10 @@
 //! The renderer's one observation hook: how an instrument (the ray tree of `--trace-pixel`, the viewer's
 //! clicked pixel) watches the slides' recursion without being part of it.
 //!
-//! An [`Observer`] put into [`TraceContext::observer`] is told what the recursion does, by the core alone:
-//! [`TraceContext::raytrace`] reports every ray it traces, what the ray hits and what colour it brings back;
-//! the light loop ([`crate::lesson::light::light_loop`]) reports the light it finds at a surface point; and
-//! [`TraceContext::shade_layer`] reports the layers of a `Layered` shader; and the techniques of the slides
+//! An [`Observer`] put into `TraceContext::observer` is told what the recursion does, by the core alone:
+//! `TraceContext::raytrace` reports every ray it traces, what the ray hits and what colour it brings back;
+//! the light loop (`light::light_loop`) reports the light it finds at a surface point; and
+//! `TraceContext::shade_layer` reports the layers of a `Layered` shader; and the techniques of the slides
 //! say what they computed at the point being shaded (the Fresnel reflectance, a bitmap's texels, the photon
 //! estimate: [`crate::lesson::topic`]), which an observer hears as a [`Recorder`]. A shader never reports anything:
 //! a student's shader that traces its rays with `ctx.raytrace` and takes its light from the light loop is
@@ -17,16 +17,10 @@
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
-use crate::lesson::node::Node;
 use crate::lesson::ray::Ray;
-use crate::lesson::scene::Scene;
-use crate::lesson::shader::Layer;
 use crate::lesson::topic::Recorder;
 
-#[cfg(doc)]
-use crate::lesson::scene::TraceContext;
-
-/// Why [`TraceContext::raytrace`] did not follow a ray further.
+/// Why `TraceContext::raytrace` did not follow a ray further.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stop {
     /// It hit nothing: its colour is the environment's.
@@ -38,7 +32,7 @@ pub enum Stop {
     /// It was deeper than the recursion safety cap: black.
     SafetyCap,
     /// Its shading point had used its budget of rays: its traced siblings' mean colour (see
-    /// [`crate::lesson::branching`]).
+    /// `branching.rs`).
     Shared,
 }
 
@@ -56,7 +50,7 @@ impl std::fmt::Display for Stop {
 
 /// A term of the light loop's sum at the surface point being shaded, found without tracing a ray for it:
 /// the ambient light, a lamp (with its shadow ray), the photon map's caustic light, or a shader's highlight.
-/// Not a light of the scene: those are [`crate::lesson::light::PointLight`]s.
+/// Not a light of the scene: those are `PointLight`s (`light.rs`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightTerm {
     /// The scene's ambient light (irradiance).
@@ -102,13 +96,15 @@ impl LightTerm {
 pub trait Observer: Recorder {
     /// `raytrace` starts tracing `ray`.
     fn ray_begins(&mut self, _ray: &Ray) {}
-    /// The ray being traced hit `node` of `scene`, as `info` describes; its shader is about to run.
-    fn ray_hits(&mut self, _scene: &Scene, _node: &Node, _info: &IntersectionInfo) {}
+    /// The ray being traced hit the node named `node` (its name in the scene, `Scene::node_name`), whose
+    /// shader is called `shader`, as `info` describes; the shader is about to run.
+    fn ray_hits(&mut self, _node: &str, _shader: &'static str, _info: &IntersectionInfo) {}
     /// The light loop found the term `light`, of colour `color`, at the point being shaded.
     fn light_found(&mut self, _light: LightTerm, _color: Color) {}
-    /// A `Layered` shader starts shading `layer` at the point being shaded; the layer's shader sees `ray`
-    /// (whose weight the layer's may scale).
-    fn layer_begins(&mut self, _layer: &Layer, _ray: &Ray) {}
+    /// A `Layered` shader starts shading a layer at the point being shaded: the layer's shader, called
+    /// `shader`, blended by the texture called `blend_texture` if it has one, sees `ray` (whose weight the
+    /// layer's may scale).
+    fn layer_begins(&mut self, _shader: &'static str, _blend_texture: Option<&'static str>, _ray: &Ray) {}
     /// ... and is done with it: the layer's shader returned `color`, which counts `weight` times.
     fn layer_ends(&mut self, _color: Color, _weight: Color) {}
     /// The slide's Layered loop covers the layers it has shaded so far at this point with the next one, of

@@ -1,4 +1,4 @@
-//! The scene made ready for tracing (beyond the slides): what [`Scene::prepared`] works out once from a
+//! The scene made ready for tracing (beyond the slides): what the scene's `prepared` works out once from a
 //! complete scene instead of again for every ray.
 //!
 //! - the BVH over the nodes ([`NodeTree`]), for scenes with more than a few of them, when they take that
@@ -16,10 +16,7 @@ use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::geometry::Aabb;
 use crate::lesson::node::{Node, NodeTree};
 
-#[cfg(doc)]
-use crate::lesson::scene::Scene;
-
-/// What [`Scene::prepared`] works out once from the nodes.
+/// What the scene's `prepared` works out once from the nodes.
 pub(crate) struct Preparation {
     /// The BVH over the nodes, if there are enough of them for one to pay and the scene takes that step.
     pub(crate) node_tree: Option<NodeTree>,

@@ -4,7 +4,7 @@
 //! factors along its path, for adaptive ray-tree depth control), and `wavelength`, set for the passes of a
 //! dispersive render.
 
-use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::geometry::intersection::IntersectionInfo;
 use crate::lesson::math::{Vector, offset_ray_origin};
 
 /// A ray: where it starts, where it goes and how deep in the ray tree it is.

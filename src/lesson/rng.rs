@@ -89,3 +89,18 @@ pub fn shuffled_index(i: u32, n: u32, key: u32) -> u32 {
     }
     x
 }
+
+/// A salt for the pixels' sample-set keys, so that they are unrelated to the seeds of the pixels' streams.
+const SAMPLE_SET_KEY: u64 = 0x5345_5453_414d_504c;
+
+/// The `PixelSample::pixel_key` of the pixel (or wavelength pass of a pixel) whose random stream is keyed
+/// by `stream_keys` (see [`Rng::for_keys`]). The adaptive anti-aliasing pass asks for it again to give a
+/// refined pixel's extra samples the same set.
+pub fn pixel_key(stream_keys: &[u64]) -> u64 {
+    pixel_key_of(key_of(stream_keys))
+}
+
+/// [`pixel_key`] from the stream's key word ([`key_of`] of its keys), found once for both.
+pub(crate) fn pixel_key_of(stream_key: u64) -> u64 {
+    mix64(stream_key ^ SAMPLE_SET_KEY)
+}

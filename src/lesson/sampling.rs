@@ -30,11 +30,27 @@
 //!
 //! Deviation from the slide: the slide draws from the C library's global `rand()`; here every point comes
 //! from the pixel's own deterministic stream (`ctx.rng`) or its key, so pictures do not depend on the thread
-//! count.
+//! count (ledger: `pixel-streams`).
 
 use crate::lesson::rng::{Rng, mix64, shuffled_index};
-use crate::lesson::scene::PixelSample;
 use std::f32::consts::FRAC_PI_4;
+
+/// Which of its pixel's camera samples is being traced: sample `index` of the `count` the pixel gets. A
+/// shader that takes many samples of its own (a glossy mirror's disc points) can spread them over the whole
+/// pixel with it, one well-distributed set for all the pixel's camera samples instead of one per camera ray
+/// (see [`crate::lesson::sampling::DiscSampler::Joint`]). Shaders that do not need it ignore it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PixelSample {
+    /// This camera sample's index, `0..count`.
+    pub index: u32,
+    /// How many camera samples the pixel gets in all: the `spp`, or, under the course's adaptive
+    /// anti-aliasing, the most a pixel may get ([`crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL`]): a pixel
+    /// that is never refined uses only sample 0 of them.
+    pub count: u32,
+    /// A random word of the pixel (and of the wavelength pass), the same for all its camera samples and
+    /// unrelated to its neighbours': what a sampler randomises its pixel-wide set with.
+    pub pixel_key: u64,
+}
 
 /// How the points in the unit disc are chosen.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

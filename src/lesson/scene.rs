@@ -17,7 +17,6 @@ use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
-use crate::lesson::diagnostics::{Problems, Source};
 use crate::lesson::environment::Environment;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::{Geometry, Hit, IntersectionInfo};
@@ -27,10 +26,13 @@ use crate::lesson::node::{Node, NodeTree, any_of, closest_of, nearest_of};
 use crate::lesson::observer::{Observer, Stop};
 use crate::lesson::photon_map::{PhotonMap, PhotonSettings};
 use crate::lesson::prepared::Preparation;
+use crate::lesson::problems::{Problems, Source};
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::rng::Rng;
+pub use crate::lesson::sampling::PixelSample;
 use crate::lesson::shader::{Layer, MAX_SHADES_PER_HIT, Shader, shades_per_hit};
 use crate::lesson::spectral::Illuminant;
+use crate::lesson::texture::Texture;
 use crate::lesson::topic::Recorder;
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -195,20 +197,6 @@ impl Scene {
         Ok(())
     }
 
-    /// Whether a photon map can add light to this scene: some node is a caustic caster (a mirror or glass,
-    /// [`crate::lesson::shader::is_caustic_caster`]) and some light shines on it. A question about the
-    /// scene's nodes and lights, not a setting: `photons.count` says whether the map is made.
-    pub fn can_have_caustics(&self) -> bool {
-        crate::lesson::photon_map::Emitter::new(self, 1, 0).is_some()
-    }
-
-    /// The old name of [`Scene::can_have_caustics`].
-    #[deprecated(note = "renamed `can_have_caustics`: whether a photon map can add light to the scene (a shader's \
-                         own question is `shader::is_caustic_caster`)")]
-    pub fn casts_caustics(&self) -> bool {
-        self.can_have_caustics()
-    }
-
     /// Whether some node's shader depends on the wavelength ([`crate::lesson::shader::Shader::is_dispersive`]):
     /// only then does the renderer trace wavelengths. A shader that reads `ray.wavelength` without saying so
     /// is traced in white light; the end-of-run report names it ([`crate::lesson::diagnostics`]).
@@ -256,7 +244,7 @@ impl Scene {
 
     /// The BVH over the nodes, if the scene was prepared with one ([`Scene::prepared`]).
     #[inline(always)]
-    fn node_tree(&self) -> Option<&NodeTree> {
+    fn tree(&self) -> Option<&NodeTree> {
         self.preparation.as_ref().and_then(|p| p.node_tree.as_ref())
     }
 
@@ -286,7 +274,7 @@ impl Scene {
     /// [`Scene::nearest_hit`], the node given by its index.
     #[inline(always)]
     fn nearest_hit_index(&self, ray: &Ray) -> Option<(Hit, usize)> {
-        match self.node_tree() {
+        match self.tree() {
             Some(tree) => tree.nearest_of(&self.nodes, ray),
             None => nearest_of(&self.nodes, ray),
         }
@@ -335,7 +323,7 @@ impl Scene {
         if !self.steps.has(Step::TwoPhaseHit) {
             return self.nodes.iter().any(|node| node.intersect(ray, t_max).is_some());
         }
-        match self.node_tree() {
+        match self.tree() {
             Some(tree) => tree.intersects(&self.nodes, ray, t_max),
             None => any_of(&self.nodes, ray, t_max),
         }
@@ -380,23 +368,6 @@ impl Counters {
         self.non_finite_samples += other.non_finite_samples;
         self.problems.add(&other.problems);
     }
-}
-
-/// Which of its pixel's camera samples is being traced: sample `index` of the `count` the pixel gets. A
-/// shader that takes many samples of its own (a glossy mirror's disc points) can spread them over the whole
-/// pixel with it, one well-distributed set for all the pixel's camera samples instead of one per camera ray
-/// (see [`crate::lesson::sampling::DiscSampler::Joint`]). Shaders that do not need it ignore it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PixelSample {
-    /// This camera sample's index, `0..count`.
-    pub index: u32,
-    /// How many camera samples the pixel gets in all: the `spp`, or, under the course's adaptive
-    /// anti-aliasing, the most a pixel may get ([`crate::lesson::adaptive_aa::SAMPLES_PER_REFINED_PIXEL`]): a pixel
-    /// that is never refined uses only sample 0 of them.
-    pub count: u32,
-    /// A random word of the pixel (and of the wavelength pass), the same for all its camera samples and
-    /// unrelated to its neighbours': what a sampler randomises its pixel-wide set with.
-    pub pixel_key: u64,
 }
 
 /// The state a shader sees while one pixel is being rendered.
@@ -564,7 +535,7 @@ impl<'a> TraceContext<'a> {
     ) -> (Color, Option<Stop>) {
         let scene = self.scene;
         let node = &scene.nodes[i];
-        self.tell::<WATCHED>(|o| o.ray_hits(scene, node, info));
+        self.tell::<WATCHED>(|o| o.ray_hits(&scene.node_name(node), node.shader.name(), info));
         self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
         if node.is_workbook() {
             return (self.shade_workbook_hit(i, ray, info), None);
@@ -602,7 +573,7 @@ impl<'a> TraceContext<'a> {
     /// `layer.shader.shade(ray, info, ctx) * weight`; going through the context lets an instrument show each
     /// layer's share of the colour.
     pub fn shade_layer(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
-        self.observe(|o| o.layer_begins(layer, ray));
+        self.observe(|o| o.layer_begins(layer.shader.name(), layer.blend_tex.as_ref().map(Texture::name), ray));
         self.begin_layer(ray);
         let color = layer.shader.shade(ray, info, self);
         self.observe(|o| o.layer_ends(color, weight));

@@ -16,6 +16,7 @@ mod command_line;
 mod course_look;
 mod cubemap_layout;
 mod determinism;
+mod deviations;
 mod diagnostics;
 mod dispersion;
 mod edge_cases;

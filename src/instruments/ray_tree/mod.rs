@@ -42,13 +42,10 @@ use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
-use crate::lesson::node::Node;
 use crate::lesson::observer::{LightTerm, Observer, Stop};
 use crate::lesson::ray::Ray;
 use crate::lesson::render::{RenderSettings, render_pixel};
 use crate::lesson::scene::{Counters, Scene};
-use crate::lesson::shader::{Layer, Shader};
-use crate::lesson::texture::Texture;
 use crate::lesson::topic::{Recorder, Topic};
 
 /// What kind of ray a record is, seen from the surface that sent it.
@@ -368,15 +365,10 @@ impl Observer for RayTree {
         self.fixed.push(Vec::new());
     }
 
-    fn ray_hits(&mut self, scene: &Scene, node: &Node, info: &IntersectionInfo) {
-        let name = scene.node_name(node);
+    fn ray_hits(&mut self, node: &str, shader: &'static str, info: &IntersectionInfo) {
         if let Some(&(id, _)) = self.open.last() {
-            self.rays[id].hit = Some(Hit {
-                node: name,
-                distance: info.distance,
-                shader: node.shader.name(),
-                normal: info.geometric_normal,
-            });
+            self.rays[id].hit =
+                Some(Hit { node: node.to_string(), distance: info.distance, shader, normal: info.geometric_normal });
         }
     }
 
@@ -384,9 +376,9 @@ impl Observer for RayTree {
         self.push_term(TermKind::Light { kind: light, color }, !light.is_irradiance());
     }
 
-    fn layer_begins(&mut self, layer: &Layer, ray: &Ray) {
-        let source = layer.blend_tex.as_ref().map_or(String::new(), |tex| format!(", blend {}", tex.name()));
-        let label = format!("layer {}{source}", layer.shader.name());
+    fn layer_begins(&mut self, shader: &'static str, blend_texture: Option<&'static str>, ray: &Ray) {
+        let source = blend_texture.map_or(String::new(), |name| format!(", blend {name}"));
+        let label = format!("layer {shader}{source}");
         if let Some((id, scopes)) = self.open.last_mut() {
             scopes.push(Scope { label, first: self.rays[*id].terms.len(), weight: ray.weight });
         }

@@ -59,10 +59,12 @@
 //!   `--gamut` says of the picture).
 
 pub mod all_directions;
+mod build;
 mod emitter;
 mod grid;
 pub mod kd_tree;
 
+pub use build::{default_radius, min_radius};
 pub use emitter::{Emitter, strength, trace_photons};
 
 use crate::lesson::beyond::Step;
@@ -70,8 +72,6 @@ use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::Aabb;
 use crate::lesson::math::Vector;
-use crate::lesson::scene::Scene;
-use crate::lesson::shader::Shader;
 use crate::lesson::spectral::clip_to_gamut;
 use crate::lesson::topic::{PhotonSeen, Recorder, Topic, record};
 use grid::{CELLS_PER_RADIUS, Found, PhotonGrid, SEARCH_FRACTIONS};
@@ -183,55 +183,6 @@ thread_local! {
 }
 
 impl PhotonMap {
-    /// Builds the scene's photon map as its `photons` settings and its steps say, on the current rayon
-    /// pool: the slide's ([`all_directions`], a k-d tree) or, with [`Step::PhotonGrid`], photons aimed at the
-    /// casters in a grid. `None` when the settings ask for no photons or the scene has nothing that casts
-    /// caustics.
-    pub fn build(scene: &Scene, seed: u64) -> Result<Option<PhotonMap>> {
-        let settings = scene.photons;
-        settings.check()?;
-        if settings.count == 0 {
-            return Ok(None);
-        }
-        let grid = scene.steps.has(Step::PhotonGrid);
-        let start = Instant::now();
-        let (photons, emitted) = if grid {
-            let Some(emitter) = Emitter::new(scene, settings.count, seed) else {
-                return Ok(None);
-            };
-            (trace_photons(&scene.prepared(), &emitter, seed), settings.count as u64)
-        } else {
-            let casters = scene.nodes.iter().any(|node| node.shader.caustic_caster().is_some());
-            if !casters || scene.lights.is_empty() {
-                return Ok(None);
-            }
-            all_directions::shoot_photons(&scene.prepared(), settings.count, seed)
-        };
-        let trace_time = start.elapsed();
-        // A radius below the scene's floor cannot tell photons apart: refused when asked for, and the default
-        // raised to it (only in a tiny scene far from the camera).
-        let floor = min_radius(scene, &photons);
-        let max_radius = match settings.max_radius {
-            Some(r) if r < floor => {
-                return Err(Error::parameter(
-                    "photon radius",
-                    format!("{r:e}"),
-                    format!(
-                        "below {floor:.3e}, the smallest this scene can resolve: its coordinates are 32-bit \
-                         floats spaced about {:.1e} apart at its size",
-                        floor / CELLS_PER_RADIUS
-                    ),
-                ));
-            }
-            Some(r) => r,
-            None => default_radius(scene, &photons).max(floor),
-        };
-        let mut map = PhotonMap::with_lookup(photons, settings.k, max_radius, settings.show, grid)?;
-        map.stats.emitted = emitted.min(u32::MAX as u64) as u32;
-        map.stats.trace_time = trace_time;
-        Ok(Some(map))
-    }
-
     /// A map of the given photons: sorts them into the grid.
     pub fn new(photons: Vec<StoredPhoton>, k: u32, max_radius: f32, show: bool) -> Result<PhotonMap> {
         PhotonMap::with_lookup(photons, k, max_radius, show, true)
@@ -374,29 +325,4 @@ impl PhotonMap {
 /// Every estimate ends here: the map's own, the slides' reading's and a student's in the graded exercise.
 pub fn arriving_light(estimate: Color) -> Color {
     clip_to_gamut(estimate)
-}
-
-/// The box around the scene's bounded objects (or, if none is bounded, around the photons).
-fn scene_box(scene: &Scene, photons: &[StoredPhoton]) -> Aabb {
-    let corners: Vec<Vector> = scene.nodes.iter().filter_map(|n| n.bounds()).flat_map(|b| [b.min, b.max]).collect();
-    if corners.is_empty() { Aabb::from_points(photons.iter().map(|p| p.position)) } else { Aabb::from_points(corners) }
-}
-
-/// The smallest maximum radius a scene can use: four times (the grid's cells per radius) the spacing of
-/// 32-bit floats at the scene's largest coordinate (its box's, see [`default_radius`]), so that a cell of the
-/// photon grid is at least as wide as the rounding of the positions it sorts. A smaller radius could not
-/// tell photons apart; `--radius 1e-20` is refused instead of building a grid of no use.
-pub fn min_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
-    let bounds = scene_box(scene, photons);
-    let largest = bounds.min.abs().max(bounds.max.abs()).max_element();
-    if largest.is_finite() { CELLS_PER_RADIUS * largest * f32::EPSILON } else { 0.0 }
-}
-
-/// The default maximum radius: 1/100 of the diagonal of the box around the scene's bounded objects (or, if
-/// none is bounded, around the photons).
-pub fn default_radius(scene: &Scene, photons: &[StoredPhoton]) -> f32 {
-    let bounds = scene_box(scene, photons);
-    let diagonal = (bounds.max - bounds.min).length();
-    // A box of no size holds at most one point: any radius finds it.
-    if diagonal.is_finite() && diagonal > 0.0 { diagonal / 100.0 } else { 1.0 }
 }

@@ -18,7 +18,8 @@
 //! shader to the slide's loop whatever the steps.
 //!
 //! Deviation from the slide: a blend (colour times texture) is clamped to [0, 1], the range of an opacity,
-//! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight.
+//! so a bright HDR image used as a blend texture cannot give a layer a negative or larger-than-one weight
+//! (ledger: `blend-clamp`).
 
 use super::{CausticCaster, IntoShader, Material, PhotonScatter, Shader, is_caustic_caster, scatter_photon};
 use crate::lesson::beyond::Step;

@@ -15,10 +15,12 @@
 //! already blurred, and the ray count would otherwise multiply at every level.
 //!
 //! Deviations from the slides:
-//! - the start point is offset by the hit point's error bound ([`Ray::spawn`]) instead of `1e-6 * n`;
+//! - the start point is offset by the hit point's error bound ([`Ray::spawn`]) instead of `1e-6 * n` (ledger:
+//!   `robust-offsets`);
 //! - a sample under the surface is dropped and the average is taken over the samples kept (the slide only
 //!   says it must be caught). Should every sample of a shading point be dropped (possible at grazing angles
-//!   with a low glossiness), the exact mirror ray is traced instead, so the surface never turns black;
+//!   with a low glossiness), the exact mirror ray is traced instead, so the surface never turns black
+//!   (ledger: `glossy-kept-samples`);
 //! - a step beyond the slide ([`Step::DiscSamples`]): the disc points may be stratified over the whole
 //!   pixel ([`DiscSampler::Joint`], the default: the `num_samples` points of each camera ray are one block of
 //!   a set shared by all the pixel's camera rays) or per shading point ([`DiscSampler::Stratified`]) rather
@@ -29,11 +31,11 @@
 //!   [`crate::lesson::branching`]): two white glossy mirrors facing each other would otherwise trace 2^depth
 //!   rays for each camera ray (2^60 for `maxTraceDepth 60`, a render that never ends), since a white
 //!   mirror's rays keep their full weight and are never pruned. The split depth is the course's default
-//!   `maxTraceDepth`, so its scenes trace exactly the course's rays;
+//!   `maxTraceDepth`, so its scenes trace exactly the course's rays (ledger: `branching-bound`);
 //! - each spawned ray's `weight` is scaled by the full multiplier, not by its 1/N share of the average, as
 //!   every averaging shader does for adaptive depth control (`Scene::min_ray_weight`): pruning the samples
 //!   of an average by their share would darken the picture more the larger `num_samples` is, so that more
-//!   samples would converge to a different picture.
+//!   samples would converge to a different picture (the step `adaptive-depth`).
 
 use super::{CausticCaster, ColorSource, Material, PhotonScatter, Shader};
 use crate::lesson::beyond::Step;

@@ -9,7 +9,8 @@
 //! uses the index at the ray's wavelength, and white rays (no wavelength) see n_d.
 //!
 //! Deviation from the slides: the new ray starts at the hit point offset by its error bound to the side the
-//! refracted ray goes to ([`Ray::spawn`](crate::lesson::ray::Ray::spawn)), instead of `1e-6 * ray.dir`.
+//! refracted ray goes to ([`Ray::spawn`](crate::lesson::ray::Ray::spawn)), instead of `1e-6 * ray.dir` (ledger:
+//! `robust-offsets`).
 
 use super::{CausticCaster, Material, PhotonScatter, Shader};
 use crate::lesson::color::Color;

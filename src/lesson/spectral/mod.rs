@@ -25,7 +25,7 @@
 //!
 //! Deviations from the slide: each pass stands for a *band* of wavelengths (its colour is the integral of the
 //! colour-matching functions over the band, traced at the band's centre) rather than one spectral line, so
-//! that the K colours add up to the light's colour exactly for any K.
+//! that the K colours add up to the light's colour exactly for any K (ledger: `wavelength-bands`).
 
 pub mod cie;
 pub mod colour;

@@ -5,7 +5,7 @@
 //!
 //! Deviation from the course: its program and its scene files call the tile size `scaling`. The workbook
 //! names it for what it is, because a checker's `scaling` ([`super::CheckerTexture`]) multiplies u/v
-//! instead; a scene file's `scaling` is read as the tile size, unchanged.
+//! instead; a scene file's `scaling` is read as the tile size, unchanged (ledger: `tile-size`).
 
 use super::{Tex, Texture};
 use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
