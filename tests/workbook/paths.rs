@@ -1,15 +1,11 @@
 //! Every path of the workbook that the README, the docs, the examples and the doc comments cite exists, so
-//! that none goes stale when a file moves. History documents are left out: docs/speed.md names the files of
-//! the commits it measured.
+//! that none goes stale when a file moves.
 
 use crate::common::root;
 use std::path::{Path, PathBuf};
 
 /// The workbook's top-level folders, whose paths are checked.
 const FOLDERS: [&str; 8] = ["src", "tests", "benches", "examples", "docs", "textures", "expected", "exercises"];
-
-/// Documents that record the past, with the paths of their time.
-const HISTORY: [&str; 1] = ["docs/speed.md"];
 
 /// The text files to read: the README, docs/, examples/, src/, tests/, benches/ and exercises/.
 fn files() -> Vec<PathBuf> {
@@ -27,7 +23,6 @@ fn files() -> Vec<PathBuf> {
     for folder in ["docs", "examples", "src", "tests", "benches", "exercises/src", "exercises/tests"] {
         walk(&root().join(folder), &mut out);
     }
-    out.retain(|p| !HISTORY.iter().any(|h| p.ends_with(h)));
     out
 }
 
