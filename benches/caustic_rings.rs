@@ -6,9 +6,9 @@
 //!
 //! ```sh
 //! cargo bench --bench caustic_rings                            # 0.4, 1.6 and 6.4 M photons, k = 80
-//! cargo bench --bench caustic_rings -- --photons 6400000 --k 80,20,5 --seeds 4
 //! cargo bench --bench caustic_rings -- --every-ring            # each ring's error
-//! cargo bench --bench caustic_rings -- --rings 50 --seeds 8    # the centre only, averaged over 8 maps
+//! cargo bench --bench caustic_rings -- --photons 400000 --seeds 32 --rings 50 --k 80,20,5
+//!                                    # the centre only, 32 maps of their own seeds averaged, 3 values of k
 //! cargo bench --bench caustic_rings -- -- --no-step photon-grid  # the example's own options after `--`
 //! ```
 
@@ -42,7 +42,7 @@ struct Args {
     #[arg(long, default_value_t = 1)]
     seeds: u64,
     /// Estimates along each ring's circles are this far apart.
-    #[arg(long, default_value_t = 0.04)]
+    #[arg(long, default_value_t = 0.1)]
     spacing: f64,
     /// Only the first this many rings (the centre's, for a quick look).
     #[arg(long)]
