@@ -628,12 +628,29 @@ fn main() {
     disc_samples(&plan, &all, &mut rows, &mut details);
     hero_wavelengths(&plan, &all, &mut rows, &mut details);
     photon_map(&plan, &all, &mut rows, &mut details);
+    details.push_str(&kept_section(CAUSTIC_REFERENCE));
     layer_pruning(&plan, &all, &mut rows, &mut details);
     camera_relative(&all, &mut rows, &mut details);
     branching_bound(&readings, &mut rows, &mut details);
     end_of_run_report(&plan, &all, &readings, &mut rows, &mut details);
     deviations(&mut rows);
     write_ledger(&plan, &rows, &readings.table, &details, started.elapsed().as_secs_f64());
+}
+
+/// The heading of the section on the caustic against its independent reference, written from the figures of
+/// `benches/caustic_rings.rs` (the reference light tracer, `benches/caustic_reference.rs`, takes far longer
+/// than this ledger): the ledger keeps it as it finds it.
+const CAUSTIC_REFERENCE: &str = "## The caustic against an independent light tracer\n";
+
+/// The section of the ledger now in `docs/beyond-the-slides.md` that starts with `heading`, up to the next
+/// section; empty if there is none.
+fn kept_section(heading: &str) -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/beyond-the-slides.md");
+    let doc = std::fs::read_to_string(path).unwrap_or_default();
+    let Some(start) = doc.find(heading) else { return String::new() };
+    let section = &doc[start..];
+    let end = section[heading.len()..].find("\n## ").map_or(section.len(), |i| heading.len() + i + 1);
+    section[..end].to_string()
 }
 
 /// What the runs of every example in both readings give the other rows: the table of `--slide` against

@@ -12,6 +12,7 @@ mod bad_input;
 mod beyond;
 mod branching;
 mod captions;
+mod caustic_reference;
 mod command_line;
 mod course_look;
 mod cubemap_layout;

@@ -6,6 +6,7 @@
 
 use lecture6::app::cli::{Cli, Example};
 
+pub mod caustic;
 #[macro_use]
 pub mod examples;
 pub mod hidden;
