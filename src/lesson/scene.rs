@@ -572,10 +572,22 @@ impl<'a> TraceContext<'a> {
     /// times the layer's `weight` there (its blend, times what the layers above it let through). The same as
     /// `layer.shader.shade(ray, info, ctx) * weight`; going through the context lets an instrument show each
     /// layer's share of the colour.
+    #[inline(always)]
     pub fn shade_layer(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
+        if self.observer.is_some() {
+            return self.shade_layer_watched(layer, ray, info, weight);
+        }
+        self.begin_layer(ray);
+        layer.shader.shade_layer(ray, info, self) * weight
+    }
+
+    /// [`TraceContext::shade_layer`], telling the observer where the layer begins and ends (kept out of the
+    /// unwatched render's loop).
+    #[inline(never)]
+    fn shade_layer_watched(&mut self, layer: &Layer, ray: &Ray, info: &IntersectionInfo, weight: Color) -> Color {
         self.observe(|o| o.layer_begins(layer.shader.name(), layer.blend_tex.as_ref().map(Texture::name), ray));
         self.begin_layer(ray);
-        let color = layer.shader.shade(ray, info, self);
+        let color = layer.shader.shade_layer(ray, info, self);
         self.observe(|o| o.layer_ends(color, weight));
         color * weight
     }

@@ -47,17 +47,41 @@ impl Material {
     }
 }
 
-impl Shader for Material {
+impl Material {
+    /// The colour the shader gives the hit: the one dispatch of a node's or a layer's shader. `IN_LAYER` is
+    /// the dispatch of a layer's shader ([`Material::shade_layer`]), where a `Layered` among the layers is
+    /// shaded by a call, so that the dispatch does not call itself and the compiler can make the shading of
+    /// a hit, its layers included, one piece of code.
     #[inline(always)]
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+    fn dispatch<const IN_LAYER: bool>(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
             Material::Lambert(lambert) => lambert.shade(ray, info, ctx),
             Material::Phong(phong) => phong.shade(ray, info, ctx),
             Material::Reflection(mirror) => mirror.shade(ray, info, ctx),
             Material::Refraction(refraction) => refraction.shade(ray, info, ctx),
+            Material::Layered(layered) if IN_LAYER => shade_nested(layered, ray, info, ctx),
             Material::Layered(layered) => layered.shade(ray, info, ctx),
             Material::Own(shader) => shader.shade(ray, info, ctx),
         }
+    }
+
+    /// The colour a layer's shader gives the hit (what [`Shader::shade`] gives).
+    #[inline(always)]
+    pub(crate) fn shade_layer(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.dispatch::<true>(ray, info, ctx)
+    }
+}
+
+/// A `Layered` shader among the layers of another, shaded by a call ([`Material::dispatch`]).
+#[inline(never)]
+fn shade_nested(layered: &Layered, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+    layered.shade(ray, info, ctx)
+}
+
+impl Shader for Material {
+    #[inline(always)]
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        self.dispatch::<false>(ray, info, ctx)
     }
 
     fn caustic_caster(&self) -> Option<&dyn CausticCaster> {

@@ -184,7 +184,7 @@ impl ColorSource {
     /// steps: one texel of a bitmap under `--slide`, its filter otherwise), what the texture computed told to
     /// the ray tree when one watches. The course's shaders read their colours so; a shader of a student's
     /// may too.
-    #[inline]
+    #[inline(always)]
     pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
             ColorSource::Color(c) => *c,
