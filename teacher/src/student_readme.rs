@@ -48,7 +48,9 @@ pub fn readme(workbook_readme: &str, handed_out: &[String]) -> String {
          \x20 `target/exercises/`). A picture uses several exercises: fix the failing facts first.\n\
          - `every fact holds; the picture ... also needs ...`: the picture needs other exercises not written yet,\n\
          \x20 all of them named; write those, and the picture is checked.\n\
-         - `not handed out`: not one of yours; the workbook's own function is used.\n\
+         - `not handed out`: not one of yours; the workbook's own function is used. One of yours left out of\n\
+         \x20 `HANDED_OUT` in `exercises/src/lib.rs` says that this copy does not hold the workbook's own: put it\n\
+         \x20 back, and write it.\n\
          \n\
          More in [docs/exercises.md](docs/exercises.md): each exercise's slide, the facts checked, the time limit.\n\
          \n\
