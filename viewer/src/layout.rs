@@ -10,7 +10,7 @@
 //! column. The status (the camera, the status line, a message) is a band of a fixed height across the
 //! bottom.
 
-use eframe::egui::{Rect, Vec2, pos2, vec2};
+use eframe::egui::{Rect, Vec2, pos2};
 
 /// The least share of the window's width the picture's area keeps, with every panel open.
 pub const PICTURE_SHARE: f32 = 0.6;
@@ -80,14 +80,15 @@ pub fn fitted(size: Vec2, area: Rect) -> Rect {
     Rect::from_center_size(area.center(), size * scale)
 }
 
-/// A window of `pixels` at the interface scale `ui_scale`, in points.
-pub fn points(pixels: Vec2, ui_scale: f32) -> Vec2 {
-    pixels / ui_scale
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use eframe::egui::vec2;
+
+    /// A window of `pixels` at the interface scale `ui_scale`, in points.
+    fn points(pixels: Vec2, ui_scale: f32) -> Vec2 {
+        pixels / ui_scale
+    }
 
     /// The status band's height in egui's default style: three rows of an interactive widget and the space
     /// below it (18 + 3 points), and the panel's margins.
