@@ -1,7 +1,8 @@
 //! How the workbook's renderer asks for a student's answer: not an exercise. Built for the exercises (the
 //! workbook's feature `exercises`), each slide function an exercise covers starts by asking its [`Hook`]
 //! ([`answer`]); the grader draws a picture around the blanks ([`drawing_around_blanks`]) or with the
-//! workbook's own functions ([`drawing_with_the_workbooks_own`]). It lives here, beside the exercises, so
+//! workbook's own functions ([`drawing_with_the_workbooks_own`]), and its own tests list the functions a
+//! picture asks for ([`drawing_and_listing_hooks`]). It lives here, beside the exercises, so
 //! that the workbook's lesson holds the slides' code and nothing else (the workbook's
 //! `src/lesson/exercise_hooks.rs` turns its types into these and back).
 
@@ -40,6 +41,13 @@ static AROUND_BLANKS: AtomicBool = AtomicBool::new(false);
 /// Whether every hook answers with the workbook's own function now (see [`drawing_with_the_workbooks_own`]).
 static WORKBOOKS_OWN: AtomicBool = AtomicBool::new(false);
 
+/// Whether every hook answers with the workbook's own function and notes who asked, now (see
+/// [`drawing_and_listing_hooks`]).
+static LISTING: AtomicBool = AtomicBool::new(false);
+
+/// The functions of the workbook's hooks asked during the current [`drawing_and_listing_hooks`].
+static ASKED: Mutex<Vec<&'static str>> = Mutex::new(Vec::new());
+
 /// The hooks met blank during the current [`drawing_around_blanks`].
 static MET: Mutex<Vec<&'static Hook>> = Mutex::new(Vec::new());
 
@@ -48,6 +56,15 @@ static MET: Mutex<Vec<&'static Hook>> = Mutex::new(Vec::new());
 /// remembered, and answered with the workbook's own function (`None`) from then on, so that the render
 /// goes on and meets every other blank it needs.
 pub fn answer<T>(hook: &'static Hook, handed_out: bool, student: impl FnOnce() -> T) -> Option<T> {
+    if LISTING.load(Relaxed) {
+        // The student's function is a closure defined in the hook's function: its type names that function.
+        let asker = std::any::type_name_of_val(&student);
+        let mut asked = ASKED.lock().unwrap_or_else(|e| e.into_inner());
+        if !asked.contains(&asker) {
+            asked.push(asker);
+        }
+        return None;
+    }
     if !handed_out || WORKBOOKS_OWN.load(Relaxed) {
         return None;
     }
@@ -104,6 +121,16 @@ pub fn drawing_around_blanks<T>(draw: impl FnOnce() -> T) -> (T, Vec<String>) {
 /// theirs with. One drawing at a time.
 pub fn drawing_with_the_workbooks_own<T>(draw: impl FnOnce() -> T) -> T {
     while_set(&WORKBOOKS_OWN, draw)
+}
+
+/// Runs `draw` (a render) with the workbook's own function for every exercise, as
+/// [`drawing_with_the_workbooks_own`] does, and returns what it returned with the type names of the student's
+/// functions the hooks were asked for, in the order first asked (each a closure in the workbook's hook
+/// function: `lecture6::lesson::exercise_hooks::refract::{{closure}}`): which exercises a picture uses. One
+/// drawing at a time.
+pub fn drawing_and_listing_hooks<T>(draw: impl FnOnce() -> T) -> (T, Vec<&'static str>) {
+    let result = while_set(&LISTING, draw);
+    (result, std::mem::take(&mut *ASKED.lock().unwrap_or_else(|e| e.into_inner())))
 }
 
 /// Runs `f` with `flag` set, and clears it afterwards, also when `f` panics.

@@ -55,6 +55,11 @@ pub fn reflect(i: Vector, n: Vector) -> Vector {
 /// model transform). A name that is not one of [`EXERCISES`] stops the build.
 pub const HANDED_OUT: &[&str] = EXERCISES;
 
+/// The exercises whose workbook's own function is not in this copy of the workbook: a students' copy made
+/// by the hand-out command takes out the workbook's own version of each exercise it hands out, so leaving
+/// one of these out of [`HANDED_OUT`] leaves its `todo!()` in the renderer. None in the teacher's workbook.
+pub const TAKEN_OUT: &[&str] = &[];
+
 /// Every exercise, in the order of the slides.
 pub const EXERCISES: &[&str] = &[
     "bilinear",
@@ -94,6 +99,11 @@ const _: () = {
     let mut i = 0;
     while i < HANDED_OUT.len() {
         assert!(listed(EXERCISES, HANDED_OUT[i]), "HANDED_OUT names an exercise that does not exist");
+        i += 1;
+    }
+    let mut i = 0;
+    while i < TAKEN_OUT.len() {
+        assert!(listed(EXERCISES, TAKEN_OUT[i]), "TAKEN_OUT names an exercise that does not exist");
         i += 1;
     }
 };

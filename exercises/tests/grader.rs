@@ -7,6 +7,7 @@
 mod examples;
 mod grading;
 
+use exercises::hooks::drawing_and_listing_hooks;
 use exercises::{Face, Vector};
 use glam::Affine3A;
 use grading::{Exercise, Verdict, facts, grade, workbook};
@@ -109,7 +110,9 @@ fn a_picture_that_needs_a_blank_exercise_waits_for_it_and_one_that_differs_fails
     let verdicts = grade(&exercises, &pictures);
     for (exercise, verdict) in exercises.iter().zip(&verdicts) {
         let expected = match exercise.example {
-            "fresnel" => Verdict::PictureWaits { example: "fresnel".into(), on: vec!["faceforward".into()] },
+            "fresnel" => {
+                Verdict::PictureWaits { example: "fresnel".into(), on: vec!["faceforward".into()], taken_out: vec![] }
+            }
             "glossy" => Verdict::Failed("every fact holds, but the picture of `glossy` is not the expected one".into()),
             example => Verdict::Passed { example: example.into() },
         };
@@ -144,7 +147,8 @@ fn a_picture_names_every_blank_it_needs_in_one_run() {
     assert_eq!(draws.into_inner(), 1, "each picture is drawn once");
     let fresnel = exercises.iter().position(|e| e.name == "fresnel_schlick").unwrap();
     let on = vec!["cube_map".to_string(), "faceforward".to_string()];
-    assert_eq!(verdicts[fresnel], Verdict::PictureWaits { example: "fresnel".into(), on }, "{:?}", verdicts);
+    let waits = Verdict::PictureWaits { example: "fresnel".into(), on, taken_out: vec![] };
+    assert_eq!(verdicts[fresnel], waits, "{:?}", verdicts);
     assert!(
         verdicts[fresnel].to_string().contains("needs `cube_map`, `faceforward`, which are"),
         "{}",
@@ -153,6 +157,157 @@ fn a_picture_names_every_blank_it_needs_in_one_run() {
     // Outside the grader's drawing, a blank panics as it always did.
     let outside = std::panic::catch_unwind(|| answer(&FACEFORWARD, true, || -> u32 { todo!("faceforward") }));
     assert!(outside.is_err());
+}
+
+/// A copy of the workbook in which `refract`'s picture waits on three exercises, `transform_inverse`,
+/// `bilinear` and `faceforward`: `blank` ones are not written yet (the others are), `left_out` ones are left
+/// out of `HANDED_OUT`, and for `taken_out` ones the copy has not the workbook's own function.
+struct StudentsCopy {
+    blank: Vec<&'static str>,
+    left_out: Vec<&'static str>,
+    taken_out: Vec<&'static str>,
+}
+
+impl StudentsCopy {
+    /// The three exercises `refract`'s picture needs besides its own, in the order its render meets them.
+    const CHAIN: [&'static str; 3] = ["transform_inverse", "bilinear", "faceforward"];
+
+    /// The grader's verdicts on this copy: each blank not yet written in its facts, and `refract`'s picture
+    /// drawn as the renderer draws it, through the hooks, around the blanks; where the workbook's own
+    /// function has been taken out, the render stops at the `todo!()` left in its place.
+    fn grade(&self) -> Vec<Verdict> {
+        let mut exercises = workbook();
+        for exercise in exercises.iter_mut() {
+            exercise.taken_out = self.taken_out.contains(&exercise.name);
+            exercise.handed_out = !self.left_out.contains(&exercise.name);
+            if self.blank.contains(&exercise.name) {
+                let name = exercise.name;
+                exercise.facts = Box::new(move || todo!("{name}"));
+            }
+        }
+        // The renderer's hooks as a new grading process has them: none found blank yet.
+        let hooks: [&'static Hook; 3] = std::array::from_fn(|_| &*Box::leak(Box::new(Hook::new())));
+        let pictures = |example: &str| {
+            if example == "refract" {
+                for (name, hook) in Self::CHAIN.into_iter().zip(hooks) {
+                    let (handed_out, blank) = (!self.left_out.contains(&name), self.blank.contains(&name));
+                    let answer = answer(hook, handed_out, || if blank { todo!("{name}") } else { 1 });
+                    if answer.is_none() && self.taken_out.contains(&name) {
+                        todo!("{name}")
+                    }
+                }
+            }
+            Ok(())
+        };
+        grade(&exercises, &pictures)
+    }
+
+    /// The verdict on `refract`, and its text.
+    fn refract(&self) -> (Verdict, String) {
+        let verdicts = self.grade();
+        let verdict = verdicts[workbook().iter().position(|e| e.name == "refract").unwrap()].clone();
+        let text = verdict.to_string();
+        (verdict, text)
+    }
+}
+
+/// Whether `verdict` has `refract`'s picture waiting on exactly `names`.
+fn waits_on(verdict: &Verdict, names: &[&str]) -> bool {
+    matches!(verdict, Verdict::PictureWaits { on, .. } if on.iter().map(String::as_str).eq(names.iter().copied()))
+}
+
+#[test]
+fn each_piece_of_the_graders_advice_changes_the_next_verdict_as_it_says() {
+    let _serial = serial();
+    let passed = Verdict::Passed { example: "refract".into() };
+    let chain = ["bilinear", "transform_inverse", "faceforward"];
+    let all = StudentsCopy::CHAIN.to_vec();
+    for taken_out in [vec![], all.clone()] {
+        // All three blank: the verdict names the whole chain at once, in the order of the slides, in the
+        // teacher's workbook (drawn around the blanks) and in a students' copy (where the render stops at the
+        // first it meets) alike.
+        let (verdict, advice) =
+            StudentsCopy { blank: all.clone(), left_out: vec![], taken_out: taken_out.clone() }.refract();
+        assert!(waits_on(&verdict, &chain), "{verdict:?}");
+        let left = StudentsCopy { blank: vec![], left_out: all.clone(), taken_out: taken_out.clone() };
+        if taken_out.is_empty() {
+            // "leave them out of HANDED_OUT": followed, the picture is drawn with the workbook's own.
+            assert!(advice.contains("(or leave them out of HANDED_OUT"), "{advice}");
+            assert_eq!(left.refract().0, passed);
+            assert_eq!(left.grade().iter().filter(|v| **v == Verdict::NotHandedOut).count(), 3);
+        } else {
+            // No advice to leave them out, which would not help here (the picture would wait on them still),
+            // and each left out says to put it back.
+            assert!(!advice.contains("leave"), "{advice}");
+            assert!(advice.contains(": write them, and the picture is checked"), "{advice}");
+            assert!(waits_on(&left.refract().0, &chain));
+            let verdicts = left.grade();
+            assert_eq!(verdicts.iter().filter(|v| **v == Verdict::LeftOutWithoutOwn).count(), 3);
+            assert!(Verdict::LeftOutWithoutOwn.to_string().contains("put it back in HANDED_OUT"));
+        }
+        // "write them": written one at a time, each verdict names the rest, and at the end the picture is
+        // checked.
+        for written in 1..=3 {
+            let blank = StudentsCopy::CHAIN[written..].to_vec();
+            let (verdict, _) =
+                StudentsCopy { blank: blank.clone(), left_out: vec![], taken_out: taken_out.clone() }.refract();
+            let rest: Vec<&str> = chain.into_iter().filter(|name| blank.contains(name)).collect();
+            assert!(if rest.is_empty() { verdict == passed } else { waits_on(&verdict, &rest) }, "{verdict:?}");
+        }
+    }
+    // One of the three taken out: the advice to leave out names only the other two, and followed, the
+    // picture waits on the third alone; written, it is checked.
+    let taken_out = vec!["transform_inverse"];
+    let (verdict, advice) =
+        StudentsCopy { blank: all.clone(), left_out: vec![], taken_out: taken_out.clone() }.refract();
+    assert!(waits_on(&verdict, &chain), "{verdict:?}");
+    assert!(advice.contains("or leave `bilinear`, `faceforward` out of HANDED_OUT"), "{advice}");
+    assert!(advice.contains("does not hold the workbook's own `transform_inverse`"), "{advice}");
+    let left = StudentsCopy { blank: vec!["transform_inverse"], left_out: vec!["bilinear", "faceforward"], taken_out };
+    let (verdict, advice) = left.refract();
+    assert!(waits_on(&verdict, &["transform_inverse"]), "{verdict:?}");
+    assert!(advice.contains(": write it, and the picture is checked"), "{advice}");
+    assert_eq!(StudentsCopy { blank: vec![], ..left }.refract().0, passed);
+}
+
+#[test]
+fn the_pictures_table_lists_the_exercises_each_picture_is_drawn_with() {
+    let _serial = serial();
+    // Each hook's function in the workbook's src/lesson/exercise_hooks.rs, and the exercise whose switch it
+    // reads.
+    let hooks = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../src/lesson/exercise_hooks.rs"))
+        .expect("the workbook's hooks");
+    let exercise_of_hook = |hook: &str| -> String {
+        let function =
+            hooks.split("\npub fn ").find(|f| f.strip_prefix(hook).is_some_and(|rest| rest.starts_with(['(', '<'])));
+        let function = function.unwrap_or_else(|| panic!("no hook function {hook}"));
+        let switch = function.split_once("handed_out::").expect("a switch").1;
+        switch.chars().take_while(|c| c.is_ascii_uppercase() || *c == '_').collect::<String>().to_lowercase()
+    };
+    let order: Vec<&str> = workbook().iter().map(|e| e.name).collect();
+    let mut wrong = Vec::new();
+    for (example, table) in grading::PICTURES {
+        // At the default settings, as the grader draws it.
+        let (_, asked) = drawing_and_listing_hooks(|| render(example, &["--quiet"]));
+        let mut used: Vec<String> = asked
+            .iter()
+            .map(|asker| {
+                // `lecture6::lesson::exercise_hooks::bilinear<..>::{{closure}}`: the hook's function's name.
+                let path = asker.split_once("exercise_hooks::").map_or(*asker, |(_, path)| path);
+                exercise_of_hook(&path.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect::<String>())
+            })
+            .collect();
+        used.sort_by_key(|name| order.iter().position(|o| o == name));
+        used.dedup();
+        if used != table.to_vec() {
+            wrong.push(format!("(\"{example}\", &{used:?}), in the table as {table:?}"));
+        }
+    }
+    assert!(wrong.is_empty(), "the pictures are drawn with other exercises than the table says:\n{}", wrong.join("\n"));
+    // Every exercise's own picture is in the table, and uses it.
+    for exercise in workbook() {
+        assert!(grading::uses(exercise.example).contains(&exercise.name), "{}", exercise.name);
+    }
 }
 
 #[test]
@@ -389,22 +544,26 @@ fn the_exercises_types_agree_with_the_workbooks() {
     }
 }
 
-/// The example called `name`, rendered small (160x120, 4 samples a pixel) as its binary would.
-fn small_render(name: &str) -> Frame {
-    fn render_as<E: Example>(name: &str) -> Frame {
-        let args = ["--quiet", "--width", "160", "--height", "120", "--spp", "4"];
-        let cli = Cli::<E>::parse_args(name, args).expect("the options parse");
+/// The example called `name`, rendered as its binary would with the options `args`.
+fn render(name: &str, args: &[&str]) -> Frame {
+    fn render_as<E: Example>(name: &str, args: &[&str]) -> Frame {
+        let cli = Cli::<E>::parse_args(name, args.iter().copied()).expect("the options parse");
         cli.render().expect("the example renders").0
     }
     macro_rules! by_name {
         ($($example:ident),*) => {
             match name {
-                $(stringify!($example) => render_as::<examples::$example::Options>(name),)*
+                $(stringify!($example) => render_as::<examples::$example::Options>(name, args),)*
                 _ => panic!("the workbook has no example `{name}`"),
             }
         };
     }
     every_example!(by_name)
+}
+
+/// The example called `name`, rendered small (160x120, 4 samples a pixel).
+fn small_render(name: &str) -> Frame {
+    render(name, &["--quiet", "--width", "160", "--height", "120", "--spp", "4"])
 }
 
 /// Where two frames of one size differ: the first differing pixel and how many do.

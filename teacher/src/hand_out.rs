@@ -4,9 +4,14 @@
 //! The copy holds the files git would track (the workbook's `.gitignore` is followed: no `target/`, no
 //! `out/`), without `.git` (no history to `git show` a solution from) and without what only the teacher
 //! uses: `exercises/src/solutions/`, the grader's own tests (`exercises/tests/grader.rs`, which need the
-//! solutions), `.ci/` and these tools (`teacher/`, whose tests name the solutions' lines). In it:
+//! solutions), `.ci/`, these tools (`teacher/`, whose tests name the solutions' lines) and their page
+//! (`docs/class.md`). In it:
 //!
-//! - `exercises/src/lib.rs` hands out the chosen exercises (`HANDED_OUT`);
+//! - the README is the students' ([`crate::student_readme`]): its first command grades the exercises, it
+//!   says which files to edit and how to read a verdict, and names none of the teacher's tools; the
+//!   teacher's sections of `docs/exercises.md` (handing out, adding an exercise, CI) are taken out;
+//! - `exercises/src/lib.rs` hands out the chosen exercises (`HANDED_OUT`), and says that the workbook's own
+//!   version of each is not in the copy (`TAKEN_OUT`, which the grader reads to give advice that holds);
 //! - the library's own version of each one is taken out ([`crate::blanking`]): its function keeps the line
 //!   that routes it to the exercise, and the rest becomes `todo!()`;
 //! - the library is built for the exercises by default (the feature `exercises` is on, in the workspace
@@ -14,7 +19,7 @@
 //!   every test and the grader draw with the student's functions: written, they make the pictures; blank,
 //!   they stop with their `todo!()`.
 
-use crate::blanking;
+use crate::{blanking, student_readme};
 use std::path::{Path, PathBuf};
 use toml_edit::{DocumentMut, value};
 
@@ -28,7 +33,8 @@ pub struct HandedOut {
 }
 
 /// The folders and files of the workbook that stay with the teacher, relative to its folder.
-const TEACHERS_ONLY: [&str; 5] = [".git", ".ci", "exercises/src/solutions", "exercises/tests/grader.rs", "teacher"];
+const TEACHERS_ONLY: [&str; 6] =
+    [".git", ".ci", "exercises/src/solutions", "exercises/tests/grader.rs", "teacher", "docs/class.md"];
 
 /// The workbook's exercises, in the order of the slides, as its `exercises/src/lib.rs` (the text `lib`)
 /// lists them in `EXERCISES`.
@@ -62,7 +68,12 @@ pub fn hand_out(workbook: &Path, to: &Path, handed_out: &[String]) -> Result<Han
     }
     let files = copy_tracked(workbook, to)?;
     let lib = to.join("exercises").join("src").join("lib.rs");
-    edit(&lib, |text| hand_out_list(text, handed_out).ok_or_else(|| "it has no line `pub const HANDED_OUT`".into()))?;
+    // The exercises handed out, and the same list as those whose workbook's own version the copy has not.
+    for list in ["HANDED_OUT", "TAKEN_OUT"] {
+        edit(&lib, |text| {
+            set_list(text, list, handed_out).ok_or_else(|| format!("it has no line `pub const {list}`"))
+        })?;
+    }
     let hooks = read(&to.join("src").join("lesson").join("exercise_hooks.rs"))?;
     let hooks = blanking::hooks(&hooks);
     let mut blanked = Vec::new();
@@ -78,6 +89,10 @@ pub fn hand_out(workbook: &Path, to: &Path, handed_out: &[String]) -> Result<Han
             blanked.push((file.strip_prefix(to).unwrap_or(&file).to_path_buf(), exercises));
         }
     }
+    edit(&to.join("README.md"), |text| Ok(student_readme::readme(text, handed_out)))?;
+    edit(&to.join("docs").join("exercises.md"), |text| {
+        Ok(student_readme::without_sections(text, &student_readme::TEACHERS_SECTIONS))
+    })?;
     edit(&to.join("Cargo.toml"), |text| {
         let mut doc: DocumentMut = text.parse().map_err(|e| format!("{e}"))?;
         doc["features"]["default"] = value(toml_edit::Array::from_iter(["exercises"]));
@@ -96,12 +111,13 @@ pub fn hand_out(workbook: &Path, to: &Path, handed_out: &[String]) -> Result<Han
     Ok(HandedOut { files, blanked })
 }
 
-/// `lib.rs` with its `HANDED_OUT` set to `handed_out`; `None` when it has no such line.
-fn hand_out_list(lib: &str, handed_out: &[String]) -> Option<String> {
-    let start = lib.find("pub const HANDED_OUT: &[&str] = ")?;
+/// `lib.rs` with its list `name` (`HANDED_OUT`) set to `exercises`; `None` when it has no such line.
+fn set_list(lib: &str, name: &str, exercises: &[String]) -> Option<String> {
+    let line = format!("pub const {name}: &[&str] = ");
+    let start = lib.find(&line)?;
     let end = start + lib[start..].find(";\n")? + 1;
-    let list: Vec<String> = handed_out.iter().map(|name| format!("{name:?}")).collect();
-    Some(format!("{}pub const HANDED_OUT: &[&str] = &[{}];{}", &lib[..start], list.join(", "), &lib[end..]))
+    let list: Vec<String> = exercises.iter().map(|name| format!("{name:?}")).collect();
+    Some(format!("{}{line}&[{}];{}", &lib[..start], list.join(", "), &lib[end..]))
 }
 
 /// Copies the files git would track in `from` (its `.gitignore` followed, with or without a repository),
@@ -164,8 +180,9 @@ mod tests {
     fn the_hand_out_list_is_the_one_line_replaced() {
         let lib = "/// The switch.\npub const HANDED_OUT: &[&str] = EXERCISES;\n\npub const EXERCISES: &[&str] = &[\n    \"bilinear\",\n    \"refract\",\n];\n";
         assert_eq!(exercises(lib), ["bilinear", "refract"]);
-        let handed = hand_out_list(lib, &["refract".to_string()]).expect("the line is there");
+        let handed = set_list(lib, "HANDED_OUT", &["refract".to_string()]).expect("the line is there");
         assert!(handed.contains("pub const HANDED_OUT: &[&str] = &[\"refract\"];\n\npub const EXERCISES"), "{handed}");
-        assert_eq!(hand_out_list("no list", &[]), None);
+        assert_eq!(set_list("no list", "HANDED_OUT", &[]), None);
+        assert_eq!(set_list(lib, "TAKEN_OUT", &[]), None);
     }
 }

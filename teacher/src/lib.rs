@@ -15,6 +15,7 @@ pub mod exercise_grades;
 pub mod gradebook;
 pub mod hand_out;
 pub mod rendering;
+pub mod student_readme;
 pub mod submissions;
 
 use std::path::{Path, PathBuf};

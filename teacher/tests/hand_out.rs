@@ -95,6 +95,8 @@ fn a_copy_handing_out_every_exercise_holds_none_of_their_solutions_and_no_histor
     // The blanks are there, handed out, and the library is built for them.
     let lib = std::fs::read_to_string(copy.join("exercises/src/lib.rs")).expect("the exercises' list");
     assert!(lib.contains("pub const HANDED_OUT: &[&str] = &[\"bilinear\", \"transform_inverse\""), "{lib}");
+    // The grader is told the workbook's own versions are gone, so that it advises nothing that needs them.
+    assert!(lib.contains("pub const TAKEN_OUT: &[&str] = &[\"bilinear\", \"transform_inverse\""), "{lib}");
     let manifest = std::fs::read_to_string(copy.join("Cargo.toml")).expect("the manifest");
     assert!(manifest.contains("default = [\"exercises\"]"), "{manifest}");
 }
@@ -133,4 +135,54 @@ fn a_hand_out_is_refused_an_unknown_exercise_or_a_folder_in_use() {
     let e = hand_out(workbook(), dir.path(), &["refract".to_string()]).expect_err("a folder in use");
     assert!(e.ends_with("is not empty: hand out into a new folder"), "{e}");
     assert_eq!(std::fs::read_to_string(dir.path().join("notes.txt")).expect("kept"), "mine");
+}
+
+/// The relative links of a Markdown text (`[text](target)`), without their `#anchor`.
+fn relative_links(markdown: &str) -> Vec<String> {
+    markdown
+        .split("](")
+        .skip(1)
+        .filter_map(|rest| rest.split_once(')').map(|(target, _)| target.split('#').next().unwrap_or("").to_string()))
+        .filter(|target| !target.is_empty() && !target.contains("://"))
+        .collect()
+}
+
+#[test]
+fn the_copys_readme_starts_with_the_grader_and_names_none_of_the_teachers_tools() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let copy = dir.path().join("students");
+    let handed = ["refract".to_string(), "fresnel_schlick".to_string()];
+    hand_out(workbook(), &copy, &handed).expect("handed out");
+    let readme = std::fs::read_to_string(copy.join("README.md")).expect("the copy's README");
+    // Its first command is the grader's.
+    let first = readme.split("```sh\n").nth(1).and_then(|block| block.lines().next()).expect("a command");
+    assert!(first.starts_with("cargo test --release -p exercises "), "{first}");
+    // It says what to edit, and how to read each kind of verdict.
+    for part in [
+        "exercises/src/refract.rs",
+        "exercises/src/fresnel_schlick.rs",
+        "`passed`",
+        "`FAILED`",
+        "`not yet written`",
+        "also needs",
+        "`not handed out`",
+    ] {
+        assert!(readme.contains(part), "the README does not say {part:?}:\n{readme}");
+    }
+    assert!(!readme.contains("exercises/src/bilinear.rs"), "an exercise not handed out is named to edit");
+    // None of the teacher's commands, folders or pages, here or in the exercises' page.
+    let exercises_page = std::fs::read_to_string(copy.join("docs/exercises.md")).expect("the exercises' page");
+    for (file, text) in [("README.md", &readme), ("docs/exercises.md", &exercises_page)] {
+        for mark in ["-p teacher", "hand-out", "teacher/", "class.md"] {
+            let lines: Vec<&str> = text.lines().filter(|line| line.contains(mark)).collect();
+            assert!(lines.is_empty(), "{file} names {mark:?}: {lines:?}");
+        }
+    }
+    assert!(!copy.join("docs/class.md").exists(), "the teacher's page is in the copy");
+    // Every page it links to is in the copy.
+    for link in relative_links(&readme) {
+        assert!(copy.join(&link).exists(), "the README links to {link}, which the copy does not hold");
+    }
+    // The workbook's own README follows, its first command among the rest.
+    assert!(readme.contains("cargo run --release --example fresnel"), "{readme}");
 }

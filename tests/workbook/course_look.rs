@@ -104,3 +104,31 @@ fn a_scene_files_assumed_gamma_reads_its_texture_alike_under_either_encoding() {
         .fold(0.0f32, f32::max);
     assert!(worst < 1e-4, "the frames differ by up to {worst}");
 }
+
+/// The command a page gives for the course's look: the line that starts it and its continuation lines.
+fn course_look_command(page: &str) -> String {
+    let text = std::fs::read_to_string(root().join("docs").join(page)).unwrap();
+    let start = "cargo run --release --example fresnel -- --slide --fov 112.62";
+    let first = text.find(start).unwrap_or_else(|| panic!("docs/{page} gives no course's look command"));
+    let mut command = String::new();
+    for line in text[first..].lines() {
+        command.push_str(line.trim().trim_end_matches('\\').trim());
+        command.push(' ');
+        if !line.trim_end().ends_with('\\') {
+            break;
+        }
+    }
+    command.trim().to_string()
+}
+
+#[test]
+fn the_teachers_page_gives_the_course_look_in_one_command_that_fresnel_takes() {
+    let command = course_look_command("class.md");
+    assert_eq!(command, course_look_command("techniques.md"), "the two pages give different commands");
+    let args: Vec<&str> = command.split_once(" -- ").unwrap().1.split_whitespace().collect();
+    for option in ["--slide", "--env-layout", "--floor", "--encoding"] {
+        assert!(args.contains(&option), "{command}");
+    }
+    // fresnel's own parser takes every option of it (the course's files are only opened when it renders).
+    let _ = parse::<Fresnel>(&args);
+}

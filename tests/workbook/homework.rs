@@ -275,3 +275,16 @@ fn the_old_names_still_work_and_mean_the_same() {
     let bitmap = Arc::new(Bitmap::from_pixels(1, 1, vec![Color::WHITE]));
     assert_eq!(BitmapTexture::new(bitmap).with_scaling(40.0).tile_size, 40.0);
 }
+
+#[test]
+fn a_file_beside_the_calling_source_is_found_before_the_workbooks_textures() {
+    // This test's own source file stands in for a student's image beside their example: the call names
+    // the folder of the file it is written in, as the compiler names it.
+    let beside = root().join("tests").join("workbook").join("homework.rs");
+    assert_eq!(texture_path("homework.rs"), beside);
+    assert_eq!(texture_path("wood.png"), root().join("textures").join("wood.png"));
+    let Err(error) = texture("my_floor.png") else { panic!("a texture that is nowhere was loaded") };
+    let message = error.to_string();
+    assert!(message.contains(&root().join("tests/workbook/my_floor.png").display().to_string()), "{message}");
+    assert!(message.contains(&root().join("textures/my_floor.png").display().to_string()), "{message}");
+}

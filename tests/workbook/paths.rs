@@ -46,9 +46,11 @@ fn cited(text: &str) -> Vec<String> {
             .map_or(text.len(), |e| i + e);
         let path = text[start..end].trim_end_matches('.');
         let tail = &text[end..];
-        // Patterns and placeholders (`examples/<name>.rs`, `out/{name}`, `examples/hw1.rs`) are not paths.
+        // Patterns and placeholders (`examples/<name>.rs`, `out/{name}`, `examples/hw1.rs`, a student's own
+        // `examples/my_floor.png`) are not paths.
         if tail.starts_with(['<', '{', '*'])
             || path.starts_with("examples/hw")
+            || path.rsplit('/').next().is_some_and(|name| name.starts_with("my_"))
             || path.ends_with('/') && path.len() == i + 1 - start
         {
             continue;

@@ -5,7 +5,7 @@
 use crate::window::Picked;
 use eframe::egui;
 use lecture6_viewer_protocol::wire::{Report, Request, Status, receive, send};
-use std::io::{BufReader, BufWriter, Stdin, Stdout};
+use std::io::{BufReader, BufWriter, Stdin, Write};
 use std::sync::{Arc, Mutex};
 
 /// What the example sent, as far as the window has not taken it yet.
@@ -65,7 +65,7 @@ impl Shown {
 
 /// The window's ends of the pipe.
 pub struct Link {
-    requests: BufWriter<Stdout>,
+    requests: Box<dyn Write + Send>,
     reports: Option<BufReader<Stdin>>,
     /// What the example sent.
     pub shown: Arc<Mutex<Shown>>,
@@ -74,7 +74,14 @@ pub struct Link {
 impl Link {
     /// The link whose reports come from `reports` (its first one, the hello, read already).
     pub fn new(reports: BufReader<Stdin>) -> Link {
-        Link { requests: BufWriter::new(std::io::stdout()), reports: Some(reports), shown: Arc::default() }
+        Link { requests: Box::new(BufWriter::new(std::io::stdout())), reports: Some(reports), shown: Arc::default() }
+    }
+
+    /// A link to no example, for the window's tests: its requests go nowhere, and what it shows is what a
+    /// test puts in [`Link::shown`].
+    #[cfg(test)]
+    pub fn detached() -> Link {
+        Link { requests: Box::new(std::io::sink()), reports: None, shown: Arc::default() }
     }
 
     /// Starts reading the example's reports into [`Link::shown`], asking `ctx` to redraw after each.

@@ -9,6 +9,7 @@
 //! protocol with the library, not the library itself, so that building it compiles the library not again
 //! (docs/building.md).
 
+mod layout;
 mod link;
 mod window;
 

@@ -1,12 +1,14 @@
-//! The viewer's window: the picture in the middle, the example's options on the left, the camera and the
-//! status line below. egui redraws the window when the example has sent something or a key is held, and
-//! otherwise sleeps.
+//! The viewer's window: the picture in the middle, the example's options on the left, the clicked pixel's
+//! report at the right or under the options, the camera and the status line below, each where
+//! [`crate::layout`] puts it for the window's size. egui redraws the window when the example has sent
+//! something or a key is held, and otherwise sleeps.
 //!
 //! Keys (while no text field has the focus): W/S forward and back, A/D left and right, R/F up and down,
 //! the arrow keys turn and Q/E roll; dragging the mouse over the picture looks around; a click shows what
 //! the pixel sees: the node and shader it hits and its whole ray tree (see `lecture6::instruments::ray_tree`).
 //! Ctrl + and Ctrl - (or the "UI scale" control) scale the whole interface, for a projector.
 
+use crate::layout::{Layout, layout};
 use crate::link::{Link, Shown};
 use eframe::egui;
 use lecture6_viewer_protocol::UI_SCALES;
@@ -178,9 +180,11 @@ impl Viewer {
         }
     }
 
-    fn side_panel(&mut self, ui: &mut egui::Ui) {
+    /// The options and the steps beyond the slides, in a scroll area `height` points high.
+    fn side_panel(&mut self, ui: &mut egui::Ui, height: f32) {
         let mut changed = false;
-        egui::ScrollArea::vertical().show(ui, |ui| {
+        let scroll = egui::ScrollArea::vertical().id_salt("options").max_height(height).auto_shrink([false, false]);
+        scroll.show(ui, |ui| {
             let mut heading: Option<Option<String>> = None;
             for control in &mut self.controls.controls {
                 if heading.as_ref() != Some(&control.heading) {
@@ -205,8 +209,9 @@ impl Viewer {
             // Half the camera's distance from the origin per second: the examples are built around it.
             self.speed = (camera.distance * 0.5).max(1.0);
         }
-        ui.horizontal_wrapped(|ui| {
-            ui.monospace(&camera.text);
+        // One row, whatever the camera: the status band's height is fixed (`crate::layout`).
+        ui.horizontal(|ui| {
+            ui.monospace(&camera.text).on_hover_text("W/S A/D R/F move, arrows turn, Q/E roll, drag to look");
             if ui.button("Copy as code").clicked() {
                 ui.ctx().copy_text(camera.code.clone());
                 self.say(format!("copied: {}", camera.code));
@@ -218,7 +223,6 @@ impl Viewer {
             let step = self.speed * 0.02;
             ui.add(egui::DragValue::new(&mut self.speed).speed(step));
             self.speed = self.speed.max(f32::MIN_POSITIVE);
-            ui.label("W/S A/D R/F move, arrows turn, Q/E roll, drag to look");
         });
     }
 
@@ -268,9 +272,8 @@ impl Viewer {
                 ui.ctx().set_zoom_factor(self.ui_scale);
             }
         });
-        if !message.is_empty() {
-            ui.label(message);
-        }
+        // Its row stays when there is no message, so that nothing above it moves when one comes.
+        ui.add(egui::Label::new(if message.is_empty() { " ".to_string() } else { message }).truncate());
     }
 
     /// Shows `text` under the status line.
@@ -286,32 +289,34 @@ impl Viewer {
         self.send(Request::Inspect { x, y });
     }
 
-    /// The clicked pixel's report, beside the picture, until closed: its tree wrapped to the panel
-    /// ([`wrap_tree`]), and asked for again once the camera has settled or the options changed since it was
-    /// traced.
-    fn pixel_panel(&mut self, ctx: &egui::Context) {
+    /// Asks again for the clicked pixel's tree once the camera has settled or the options changed since it
+    /// was traced.
+    fn refresh_pixel(&mut self) {
         let stale = self.picked.as_ref().filter(|p| p.picture != self.picture && self.moving_since.is_none());
         if let Some((x, y)) = stale.map(|p| (p.x, p.y))
             && self.asked.is_none_or(|(.., asked_of)| asked_of != self.picture)
         {
             self.inspect(x, y);
         }
+    }
+
+    /// The clicked pixel's report, until closed: what it sees and its tree wrapped to the space it has
+    /// ([`wrap_tree`]).
+    fn pixel_report(&mut self, ui: &mut egui::Ui) {
         let Some(picked) = &self.picked else { return };
         let mut close = false;
-        egui::SidePanel::right("pixel").resizable(true).default_width(520.0).show(ctx, |ui| {
-            ui.horizontal(|ui| {
-                ui.strong("Pixel");
-                close = ui.button("Close").clicked();
-            });
-            ui.label(&picked.sees);
-            ui.separator();
-            egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
-                let font = egui::TextStyle::Monospace.resolve(ui.style());
-                let glyph = ui.fonts_mut(|fonts| fonts.glyph_width(&font, 'x')).max(1.0);
-                let columns = (ui.available_width() / glyph).floor().max(1.0) as usize;
-                let tree = egui::RichText::new(wrap_tree(&picked.tree, columns)).monospace();
-                ui.add(egui::Label::new(tree).extend());
-            });
+        ui.horizontal(|ui| {
+            ui.strong("Pixel");
+            close = ui.button("Close").clicked();
+        });
+        ui.label(&picked.sees);
+        ui.separator();
+        egui::ScrollArea::vertical().id_salt("pixel").auto_shrink([false, false]).show(ui, |ui| {
+            let font = egui::TextStyle::Monospace.resolve(ui.style());
+            let glyph = ui.fonts_mut(|fonts| fonts.glyph_width(&font, 'x')).max(1.0);
+            let columns = (ui.available_width() / glyph).floor().max(1.0) as usize;
+            let tree = egui::RichText::new(wrap_tree(&picked.tree, columns)).monospace();
+            ui.add(egui::Label::new(tree).extend());
         });
         if close {
             self.picked = None;
@@ -353,10 +358,11 @@ impl Viewer {
             return;
         };
         let size = texture.size_vec2();
-        let available = ui.available_size();
-        let scale = (available.x / size.x).min(available.y / size.y).max(0.1);
+        // Fitted into the central panel, which is the layout's picture area.
+        let shown = crate::layout::fitted(size, ui.max_rect());
+        let scale = (shown.width() / size.x).max(0.1);
         let image = egui::Image::new(egui::load::SizedTexture::new(texture.id(), size * scale));
-        let response = ui.add(image.sense(egui::Sense::click_and_drag()));
+        let response = ui.put(shown, image.sense(egui::Sense::click_and_drag()));
         let drag = if response.dragged() { response.drag_delta() } else { egui::Vec2::ZERO };
         if response.clicked()
             && self.heat_map.is_none()
@@ -518,24 +524,250 @@ fn number_ui(
     }
 }
 
-impl eframe::App for Viewer {
-    fn update(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
+impl Viewer {
+    /// The window's layout now: for its size, the status band's height in the current style, the picture's
+    /// size and whether a pixel's report is open.
+    fn layout(&self, ctx: &egui::Context) -> Layout {
+        let style = ctx.style();
+        let row = style.spacing.interact_size.y + style.spacing.item_spacing.y;
+        let margin = egui::Frame::side_top_panel(&style).total_margin().sum().y;
+        let status_height = STATUS_ROWS * row + margin;
+        let picture = self.heat_map.as_ref().or(self.texture.as_ref()).map_or(egui::Vec2::ZERO, |t| t.size_vec2());
+        layout(ctx.content_rect().size(), status_height, picture, self.picked.is_some())
+    }
+
+    /// One frame of the window: what came in, then every panel where [`Viewer::layout`] puts it.
+    fn show(&mut self, ctx: &egui::Context) {
         self.receive(ctx);
         // Ctrl + and Ctrl - change the zoom too: the control follows.
         self.ui_scale = ctx.zoom_factor();
-        egui::SidePanel::left("options").resizable(true).default_width(300.0).show(ctx, |ui| self.side_panel(ui));
-        egui::TopBottomPanel::bottom("status").show(ctx, |ui| {
+        self.refresh_pixel();
+        let layout = self.layout(ctx);
+        egui::TopBottomPanel::bottom("status").resizable(false).exact_height(layout.status.height()).show(ctx, |ui| {
             self.camera_panel(ui);
             self.status_line(ui);
         });
-        self.pixel_panel(ctx);
-        egui::CentralPanel::default().show(ctx, |ui| self.picture(ui));
+        let margin = egui::Frame::side_top_panel(&ctx.style()).total_margin().sum();
+        let options = egui::SidePanel::left("options").resizable(false).exact_width(layout.options.width());
+        options.show(ctx, |ui| match layout.pixel.filter(|_| !layout.pixel_beside) {
+            Some(_) => {
+                self.side_panel(ui, layout.options.height() - margin.y);
+                ui.separator();
+                self.pixel_report(ui);
+            }
+            None => self.side_panel(ui, ui.available_height()),
+        });
+        if let Some(pixel) = layout.pixel.filter(|_| layout.pixel_beside) {
+            let report = egui::SidePanel::right("pixel").resizable(false).exact_width(pixel.width());
+            report.show(ctx, |ui| self.pixel_report(ui));
+        }
+        egui::CentralPanel::default().frame(egui::Frame::NONE).show(ctx, |ui| self.picture(ui));
+    }
+}
+
+/// The rows of the status band: the camera, the status line and its buttons, a message.
+const STATUS_ROWS: f32 = 3.0;
+
+impl eframe::App for Viewer {
+    fn update(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
+        self.show(ctx);
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use egui::{Event, Modifiers, PointerButton, Pos2, Rect, pos2, vec2};
+    use lecture6_viewer_protocol::controls::StepBox;
+
+    /// A projector's window, 1280 x 720 pixels, at the interface scale `--ui-scale 1.5`.
+    const PROJECTOR: (egui::Vec2, f32) = (vec2(1280.0, 720.0), 1.5);
+
+    /// An example's controls as the window gets them: its own options and the common ones (a flag, a choice,
+    /// whole and real numbers, a path), then the steps beyond the slides.
+    fn controls() -> Controls {
+        let control = |long: &str, kind: Kind, value: &str, common: bool| Control {
+            long: long.into(),
+            help: format!("what --{long} does"),
+            heading: common.then(|| "Common options".to_string()),
+            kind,
+            value: value.into(),
+            optional: value.is_empty(),
+            placeholder: "5".into(),
+        };
+        let integer = || Kind::Integer { min: 1.0, max: 100_000.0 };
+        let mut all = vec![
+            control("ior", Kind::Real, "1.5", false),
+            control("fresnel", Kind::Choice(vec!["schlick".into(), "exact".into()]), "schlick", false),
+            control("floor", Kind::Text, "", false),
+        ];
+        for long in ["width", "height", "spp", "max-depth", "seed"] {
+            all.push(control(long, integer(), "", true));
+        }
+        for long in ["exposure", "gamma", "clamp-sample"] {
+            all.push(control(long, Kind::Real, "0", true));
+        }
+        for long in ["no-aa", "stats", "linear"] {
+            all.push(control(long, Kind::Flag, "false", true));
+        }
+        let steps = ["adaptive-depth", "node-bvh", "texel-filter", "stratified", "hero-wavelengths", "photon-grid"]
+            .map(|name| StepBox { name: name.into(), summary: format!("what {name} does"), taken: true })
+            .to_vec();
+        Controls::new("fresnel", all, steps, Vec::new())
+    }
+
+    /// The window's state and egui's, driven frame by frame without a display.
+    struct Headless {
+        viewer: Viewer,
+        ctx: egui::Context,
+        size: egui::Vec2,
+        time: f64,
+    }
+
+    impl Headless {
+        /// A window of `pixels` at `ui_scale`, showing a 640 x 480 picture, with a pixel's report open.
+        fn open((pixels, ui_scale): (egui::Vec2, f32)) -> Headless {
+            let start = Start { name: "fresnel".into(), controls: controls(), ui_scale, pixel: None };
+            let mut viewer = Viewer::new(start, Link::detached());
+            viewer.picked =
+                Some(Picked { x: 320, y: 200, sees: "hits glass sphere".into(), tree: tree(12), picture: 0 });
+            let ctx = egui::Context::default();
+            ctx.set_zoom_factor(ui_scale);
+            let mut headless = Headless { viewer, ctx, size: pixels / ui_scale, time: 0.0 };
+            headless.example_sends(|shown| {
+                (shown.width, shown.height, shown.rgb, shown.dirty) = (640, 480, vec![90; 640 * 480 * 3], true);
+            });
+            headless.frames(3, Vec::new());
+            headless
+        }
+
+        /// Runs `count` frames, the first with `events`, a tenth of a second apart (scrolling is animated).
+        fn frames(&mut self, count: usize, mut events: Vec<Event>) {
+            for _ in 0..count {
+                self.time += 0.1;
+                let mut input = egui::RawInput {
+                    screen_rect: Some(Rect::from_min_size(Pos2::ZERO, self.size)),
+                    time: Some(self.time),
+                    predicted_dt: 0.1,
+                    events: std::mem::take(&mut events),
+                    ..Default::default()
+                };
+                input.viewports.entry(egui::ViewportId::ROOT).or_default().native_pixels_per_point = Some(1.0);
+                let _ = self.ctx.run(input, |ctx| self.viewer.show(ctx));
+            }
+        }
+
+        /// What the example sends, as the link's reader would put it.
+        fn example_sends(&mut self, change: impl FnOnce(&mut Shown)) {
+            change(&mut self.viewer.shown.lock().unwrap());
+        }
+
+        /// A click at `at`: the pointer moved there, pressed and released.
+        fn click(&mut self, at: Pos2) {
+            let button = |pressed| Event::PointerButton {
+                pos: at,
+                button: PointerButton::Primary,
+                pressed,
+                modifiers: Modifiers::NONE,
+            };
+            self.frames(1, vec![Event::PointerMoved(at)]);
+            self.frames(1, vec![button(true)]);
+            self.frames(2, vec![button(false)]);
+        }
+
+        /// The widget a click at the pointer would click now: its id and where it is.
+        fn under_pointer(&self) -> Option<(egui::Id, Rect)> {
+            self.ctx.viewport(|viewport| viewport.hits.click.map(|widget| (widget.id, widget.rect)))
+        }
+
+        /// The clickable widgets drawn last frame inside `area`, top to bottom.
+        fn clickable_in(&self, area: Rect) -> Vec<Rect> {
+            let mut found: Vec<Rect> = self.ctx.viewport(|viewport| {
+                let widgets = viewport.prev_pass.widgets.layers().flat_map(|(_, widgets)| widgets.iter());
+                widgets
+                    .filter(|w| {
+                        w.sense.senses_click() && w.interact_rect.is_positive() && area.contains_rect(w.interact_rect)
+                    })
+                    .map(|w| w.rect)
+                    .collect()
+            });
+            found.sort_by(|a, b| a.min.y.total_cmp(&b.min.y));
+            found
+        }
+
+        /// The steps' boxes, ticked or not.
+        fn ticked(&self) -> Vec<bool> {
+            self.viewer.controls.steps.iter().map(|step| step.taken).collect()
+        }
+    }
+
+    /// A ray tree of `rays` rays, each line longer than a side panel is wide.
+    fn tree(rays: usize) -> String {
+        (0..rays)
+            .map(|i| {
+                format!(
+                    "{}ray {i} (depth {i}) from (0.000, 60.000, -120.000) dir (0.001, -0.412, 0.911), weight 0.8000, \
+                     hits glass sphere at distance 69.2005, shader Layered\n",
+                    " ".repeat(2 * (i % 6))
+                )
+            })
+            .collect()
+    }
+
+    #[test]
+    fn on_a_projector_with_every_panel_open_the_picture_is_the_largest_thing() {
+        let window = Headless::open(PROJECTOR);
+        let layout = window.viewer.layout(&window.ctx);
+        assert!(layout.pixel.is_some(), "the pixel's report is open");
+        // The picture as drawn: the widget under the pointer at the layout's picture's centre.
+        let mut window = window;
+        window.frames(1, vec![Event::PointerMoved(layout.picture.center())]);
+        let (_, picture) = window.under_pointer().expect("the picture is under the pointer");
+        let width = window.size.x;
+        assert!(picture.width() >= 0.6 * width, "the picture is {} of {width} points wide", picture.width());
+        assert!((picture.width() / picture.height() - 4.0 / 3.0).abs() < 0.01, "{picture:?}");
+        // Every other part of the window is smaller, and none covers it.
+        let pixel = layout.pixel.unwrap();
+        for part in [layout.options, pixel, layout.status] {
+            assert!(part.area() < picture.area() && !part.intersects(picture.shrink(1.0)), "{part:?}, {picture:?}");
+        }
+    }
+
+    #[test]
+    fn a_ticked_box_stays_under_the_pointer_and_the_next_click_unticks_it() {
+        let mut window = Headless::open(PROJECTOR);
+        let layout = window.viewer.layout(&window.ctx);
+        // Scrolled down to the steps, as a teacher does, the pointer over the options.
+        let over = layout.options.center();
+        let wheel = Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Point,
+            delta: vec2(0.0, -5000.0),
+            modifiers: Modifiers::NONE,
+        };
+        window.frames(1, vec![Event::PointerMoved(over)]);
+        window.frames(20, vec![wheel]);
+        let boxes = window.clickable_in(layout.options);
+        let last = *boxes.last().expect("a box in the options");
+        let at = pos2(last.min.x + 6.0, last.center().y);
+        let before = window.ticked();
+        window.click(at);
+        let after = window.ticked();
+        let toggled: Vec<usize> = (0..before.len()).filter(|&i| before[i] != after[i]).collect();
+        assert_eq!(toggled.len(), 1, "one step toggled: {before:?} -> {after:?}");
+        let under = window.under_pointer().expect("a box under the pointer");
+        // What the toggle brings: the render starts again, a message, a new picture, the pixel's tree traced
+        // again (longer), the status of the new render.
+        window.example_sends(|shown| {
+            shown.message = "rendering with the steps changed".into();
+            shown.status.tiles_total = 300;
+            shown.dirty = true;
+            shown.picked = Some(Picked { x: 320, y: 200, sees: "hits the floor".into(), tree: tree(40), picture: 0 });
+        });
+        window.frames(10, Vec::new());
+        assert_eq!(window.under_pointer(), Some(under), "the box moved from under the pointer");
+        window.click(at);
+        assert_eq!(window.ticked(), before, "the next click at the same place unticks the same box");
+    }
 
     /// Every wrapped line fits, no character but the spaces it breaks at is lost, and a continuation is
     /// indented deeper than the line it continues: the tree's shape stays.

@@ -16,11 +16,13 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::process::Command;
 use std::time::Duration;
 
-/// One exercise: its name (its file is `exercises/src/<name>.rs`), whether it is handed out, how its facts
-/// are checked, and the example whose default picture uses it.
+/// One exercise: its name (its file is `exercises/src/<name>.rs`), whether it is handed out, whether the
+/// workbook's own function for it is taken out of this copy (`exercises::TAKEN_OUT`), how its facts are
+/// checked, and the example whose default picture checks it.
 pub struct Exercise {
     pub name: &'static str,
     pub handed_out: bool,
+    pub taken_out: bool,
     pub facts: Box<dyn Fn() -> Facts>,
     pub example: &'static str,
 }
@@ -32,8 +34,45 @@ impl Exercise {
         facts: impl Fn() -> Facts + 'static,
         example: &'static str,
     ) -> Exercise {
-        Exercise { name, handed_out, facts: Box::new(facts), example }
+        let taken_out = exercises::listed(exercises::TAKEN_OUT, name);
+        Exercise { name, handed_out, taken_out, facts: Box::new(facts), example }
     }
+}
+
+/// The exercises each picture the grader checks is drawn with, in the order of the slides: what the
+/// workbook's example, rendered at its default settings, asks the exercises' hooks for (the grader's own
+/// tests list them while drawing, `drawing_and_listing_hooks`). In a students' copy, where the workbook's own
+/// function of an exercise handed out is not there to draw around its blank, the render stops at the first
+/// blank it meets, and this table names the others the picture waits for.
+pub const PICTURES: &[(&str, &[&str])] = &[
+    ("bitmap_textures", &["bilinear", "faceforward"]),
+    ("model_transform", &["bilinear", "transform_inverse", "faceforward"]),
+    ("fresnel", &["bilinear", "cube_map", "faceforward", "refract", "layered_blend", "fresnel_schlick"]),
+    ("reflect_v02", &["bilinear", "transform_inverse", "faceforward"]),
+    ("refract", &["bilinear", "transform_inverse", "faceforward", "refract"]),
+    (
+        "layered",
+        &[
+            "bilinear",
+            "transform_inverse",
+            "cube_map",
+            "faceforward",
+            "refract",
+            "layered_blend",
+            "fresnel_schlick",
+            "fresnel_exact",
+        ],
+    ),
+    ("glossy", &["bilinear", "transform_inverse", "faceforward", "glossy_disc", "glossy_cone"]),
+    (
+        "photon_map",
+        &["transform_inverse", "faceforward", "refract", "layered_blend", "fresnel_schlick", "photon_estimate"],
+    ),
+];
+
+/// The exercises the picture of `example` is drawn with ([`PICTURES`]; none for an example not in it).
+pub fn uses(example: &str) -> &'static [&'static str] {
+    PICTURES.iter().find(|(name, _)| *name == example).map_or(&[], |(_, uses)| uses)
 }
 
 /// The workbook's exercises, in the order of the slides, checked with the functions in the `exercises` crate.
@@ -110,10 +149,20 @@ pub enum Verdict {
     /// function: `todo!("glossy_disc: concentric_disc")`), empty for a bare `todo!()`.
     NotWritten(String),
     /// Every fact holds, but the picture also needs other exercises that are not written yet: their names,
-    /// every one the picture met (empty when a blank's `todo!()` did not name its exercise).
-    PictureWaits { example: String, on: Vec<String> },
-    /// Set to `false` in `exercises::handed_out`: the workbook's own function is used.
+    /// every one the picture uses that is blank, in the order of the slides (empty when a blank's `todo!()`
+    /// did not name its exercise), and those of them whose workbook's own function this copy has not (which
+    /// leaving out of `HANDED_OUT` would not help).
+    PictureWaits { example: String, on: Vec<String>, taken_out: Vec<String> },
+    /// Left out of `HANDED_OUT`: the workbook's own function is used.
     NotHandedOut,
+    /// Left out of `HANDED_OUT` in a copy that has not the workbook's own function for it either: its
+    /// `todo!()` stops every picture that uses it.
+    LeftOutWithoutOwn,
+}
+
+/// `names` as the verdicts list them: `` `a`, `b` ``.
+fn quoted(names: &[String]) -> String {
+    names.iter().map(|name| format!("`{name}`")).collect::<Vec<_>>().join(", ")
 }
 
 impl fmt::Display for Verdict {
@@ -125,22 +174,45 @@ impl fmt::Display for Verdict {
             Verdict::Failed(why) => write!(f, "FAILED: {why}"),
             Verdict::NotWritten(what) if what.is_empty() => write!(f, "not yet written: a todo!() is still there"),
             Verdict::NotWritten(what) => write!(f, "not yet written: todo!(\"{what}\") is still there"),
-            Verdict::PictureWaits { example, on } if on.is_empty() => write!(
+            Verdict::PictureWaits { example, on, .. } if on.is_empty() => write!(
                 f,
                 "every fact holds; the picture of `{example}` is not checked yet: it also needs a function with a \
                  todo!() in it"
             ),
-            Verdict::PictureWaits { example, on } => {
-                let names = on.iter().map(|name| format!("`{name}`")).collect::<Vec<_>>().join(", ");
+            Verdict::PictureWaits { example, on, taken_out } => {
                 let (which, them) = if on.len() == 1 { ("which is", "it") } else { ("which are", "them") };
                 write!(
                     f,
-                    "every fact holds; the picture of `{example}` is not checked yet: it also needs {names}, {which} \
-                     not written yet (or leave {them} out of HANDED_OUT in exercises/src/lib.rs to draw the picture \
-                     with the workbook's own)"
-                )
+                    "every fact holds; the picture of `{example}` is not checked yet: it also needs {}, {which} not \
+                     written yet",
+                    quoted(on)
+                )?;
+                // Leaving an exercise out of HANDED_OUT draws with the workbook's own function, where the copy
+                // has one: the advice names only those.
+                let own: Vec<String> = on.iter().filter(|name| !taken_out.contains(name)).cloned().collect();
+                if own.is_empty() {
+                    write!(f, ": write {them}, and the picture is checked (this copy does not hold the workbook's own)")
+                } else if own.len() == on.len() {
+                    write!(
+                        f,
+                        " (or leave {them} out of HANDED_OUT in exercises/src/lib.rs to draw the picture with the workbook's own)"
+                    )
+                } else {
+                    write!(
+                        f,
+                        ": write them, or leave {} out of HANDED_OUT in exercises/src/lib.rs to draw with the \
+                         workbook's own (this copy does not hold the workbook's own {})",
+                        quoted(&own),
+                        quoted(taken_out)
+                    )
+                }
             }
             Verdict::NotHandedOut => write!(f, "not handed out (the workbook's own function is used)"),
+            Verdict::LeftOutWithoutOwn => write!(
+                f,
+                "not handed out, and this copy does not hold the workbook's own function either: every picture that uses \
+                 it stops at its todo!() (put it back in HANDED_OUT in exercises/src/lib.rs and write it)"
+            ),
         }
     }
 }
@@ -222,20 +294,34 @@ pub fn grade(exercises: &[Exercise], check_picture: &dyn Fn(&str) -> Result<(), 
 }
 
 /// The verdicts, from each exercise's facts (`facts`) and the picture of each example (`picture`, asked once
-/// an example).
+/// an example). A picture that needs blanks waits on every one of them it uses ([`uses`]), met or not: in a
+/// students' copy the render stops at the first.
 fn grade_with(
     exercises: &[Exercise],
     facts: &dyn Fn(&Exercise) -> Result<(), Verdict>,
     picture: &dyn Fn(&str) -> Picture,
 ) -> Vec<Verdict> {
+    let checked: Vec<Result<(), Verdict>> = exercises
+        .iter()
+        .map(|exercise| match (exercise.handed_out, exercise.taken_out) {
+            (true, _) => facts(exercise),
+            (false, false) => Err(Verdict::NotHandedOut),
+            (false, true) => Err(Verdict::LeftOutWithoutOwn),
+        })
+        .collect();
+    // The exercises whose function stops a picture: blanks, and those with no function at all.
+    let blank: Vec<&str> = exercises
+        .iter()
+        .zip(&checked)
+        .filter(|(_, checked)| matches!(checked, Err(Verdict::NotWritten(_) | Verdict::LeftOutWithoutOwn)))
+        .map(|(exercise, _)| exercise.name)
+        .collect();
     let mut pictures: HashMap<&str, Picture> = HashMap::new();
     exercises
         .iter()
-        .map(|exercise| {
-            if !exercise.handed_out {
-                return Verdict::NotHandedOut;
-            }
-            if let Err(verdict) = facts(exercise) {
+        .zip(checked)
+        .map(|(exercise, checked)| {
+            if let Err(verdict) = checked {
                 return verdict;
             }
             let example = exercise.example.to_string();
@@ -245,10 +331,14 @@ fn grade_with(
                 Picture::Needs(blanks) => match blanks.iter().find(|what| exercise_of(what) == exercise.name) {
                     Some(what) => Verdict::NotWritten(what.clone()),
                     None => {
-                        let mut on: Vec<String> = blanks.iter().map(|what| exercise_of(what).to_string()).collect();
-                        on.dedup();
-                        on.retain(|name| !name.is_empty());
-                        Verdict::PictureWaits { example, on }
+                        let met = |name: &str| blanks.iter().any(|what| exercise_of(what) == name);
+                        let waits = |e: &&Exercise| {
+                            met(e.name) || (blank.contains(&e.name) && uses(&example).contains(&e.name))
+                        };
+                        let on: Vec<&Exercise> = exercises.iter().filter(waits).collect();
+                        let taken_out = on.iter().filter(|e| e.taken_out).map(|e| e.name.to_string()).collect();
+                        let on = on.iter().map(|e| e.name.to_string()).collect();
+                        Verdict::PictureWaits { example, on, taken_out }
                     }
                 },
             }
@@ -387,6 +477,7 @@ pub fn report(exercises: &[Exercise], verdicts: &[Verdict]) -> String {
     let width = exercises.iter().map(|e| e.name.len()).max().unwrap_or(0);
     let mut lines: Vec<String> =
         exercises.iter().zip(verdicts).map(|(e, v)| format!("  {:<width$}  {v}", e.name)).collect();
+    // An exercise left out of a copy's HANDED_OUT without the workbook's own is still one of its own.
     let handed_out = verdicts.iter().filter(|v| **v != Verdict::NotHandedOut).count();
     let passed = verdicts.iter().filter(|v| matches!(v, Verdict::Passed { .. })).count();
     lines.push(String::new());
