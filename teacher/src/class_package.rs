@@ -68,11 +68,12 @@ impl ClassPackage {
         Ok(ClassPackage { manifest, target: target.to_path_buf() })
     }
 
-    /// Builds the workbook's library (and what it depends on) for the class, once, before any submission, so
-    /// that no student's build time limit pays for it; its messages into the file `log`. Fails with the first
+    /// Builds the workbook's library (and what it depends on; not the workbook's own programs) for the class,
+    /// once, before any submission, so that no student's build time limit pays for it; its messages into the
+    /// file `log`. Fails with the first
     /// error, naming the log.
     pub fn build_library(&self, limits: &Limits, log: &Path) -> Result<(), String> {
-        let mut command = cargo(&["build", "--release", "--message-format", "short", "-p", "lecture6"]);
+        let mut command = cargo(&["build", "--release", "--message-format", "short", "-p", "lecture6", "--lib"]);
         command.arg("--manifest-path").arg(&self.manifest).env("CARGO_TARGET_DIR", &self.target);
         let finished = run_logged(&mut command, limits, log)?;
         if finished.ending.succeeded() {
@@ -115,7 +116,8 @@ pub fn cargo(args: &[&str]) -> Command {
     command
 }
 
-/// Runs `command` under `limits`, its output and errors into the file `log`, its input closed.
+/// Runs `command` under `limits`, its output and errors into the file `log` as it goes (a build's messages,
+/// to be read while it runs), its input closed.
 pub fn run_logged(command: &mut Command, limits: &Limits, log: &Path) -> Result<limits::Finished, String> {
     let file = std::fs::File::create(log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
     let err = file.try_clone().map_err(|e| format!("cannot write {}: {e}", log.display()))?;
@@ -153,12 +155,49 @@ fn manifest_text(workbook_doc: &DocumentMut, workbook: &Path, examples: &[(Strin
     }
     doc["example"] = Item::ArrayOfTables(targets);
     let mut profile = workbook_doc.get("profile").cloned().unwrap_or_else(|| Item::Table(Table::new()));
+    as_members(&mut profile, &members(workbook_doc, workbook));
     let own = &mut profile["release"]["package"][NAME];
     own["opt-level"] = value(i64::from(opt_level));
     own["debug"] = value(false);
     doc["profile"] = profile;
     doc["workspace"] = Item::Table(Table::new());
     doc.to_string()
+}
+
+/// The names of the workbook's own packages: its root's and its workspace members'.
+fn members(workbook_doc: &DocumentMut, workbook: &Path) -> Vec<String> {
+    let name = |doc: &DocumentMut| doc.get("package")?.get("name")?.as_str().map(String::from);
+    let listed = workbook_doc.get("workspace").and_then(|w| w.get("members")).and_then(Item::as_array);
+    let member = |path: &str| {
+        let text = std::fs::read_to_string(workbook.join(path).join("Cargo.toml")).ok()?;
+        name(&text.parse().ok()?)
+    };
+    let members = listed.into_iter().flatten().filter_map(|path| member(path.as_str()?));
+    name(workbook_doc).into_iter().chain(members).collect()
+}
+
+/// Gives the workbook's own packages `members`, in each profile of `profile`, the settings they have in the
+/// workbook's workspace, where they are members: there a profile's `package."*"` (the dependencies'
+/// settings, such as release's `debug = false`) does not apply to them, here it would, and the library
+/// would be built again for the class with other settings. A setting the profile leaves at cargo's default
+/// is left as `"*"` has it.
+fn as_members(profile: &mut Item, members: &[String]) {
+    let Some(profiles) = profile.as_table_like_mut() else { return };
+    for (_, settings) in profiles.iter_mut() {
+        let Some(settings) = settings.as_table_like_mut() else { continue };
+        let all = settings.get("package").and_then(|p| p.get("*")).and_then(Item::as_table_like);
+        let own: Vec<(String, Item)> = all
+            .into_iter()
+            .flat_map(|all| all.iter())
+            .filter_map(|(key, _)| Some((key.to_string(), settings.get(key)?.clone())))
+            .collect();
+        for member in members {
+            for (key, item) in &own {
+                settings.entry("package").or_insert(Item::Table(Table::new()))[member.as_str()][key.as_str()] =
+                    item.clone();
+            }
+        }
+    }
 }
 
 /// `link` made to lead to the folder `target`.
@@ -213,8 +252,10 @@ mod tests {
 
     #[test]
     fn the_manifest_takes_the_workbooks_profiles_and_lists_every_submission() {
-        let workbook: DocumentMut =
-            "[package]\nname = \"lecture6\"\n[profile.release]\ncodegen-units = 16\n".parse().expect("a manifest");
+        let workbook: DocumentMut = "[package]\nname = \"lecture6\"\n[profile.release]\ncodegen-units = 16\n\
+            debug = \"line-tables-only\"\n[profile.release.package.\"*\"]\ndebug = false\n"
+            .parse()
+            .expect("a manifest");
         let examples = [("s001_alice".to_string(), PathBuf::from("/class/hw \"1\"/alice.rs"))];
         let text = manifest_text(&workbook, Path::new("/work/lecture6"), &examples, 0);
         let doc: DocumentMut = text.parse().expect("the manifest written is TOML");
@@ -222,5 +263,8 @@ mod tests {
         assert_eq!(doc["dependencies"]["lecture6"]["path"].as_str(), Some("/work/lecture6"));
         assert_eq!(doc["profile"]["release"]["codegen-units"].as_integer(), Some(16));
         assert_eq!(doc["profile"]["release"]["package"][NAME]["opt-level"].as_integer(), Some(0));
+        // The library keeps the settings it has in the workbook, where `"*"` does not apply to it.
+        assert_eq!(doc["profile"]["release"]["package"]["*"]["debug"].as_bool(), Some(false));
+        assert_eq!(doc["profile"]["release"]["package"]["lecture6"]["debug"].as_str(), Some("line-tables-only"));
     }
 }
