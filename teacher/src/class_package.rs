@@ -155,7 +155,7 @@ fn manifest_text(workbook_doc: &DocumentMut, workbook: &Path, examples: &[(Strin
     }
     doc["example"] = Item::ArrayOfTables(targets);
     let mut profile = workbook_doc.get("profile").cloned().unwrap_or_else(|| Item::Table(Table::new()));
-    as_members(&mut profile, &members(workbook_doc, workbook));
+    as_members(&mut profile, &members(workbook_doc));
     let own = &mut profile["release"]["package"][NAME];
     own["opt-level"] = value(i64::from(opt_level));
     own["debug"] = value(false);
@@ -164,38 +164,34 @@ fn manifest_text(workbook_doc: &DocumentMut, workbook: &Path, examples: &[(Strin
     doc.to_string()
 }
 
-/// The names of the workbook's own packages: its root's and its workspace members'.
-fn members(workbook_doc: &DocumentMut, workbook: &Path) -> Vec<String> {
-    let name = |doc: &DocumentMut| doc.get("package")?.get("name")?.as_str().map(String::from);
-    let listed = workbook_doc.get("workspace").and_then(|w| w.get("members")).and_then(Item::as_array);
-    let member = |path: &str| {
-        let text = std::fs::read_to_string(workbook.join(path).join("Cargo.toml")).ok()?;
-        name(&text.parse().ok()?)
-    };
-    let members = listed.into_iter().flatten().filter_map(|path| member(path.as_str()?));
-    name(workbook_doc).into_iter().chain(members).collect()
+/// The names of the workbook's own packages a class builds: the library's, and those it depends on by path
+/// (not the optional ones: the class turns no feature on).
+fn members(workbook_doc: &DocumentMut) -> Vec<String> {
+    let package = workbook_doc.get("package").and_then(|p| p.get("name")).and_then(Item::as_str);
+    let dependencies = workbook_doc.get("dependencies").and_then(Item::as_table_like);
+    let by_path = dependencies.into_iter().flat_map(|deps| deps.iter()).filter_map(|(name, dependency)| {
+        let optional = dependency.get("optional").and_then(Item::as_bool).unwrap_or(false);
+        (dependency.get("path").is_some() && !optional).then(|| name.to_string())
+    });
+    package.map(String::from).into_iter().chain(by_path).collect()
 }
 
-/// Gives the workbook's own packages `members`, in each profile of `profile`, the settings they have in the
-/// workbook's workspace, where they are members: there a profile's `package."*"` (the dependencies'
-/// settings, such as release's `debug = false`) does not apply to them, here it would, and the library
-/// would be built again for the class with other settings. A setting the profile leaves at cargo's default
-/// is left as `"*"` has it.
+/// Gives the workbook's own packages `members`, in the release profile of `profile`, the settings they have
+/// in the workbook's workspace, where they are members: there the profile's `package."*"` (the
+/// dependencies' settings, `debug = false`) does not apply to them, here it would, and the library would be
+/// built again for the class with other settings. A setting the profile leaves at cargo's default is left as
+/// `"*"` has it.
 fn as_members(profile: &mut Item, members: &[String]) {
-    let Some(profiles) = profile.as_table_like_mut() else { return };
-    for (_, settings) in profiles.iter_mut() {
-        let Some(settings) = settings.as_table_like_mut() else { continue };
-        let all = settings.get("package").and_then(|p| p.get("*")).and_then(Item::as_table_like);
-        let own: Vec<(String, Item)> = all
-            .into_iter()
-            .flat_map(|all| all.iter())
-            .filter_map(|(key, _)| Some((key.to_string(), settings.get(key)?.clone())))
-            .collect();
-        for member in members {
-            for (key, item) in &own {
-                settings.entry("package").or_insert(Item::Table(Table::new()))[member.as_str()][key.as_str()] =
-                    item.clone();
-            }
+    let Some(release) = profile.get_mut("release").and_then(Item::as_table_like_mut) else { return };
+    let all = release.get("package").and_then(|p| p.get("*")).and_then(Item::as_table_like);
+    let own: Vec<(String, Item)> = all
+        .into_iter()
+        .flat_map(|all| all.iter())
+        .filter_map(|(key, _)| Some((key.to_string(), release.get(key)?.clone())))
+        .collect();
+    for member in members {
+        for (key, item) in &own {
+            release.entry("package").or_insert(Item::Table(Table::new()))[member.as_str()][key.as_str()] = item.clone();
         }
     }
 }
@@ -252,8 +248,10 @@ mod tests {
 
     #[test]
     fn the_manifest_takes_the_workbooks_profiles_and_lists_every_submission() {
-        let workbook: DocumentMut = "[package]\nname = \"lecture6\"\n[profile.release]\ncodegen-units = 16\n\
-            debug = \"line-tables-only\"\n[profile.release.package.\"*\"]\ndebug = false\n"
+        let workbook: DocumentMut = "[package]\nname = \"lecture6\"\n[dependencies]\nglam = \"0.34\"\n\
+            protocol = { path = \"protocol\" }\nexercises = { path = \"exercises\", optional = true }\n\
+            [profile.release]\ncodegen-units = 16\ndebug = \"line-tables-only\"\n\
+            [profile.release.package.\"*\"]\ndebug = false\n"
             .parse()
             .expect("a manifest");
         let examples = [("s001_alice".to_string(), PathBuf::from("/class/hw \"1\"/alice.rs"))];
@@ -265,6 +263,10 @@ mod tests {
         assert_eq!(doc["profile"]["release"]["package"][NAME]["opt-level"].as_integer(), Some(0));
         // The library keeps the settings it has in the workbook, where `"*"` does not apply to it.
         assert_eq!(doc["profile"]["release"]["package"]["*"]["debug"].as_bool(), Some(false));
-        assert_eq!(doc["profile"]["release"]["package"]["lecture6"]["debug"].as_str(), Some("line-tables-only"));
+        let packages = doc["profile"]["release"]["package"].as_table_like().expect("the packages' settings");
+        assert_eq!(packages.get("lecture6").and_then(|p| p["debug"].as_str()), Some("line-tables-only"));
+        assert_eq!(packages.get("protocol").and_then(|p| p["debug"].as_str()), Some("line-tables-only"));
+        // Not a registry crate, nor a package the class does not build (cargo warns of a setting for one).
+        assert!(packages.get("glam").is_none() && packages.get("exercises").is_none());
     }
 }
