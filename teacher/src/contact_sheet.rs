@@ -7,7 +7,7 @@
 //! the picture and the report are there to be graded by eye. A huge output's cut ([`crate::kept_output`]) is
 //! said above its last lines. The page needs no network: the pictures are
 //! files beside it. Its colours keep a contrast of at least 4.5:1 (WCAG's AA for text) for every text and
-//! link colour on every background of the page ([`STYLE`]), and its text is large, for a projector.
+//! link colour on every background of the page (its `STYLE`), and its text is large, for a projector.
 
 use crate::class::{REFERENCE_PICTURE, Row, TimeLimit};
 use crate::kept_output::is_cut_line;
