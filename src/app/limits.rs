@@ -3,18 +3,22 @@
 //! exercise this way, so that an infinite loop, a runaway render or a memory hog stops that one program and
 //! the rest of the class, or of the exercises, is graded on.
 //!
-//! The program runs in a process group of its own: at its time limit the whole group is killed, so a
-//! `cargo build` stops with every `rustc` it started. The memory limit is the program's address space
-//! (`RLIMIT_AS`), past which an allocation fails (a Rust program aborts with "memory allocation of N bytes
-//! failed"); the output limit is the largest file it may write (`RLIMIT_FSIZE`), past which the write fails
-//! with `SIGXFSZ`. Both are set between `fork` and `exec`, on Unix; elsewhere only the time limit holds.
-//! While a limited program runs, INT, TERM and HUP sent to this process end that program's group too
-//! ([`stop_children_on_signals`]), since it no longer shares the terminal's.
+//! The program runs in a process group of its own. Its time limit is wall-clock time, and, where one is
+//! given ([`run_with_cpu_limit`]), the processor time it has taken (user and system, all its threads; read
+//! from Linux's `/proc/PID/stat` while it runs, and from `wait4` when it ends): a CPU limit is fair to
+//! programs run side by side on a busy machine, where the wall clock would charge each for the others. At a
+//! limit the group is asked to stop first (TERM: an example then removes the temporary file of a picture it
+//! is writing) and killed [`GRACE`] later if it has not, so a `cargo build` stops with every `rustc` it
+//! started. The memory limit is the program's address space (`RLIMIT_AS`), past which an allocation fails (a
+//! Rust program aborts with "memory allocation of N bytes failed"); the output limit is the largest file it
+//! may write (`RLIMIT_FSIZE`), past which the write fails with `SIGXFSZ`. Both are set between `fork` and
+//! `exec`, on Unix; elsewhere only the wall-clock limit holds, and a program at it is killed outright. While
+//! limited programs run, INT, TERM and HUP sent to this process end their groups too
+//! ([`stop_children_on_signals`]), since they no longer share the terminal's.
 
 use std::process::{Child, Command, ExitStatus};
-use std::sync::atomic::{AtomicI32, Ordering};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
-use wait_timeout::ChildExt;
 
 /// What a limited program may use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,7 +39,7 @@ pub enum Ending {
     /// A signal ended it (not ours): its number. `SIGABRT` (6) is how a Rust program ends when an
     /// allocation fails or its stack overflows, `SIGXFSZ` (25) a file past the output limit.
     Signal(i32),
-    /// It ran past its time limit and was killed, with its process group.
+    /// It ran past its time limit (wall-clock or CPU) and was stopped, with its process group.
     TimedOut,
 }
 
@@ -46,41 +50,103 @@ impl Ending {
     }
 }
 
-/// A limited program's ending and how long it ran.
+/// A limited program's ending, how long it ran and the processor time it took.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Finished {
     /// How it ended.
     pub ending: Ending,
     /// Wall-clock time from its start to its end (its kill, when it timed out).
     pub elapsed: Duration,
+    /// The processor time it took, user and system, its threads and the children it waited for included;
+    /// `None` where the system does not say (outside Unix).
+    pub cpu: Option<Duration>,
 }
 
-/// The process group of the limited program running now (0: none), for [`stop_children_on_signals`].
-static RUNNING: AtomicI32 = AtomicI32::new(0);
+/// How long a program asked to stop at its time limit (TERM) has to end before it is killed (KILL): an
+/// example's signal handler removes its temporary file in far less (a few milliseconds for a large one).
+pub const GRACE: Duration = Duration::from_secs(2);
+
+/// How often a running program's time is looked at: a program past its limit runs at most this much longer
+/// before it is asked to stop.
+const POLL: Duration = Duration::from_millis(20);
+
+/// The process groups of the limited programs running now, for [`stop_children_on_signals`].
+static RUNNING: Mutex<Vec<u32>> = Mutex::new(Vec::new());
+
+/// A program listed in [`RUNNING`] while it runs.
+struct Listed(u32);
+
+impl Listed {
+    fn new(group: u32) -> Listed {
+        RUNNING.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).push(group);
+        Listed(group)
+    }
+}
+
+impl Drop for Listed {
+    fn drop(&mut self) {
+        RUNNING.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).retain(|&g| g != self.0);
+    }
+}
 
 /// Runs `command` under `limits` and waits for it (its standard streams as the caller set them: a file
-/// each, so that nothing blocks on a full pipe). One limited program at a time.
+/// each, or a pipe the caller reads while it waits). Several limited programs may run at once, from
+/// different threads.
 pub fn run(command: &mut Command, limits: &Limits) -> std::io::Result<Finished> {
+    run_with_cpu_limit(command, limits, None)
+}
+
+/// [`run`], the program stopped as well once it has taken `cpu` of processor time. Where its processor time
+/// cannot be read while it runs (outside Linux), `cpu` is a wall-clock limit.
+pub fn run_with_cpu_limit(command: &mut Command, limits: &Limits, cpu: Option<Duration>) -> std::io::Result<Finished> {
     confine(command, limits);
     let start = Instant::now();
     let mut child = command.spawn()?;
-    let group = i32::try_from(child.id()).unwrap_or(0);
-    RUNNING.store(group, Ordering::SeqCst);
-    let waited = child.wait_timeout(limits.time);
-    let ending = match waited {
-        Ok(Some(status)) => Ok(ending_of(status)),
-        Ok(None) => kill(&mut child, group).map(|()| Ending::TimedOut),
-        Err(e) => kill(&mut child, group).and(Err(e)),
+    let _listed = Listed::new(child.id());
+    let over = |child: &Child| {
+        let elapsed = start.elapsed();
+        elapsed >= limits.time || cpu.is_some_and(|cpu| running_cpu_time(child).unwrap_or(elapsed) >= cpu)
     };
-    RUNNING.store(0, Ordering::SeqCst);
-    Ok(Finished { ending: ending?, elapsed: start.elapsed() })
+    loop {
+        if let Some((status, used)) = reap(&mut child)? {
+            return Ok(Finished { ending: ending_of(status), elapsed: start.elapsed(), cpu: used });
+        }
+        if over(&child) {
+            let (_, used) = stop(&mut child)?;
+            return Ok(Finished { ending: Ending::TimedOut, elapsed: start.elapsed(), cpu: used });
+        }
+        std::thread::sleep(POLL);
+    }
 }
 
-/// Kills the program's process group (the program itself where there are no groups) and reaps it.
-fn kill(child: &mut Child, group: i32) -> std::io::Result<()> {
-    kill_group(group);
-    let _ = child.kill();
-    child.wait().map(|_| ())
+/// Asks the program's group to stop (TERM), kills it [`GRACE`] later if the program has not ended (KILL),
+/// and reaps it; then kills what is left of its group (a child that outlived it).
+fn stop(child: &mut Child) -> std::io::Result<(ExitStatus, Option<Duration>)> {
+    signal_group(child, Signal::Terminate);
+    let asked = Instant::now();
+    while asked.elapsed() < GRACE {
+        if let Some(ended) = reap(child)? {
+            signal_group(child, Signal::Kill);
+            return Ok(ended);
+        }
+        std::thread::sleep(POLL);
+    }
+    signal_group(child, Signal::Kill);
+    loop {
+        if let Some(ended) = reap(child)? {
+            return Ok(ended);
+        }
+        std::thread::sleep(POLL);
+    }
+}
+
+/// The signals a limited program's group is sent.
+#[derive(Clone, Copy)]
+enum Signal {
+    /// TERM: stop, after cleaning up.
+    Terminate,
+    /// KILL: stop now.
+    Kill,
 }
 
 /// The [`Ending`] an exit status says.
@@ -90,6 +156,58 @@ fn ending_of(status: ExitStatus) -> Ending {
         return Ending::Signal(signal);
     }
     Ending::Exited(status.code().unwrap_or(-1))
+}
+
+/// The program's exit status and processor time if it has ended (reaping it), `None` while it runs.
+#[cfg(unix)]
+fn reap(child: &mut Child) -> std::io::Result<Option<(ExitStatus, Option<Duration>)>> {
+    use std::os::unix::process::ExitStatusExt;
+    let pid = libc::pid_t::try_from(child.id()).map_err(std::io::Error::other)?;
+    let mut status = 0;
+    // SAFETY: an all-zero rusage is a valid value of this plain C struct.
+    #[allow(unsafe_code)]
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    loop {
+        // SAFETY: wait4 writes only to the two locals it is given; the pid is our own child's, not yet
+        // reaped (it is reaped here only, once).
+        #[allow(unsafe_code)]
+        let reaped = unsafe { libc::wait4(pid, &mut status, libc::WNOHANG, &mut usage) };
+        match reaped {
+            0 => return Ok(None),
+            -1 if std::io::Error::last_os_error().kind() == std::io::ErrorKind::Interrupted => continue,
+            -1 => return Err(std::io::Error::last_os_error()),
+            _ => break,
+        }
+    }
+    let seconds = |t: libc::timeval| Duration::new(t.tv_sec as u64, t.tv_usec as u32 * 1000);
+    Ok(Some((ExitStatus::from_raw(status), Some(seconds(usage.ru_utime) + seconds(usage.ru_stime)))))
+}
+
+/// Elsewhere the exit status alone.
+#[cfg(not(unix))]
+fn reap(child: &mut Child) -> std::io::Result<Option<(ExitStatus, Option<Duration>)>> {
+    Ok(child.try_wait()?.map(|status| (status, None)))
+}
+
+/// The processor time the running program has taken so far (user and system, all its threads), from Linux's
+/// `/proc/PID/stat`; `None` where it cannot be read.
+#[cfg(target_os = "linux")]
+fn running_cpu_time(child: &Child) -> Option<Duration> {
+    let stat = std::fs::read_to_string(format!("/proc/{}/stat", child.id())).ok()?;
+    // The fields after the command's name (which may hold spaces and parentheses): the state is field 3,
+    // utime and stime are fields 14 and 15, in clock ticks.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    let ticks: u64 = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
+    // SAFETY: sysconf only reads a constant of the system.
+    #[allow(unsafe_code)]
+    let per_second = unsafe { libc::sysconf(libc::_SC_CLK_TCK) };
+    (per_second > 0).then(|| Duration::from_secs_f64(ticks as f64 / per_second as f64))
+}
+
+/// Elsewhere a running program's processor time is not read.
+#[cfg(not(target_os = "linux"))]
+fn running_cpu_time(_child: &Child) -> Option<Duration> {
+    None
 }
 
 /// Sets up `command` to start in a process group of its own, with the memory and output limits.
@@ -120,22 +238,39 @@ fn confine(command: &mut Command, limits: &Limits) {
 #[cfg(not(unix))]
 fn confine(_command: &mut Command, _limits: &Limits) {}
 
-/// Kills the process group `group` (0: none).
+/// Sends `signal` to the process group of the program `child` leads.
 #[cfg(unix)]
-fn kill_group(group: i32) {
-    if group > 0 {
+fn signal_group(child: &Child, signal: Signal) {
+    kill_group(child.id(), signal);
+}
+
+/// Elsewhere there are no groups: the program alone is killed, at once.
+#[cfg(not(unix))]
+fn signal_group(child: &mut Child, signal: Signal) {
+    if let Signal::Kill = signal {
+        let _ = child.kill();
+    }
+}
+
+/// Sends `signal` to the process group `group`.
+#[cfg(unix)]
+fn kill_group(group: u32, signal: Signal) {
+    let signal = match signal {
+        Signal::Terminate => libc::SIGTERM,
+        Signal::Kill => libc::SIGKILL,
+    };
+    if let Ok(group) = libc::pid_t::try_from(group)
+        && group > 0
+    {
         // SAFETY: kill takes plain integers; a group that is gone already makes it fail, harmlessly.
         #[allow(unsafe_code)]
         unsafe {
-            libc::kill(-group, libc::SIGKILL);
+            libc::kill(-group, signal);
         }
     }
 }
 
-#[cfg(not(unix))]
-fn kill_group(_group: i32) {}
-
-/// Makes INT, TERM and HUP end the limited program running at the time (its whole process group) before
+/// Makes INT, TERM and HUP end the limited programs running at the time (their whole process groups) before
 /// this process ends as they would end it. Call it once, at the start of a program that runs others under
 /// limits; where the handler cannot be installed, nothing changes.
 #[cfg(unix)]
@@ -144,7 +279,9 @@ pub fn stop_children_on_signals() {
     let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else { return };
     std::thread::spawn(move || {
         for signal in signals.forever() {
-            kill_group(RUNNING.load(Ordering::SeqCst));
+            for &group in RUNNING.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).iter() {
+                kill_group(group, Signal::Kill);
+            }
             let _ = signal_hook::low_level::emulate_default_handler(signal);
         }
     });
@@ -192,6 +329,40 @@ mod tests {
             }
         });
         assert!(gone, "the shell's child {sleep} outlived the time limit");
+    }
+
+    #[test]
+    fn a_program_at_its_limit_is_asked_to_stop_before_it_is_killed() {
+        // The shell's handler of TERM removes its file, as an example's removes its temporary picture.
+        let dir = tempfile::tempdir().expect("a temporary folder");
+        let file = dir.path().join("unfinished");
+        let polite = format!("trap 'rm -f {0}; exit 0' TERM; touch {0}; while :; do :; done", file.display());
+        let finished = run(Command::new("sh").args(["-c", &polite]), &limits(0.5)).expect("sh runs");
+        assert_eq!(finished.ending, Ending::TimedOut);
+        assert!(!file.exists(), "the program was not asked to stop: its file is still there");
+        assert!(finished.elapsed < limits(0.5).time + GRACE, "{:?}", finished.elapsed);
+        // One that does not listen is killed after the grace period.
+        let deaf = "trap '' TERM; while :; do :; done";
+        let finished = run(Command::new("sh").args(["-c", deaf]), &limits(0.5)).expect("sh runs");
+        assert_eq!(finished.ending, Ending::TimedOut);
+        assert!(finished.elapsed >= limits(0.5).time + GRACE, "killed before its grace: {:?}", finished.elapsed);
+        assert!(finished.elapsed < Duration::from_secs(10), "{:?}", finished.elapsed);
+    }
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn the_cpu_limit_counts_processor_time_not_the_wall_clock() {
+        let cpu = Duration::from_millis(300);
+        // Waiting takes no processor time: a program that sleeps past its CPU limit finishes.
+        let sleeper = run_with_cpu_limit(Command::new("sleep").arg("0.6"), &limits(30.0), Some(cpu)).expect("runs");
+        assert_eq!(sleeper.ending, Ending::Exited(0));
+        assert!(sleeper.elapsed >= Duration::from_millis(600) && sleeper.cpu < Some(cpu), "{sleeper:?}");
+        // Computing does: a loop is stopped once it has taken its limit.
+        let mut spin = Command::new("sh");
+        spin.args(["-c", "while :; do :; done"]);
+        let spinner = run_with_cpu_limit(&mut spin, &limits(30.0), Some(cpu)).expect("sh runs");
+        assert_eq!(spinner.ending, Ending::TimedOut);
+        assert!(spinner.cpu >= Some(cpu) && spinner.elapsed < Duration::from_secs(10), "{spinner:?}");
     }
 
     #[test]

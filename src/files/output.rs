@@ -199,6 +199,14 @@ fn remove_stale(dir: &Path, path: &Path) {
     }
 }
 
+/// Removes the temporary files that saves to `path` left when their process was killed before it could
+/// remove them (KILL, or a limit the kernel enforces): the rule the next save to `path` follows
+/// ([`save_atomically`]), for a program that runs another and knows it will not write again (the class
+/// command, after a student's program it stopped). A save in progress holds its file locked and keeps it.
+pub fn remove_stale_temporaries(path: &Path) {
+    remove_stale(folder_of(path), path);
+}
+
 /// Whether the open `file` still has a name: a save that found its new temporary file unlocked (before it
 /// locked it) may have removed it as stale.
 fn still_named(file: &std::fs::File) -> std::io::Result<bool> {

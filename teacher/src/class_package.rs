@@ -68,11 +68,12 @@ impl ClassPackage {
         Ok(ClassPackage { manifest, target: target.to_path_buf() })
     }
 
-    /// Builds the workbook's library (and what it depends on) for the class, once, before any submission, so
-    /// that no student's build time limit pays for it; its messages into the file `log`. Fails with the first
+    /// Builds the workbook's library (and what it depends on; not the workbook's own programs) for the class,
+    /// once, before any submission, so that no student's build time limit pays for it; its messages into the
+    /// file `log`. Fails with the first
     /// error, naming the log.
     pub fn build_library(&self, limits: &Limits, log: &Path) -> Result<(), String> {
-        let mut command = cargo(&["build", "--release", "--message-format", "short", "-p", "lecture6"]);
+        let mut command = cargo(&["build", "--release", "--message-format", "short", "-p", "lecture6", "--lib"]);
         command.arg("--manifest-path").arg(&self.manifest).env("CARGO_TARGET_DIR", &self.target);
         let finished = run_logged(&mut command, limits, log)?;
         if finished.ending.succeeded() {
@@ -115,7 +116,8 @@ pub fn cargo(args: &[&str]) -> Command {
     command
 }
 
-/// Runs `command` under `limits`, its output and errors into the file `log`, its input closed.
+/// Runs `command` under `limits`, its output and errors into the file `log` as it goes (a build's messages,
+/// to be read while it runs), its input closed.
 pub fn run_logged(command: &mut Command, limits: &Limits, log: &Path) -> Result<limits::Finished, String> {
     let file = std::fs::File::create(log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
     let err = file.try_clone().map_err(|e| format!("cannot write {}: {e}", log.display()))?;
@@ -153,12 +155,45 @@ fn manifest_text(workbook_doc: &DocumentMut, workbook: &Path, examples: &[(Strin
     }
     doc["example"] = Item::ArrayOfTables(targets);
     let mut profile = workbook_doc.get("profile").cloned().unwrap_or_else(|| Item::Table(Table::new()));
+    as_members(&mut profile, &members(workbook_doc));
     let own = &mut profile["release"]["package"][NAME];
     own["opt-level"] = value(i64::from(opt_level));
     own["debug"] = value(false);
     doc["profile"] = profile;
     doc["workspace"] = Item::Table(Table::new());
     doc.to_string()
+}
+
+/// The names of the workbook's own packages a class builds: the library's, and those it depends on by path
+/// (not the optional ones: the class turns no feature on).
+fn members(workbook_doc: &DocumentMut) -> Vec<String> {
+    let package = workbook_doc.get("package").and_then(|p| p.get("name")).and_then(Item::as_str);
+    let dependencies = workbook_doc.get("dependencies").and_then(Item::as_table_like);
+    let by_path = dependencies.into_iter().flat_map(|deps| deps.iter()).filter_map(|(name, dependency)| {
+        let optional = dependency.get("optional").and_then(Item::as_bool).unwrap_or(false);
+        (dependency.get("path").is_some() && !optional).then(|| name.to_string())
+    });
+    package.map(String::from).into_iter().chain(by_path).collect()
+}
+
+/// Gives the workbook's own packages `members`, in the release profile of `profile`, the settings they have
+/// in the workbook's workspace, where they are members: there the profile's `package."*"` (the
+/// dependencies' settings, `debug = false`) does not apply to them, here it would, and the library would be
+/// built again for the class with other settings. A setting the profile leaves at cargo's default is left as
+/// `"*"` has it.
+fn as_members(profile: &mut Item, members: &[String]) {
+    let Some(release) = profile.get_mut("release").and_then(Item::as_table_like_mut) else { return };
+    let all = release.get("package").and_then(|p| p.get("*")).and_then(Item::as_table_like);
+    let own: Vec<(String, Item)> = all
+        .into_iter()
+        .flat_map(|all| all.iter())
+        .filter_map(|(key, _)| Some((key.to_string(), release.get(key)?.clone())))
+        .collect();
+    for member in members {
+        for (key, item) in &own {
+            release.entry("package").or_insert(Item::Table(Table::new()))[member.as_str()][key.as_str()] = item.clone();
+        }
+    }
 }
 
 /// `link` made to lead to the folder `target`.
@@ -213,8 +248,12 @@ mod tests {
 
     #[test]
     fn the_manifest_takes_the_workbooks_profiles_and_lists_every_submission() {
-        let workbook: DocumentMut =
-            "[package]\nname = \"lecture6\"\n[profile.release]\ncodegen-units = 16\n".parse().expect("a manifest");
+        let workbook: DocumentMut = "[package]\nname = \"lecture6\"\n[dependencies]\nglam = \"0.34\"\n\
+            protocol = { path = \"protocol\" }\nexercises = { path = \"exercises\", optional = true }\n\
+            [profile.release]\ncodegen-units = 16\ndebug = \"line-tables-only\"\n\
+            [profile.release.package.\"*\"]\ndebug = false\n"
+            .parse()
+            .expect("a manifest");
         let examples = [("s001_alice".to_string(), PathBuf::from("/class/hw \"1\"/alice.rs"))];
         let text = manifest_text(&workbook, Path::new("/work/lecture6"), &examples, 0);
         let doc: DocumentMut = text.parse().expect("the manifest written is TOML");
@@ -222,5 +261,12 @@ mod tests {
         assert_eq!(doc["dependencies"]["lecture6"]["path"].as_str(), Some("/work/lecture6"));
         assert_eq!(doc["profile"]["release"]["codegen-units"].as_integer(), Some(16));
         assert_eq!(doc["profile"]["release"]["package"][NAME]["opt-level"].as_integer(), Some(0));
+        // The library keeps the settings it has in the workbook, where `"*"` does not apply to it.
+        assert_eq!(doc["profile"]["release"]["package"]["*"]["debug"].as_bool(), Some(false));
+        let packages = doc["profile"]["release"]["package"].as_table_like().expect("the packages' settings");
+        assert_eq!(packages.get("lecture6").and_then(|p| p["debug"].as_str()), Some("line-tables-only"));
+        assert_eq!(packages.get("protocol").and_then(|p| p["debug"].as_str()), Some("line-tables-only"));
+        // Not a registry crate, nor a package the class does not build (cargo warns of a setting for one).
+        assert!(packages.get("glam").is_none() && packages.get("exercises").is_none());
     }
 }

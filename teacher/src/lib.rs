@@ -14,6 +14,7 @@ pub mod contact_sheet;
 pub mod exercise_grades;
 pub mod gradebook;
 pub mod hand_out;
+pub mod kept_output;
 pub mod rendering;
 pub mod student_readme;
 pub mod submissions;

@@ -1,7 +1,9 @@
 //! The class command on a folder of made-up submissions, one of each kind, all copies of
 //! `examples/refract.rs` (the teacher's reference): unchanged, a changed scene, not compiling, panicking,
-//! looping, a runaway sample count, NaN light, a shader that gains energy, a memory hog. Each row of the
-//! gradebook says what happened to that student, and nothing that happened to one stopped another.
+//! looping, a runaway sample count, NaN light, a shader that gains energy, a memory hog, 20000 samples by
+//! default, and one that writes its picture itself and never finishes. Each row of the gradebook says what
+//! happened to that student, and nothing that happened to one stopped another; the renders are stopped at
+//! the default time limit, derived from the reference's own run, and leave no temporary file.
 //!
 //! A second test grades exercise files: a right answer, one that loops forever, one that does not compile.
 //!
@@ -9,6 +11,8 @@
 //! the class; the exercises' grader in a handed-out copy, once, in the dev profile) and wait out time
 //! limits, so they are run on their own: `cargo test --release -p teacher --test class -- --ignored`
 //! (`.ci/run` does). They run one at a time: they share the target folder.
+
+mod submissions;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -32,122 +36,20 @@ fn run_class(class: &Path, out: &Path, options: &[&str]) {
     assert!(status.success(), "{status:?}");
 }
 
-/// The time limit of each render: long enough for the real ones on a busy machine, the wait of the two
-/// that never end.
-const TIME_LIMIT: &str = "10";
-
-/// The workbook's refraction example, with `from` replaced by `to` (which must be there), and `more`
-/// added at the end.
-fn refract_with(from: &str, to: &str, more: &str) -> String {
-    let example = std::fs::read_to_string(teacher::workbook().join("examples/refract.rs")).expect("the example");
-    assert!(example.contains(from), "examples/refract.rs has no {from:?}");
-    format!("{}{more}", example.replacen(from, to, 1))
-}
-
-/// A copy of the example whose glass is the shader `name`, defined in `definition`.
-fn with_shader(name: &str, definition: &str) -> String {
-    refract_with(
-        "let glass = Arc::new(Refraction::new(self.ior, 0.95));",
-        &format!("let glass = Arc::new({name});"),
-        definition,
-    )
-}
-
-/// The start of the example's `scene`, where a student's first line goes.
-const SCENE: &str = "    fn scene(&self) -> Result<Scene> {\n";
-
-/// The submissions, by student.
-fn submissions() -> Vec<(&'static str, String)> {
-    vec![
-        ("alice", refract_with("", "", "")),
-        ("bob", refract_with("default_value_t = 1.5", "default_value_t = 1.33", "")),
-        ("carol", refract_with("scene.max_depth = 8;", "scene.max_depth = eight;", "")),
-        (
-            "dave",
-            refract_with(
-                SCENE,
-                &format!(
-                    "{SCENE}        if self.ior > 0.0 {{\n            panic!(\"the glass is not ready\");\n        }}\n"
-                ),
-                "",
-            ),
-        ),
-        (
-            "erin",
-            refract_with(
-                SCENE,
-                &format!("{SCENE}        while self.ior > 0.0 {{\n            std::hint::spin_loop();\n        }}\n"),
-                "",
-            ),
-        ),
-        (
-            "frank",
-            with_shader(
-                "Runaway",
-                "\n/// A mirror averaging a billion rays at every hit.\nstruct Runaway;\n\nimpl Shader for Runaway {\n    \
-                 fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {\n        \
-                 let normal = faceforward(info.normal, ray.dir);\n        let mut sum = Color::BLACK;\n        \
-                 for _ in 0..1_000_000_000u32 {\n            sum += ctx.raytrace(&ray.spawn(info, reflect(ray.dir, normal), 1.0));\n        \
-                 }\n        sum * 1e-9\n    }\n}\n",
-            ),
-        ),
-        (
-            "grace",
-            with_shader(
-                "Dark",
-                "\n/// A shader whose light is 0/0.\nstruct Dark;\n\nimpl Shader for Dark {\n    \
-                 fn shade(&self, _ray: &Ray, info: &IntersectionInfo, _ctx: &mut TraceContext) -> Color {\n        \
-                 let nothing = info.distance - info.distance;\n        Color::gray(nothing / nothing)\n    }\n}\n",
-            ),
-        ),
-        (
-            "heidi",
-            with_shader(
-                "Brighter",
-                "\n/// A mirror that gives back half as much light again as it receives.\nstruct Brighter;\n\n\
-                 impl Shader for Brighter {\n    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {\n        \
-                 let normal = faceforward(info.normal, ray.dir);\n        \
-                 ctx.raytrace(&ray.spawn(info, reflect(ray.dir, normal), 1.5)) * 1.5\n    }\n}\n",
-            ),
-        ),
-        (
-            "ivan",
-            refract_with(
-                SCENE,
-                &format!(
-                    "{SCENE}        let hog = vec![1u8; 3 << 30];\n        if hog[hog.len() - 1] == 0 {{\n            \
-                     return Err(Error::parameter(\"--ior\", self.ior, \"never\"));\n        }}\n"
-                ),
-                "",
-            ),
-        ),
-    ]
-}
-
 #[test]
-#[ignore = "builds and runs nine submissions (about two minutes): cargo test --release -p teacher --test class -- --ignored"]
+#[ignore = "builds and runs eleven submissions (about two minutes): cargo test --release -p teacher --test class -- --ignored"]
 fn every_kind_of_submission_gets_its_own_row() {
     let dir = tempfile::tempdir().expect("a temporary folder");
     let class = dir.path().join("hw");
     std::fs::create_dir(&class).expect("the class's folder");
-    for (student, source) in submissions() {
+    for (student, source) in submissions::submissions() {
         std::fs::write(class.join(format!("{student}.rs")), source).expect("a submission");
     }
     let out = dir.path().join("graded");
     let reference = teacher::workbook().join("examples/refract.rs");
     let reference = reference.to_string_lossy();
-    let options = [
-        "--reference",
-        &reference,
-        "--width",
-        "160",
-        "--height",
-        "120",
-        "--time-limit",
-        TIME_LIMIT,
-        "--memory-limit",
-        "1024",
-    ];
+    let options =
+        ["--reference", &reference, "--width", "160", "--height", "120", "--spp", "4", "--memory-limit", "1024"];
     run_class(&class, &out, &options);
     let rows = gradebook(&out.join("gradebook.csv"));
     let row = |student: &str| rows.get(student).unwrap_or_else(|| panic!("no row for {student}"));
@@ -166,10 +68,32 @@ fn every_kind_of_submission_gets_its_own_row() {
     // Panicking: the panic's message, and where.
     assert!(row("dave")["run"].starts_with("panicked at dave.rs:"), "{:?}", row("dave"));
     assert!(row("dave")["run"].ends_with(": the glass is not ready"), "{:?}", row("dave"));
-    // Looping, and a runaway sample count: stopped at the time limit.
-    let stopped = format!("stopped at the time limit of {TIME_LIMIT} s");
-    assert_eq!(row("erin")["run"], stopped);
-    assert_eq!(row("frank")["run"], stopped);
+    // Looping, a runaway sample count, and a write that never ends: stopped at the default time limit, the
+    // floor's here (the reference renders 160 x 120 in a fraction of a second), which every row states.
+    let limit = &row("alice")["time_limit"];
+    assert!(
+        limit.starts_with("5 s of processor time (10 x the reference's 0.") && limit.ends_with(" s, at least 5 s)")
+    );
+    assert!(rows.values().all(|fields| fields["run"].is_empty() || fields["time_limit"] == *limit), "{limit}");
+    for student in ["erin", "frank", "mallory"] {
+        assert_eq!(row(student)["run"], "stopped at the time limit of 5 s of processor time", "{student}");
+        let cpu: f64 = row(student)["cpu_seconds"].parse().expect("its processor time");
+        assert!(cpu >= 5.0, "{student} was stopped after {cpu} s of processor time");
+    }
+    // Mallory was stopped in the middle of writing her picture: no temporary file of it is left.
+    let left: Vec<_> = std::fs::read_dir(out.join("pictures"))
+        .expect("the pictures")
+        .flatten()
+        .map(|entry| entry.file_name().to_string_lossy().into_owned())
+        .filter(|name| name.starts_with('.') || name.contains("mallory"))
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+    // Defaults unlike the reference's, read from the programs: Bob's water, Kate's 20000 samples, which the
+    // class's --spp 4 hid from her picture.
+    assert_eq!(row("bob")["settings"], "--ior 1.33 (the reference's 1.5)");
+    assert_eq!(row("kate")["settings"], "--spp 20000 (the reference's 4)");
+    assert_eq!((row("kate")["run"].as_str(), row("kate")["psnr"].as_str()), ("ok", "99.00"));
+    assert_eq!(row("alice")["settings"], "");
     // NaN light: the end-of-run report's warning.
     assert_eq!(row("grace")["run"], "ok");
     assert!(row("grace")["warnings"].contains("sample(s) came back NaN or infinite"), "{:?}", row("grace"));
@@ -188,6 +112,7 @@ fn every_kind_of_submission_gets_its_own_row() {
     let sheet = std::fs::read_to_string(out.join("index.html")).expect("the contact sheet");
     for (student, fields) in &rows {
         assert!(sheet.contains(&format!("<h2>{student}</h2>")), "{student}");
+        assert!(sheet.contains(&format!("\">{student}</a></td>")), "{student} is not in the summary");
         if fields["run"] == "ok" {
             assert!(out.join(&fields["picture"]).exists(), "{student}'s picture");
             assert!(sheet.contains(&format!("src=\"{}\"", fields["picture"])), "{student}'s picture on the sheet");

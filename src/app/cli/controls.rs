@@ -17,16 +17,17 @@ use std::any::TypeId;
 use std::ffi::OsString;
 
 /// Options (by their ids) that make no sense as a control: the window is already open; saving, comparing
-/// and printing are the window's buttons; a click on the picture traces a pixel; debug views and side by
-/// side pictures are files the command line writes; the render threads are started once, with the window;
-/// the interface's scale is the window's own control. The steps beyond the slides are check boxes of their
+/// and printing are the window's buttons (the defaults are printed for the class command only); a click on
+/// the picture traces a pixel; debug views and side by side pictures are files the command line writes; the
+/// render threads are started once, with the window; the interface's scale is the window's own control. The steps beyond the slides are check boxes of their
 /// own ([`Controls::steps`]) in place of the options that spell them.
-const NOT_CONTROLS: [&str; 18] = [
+const NOT_CONTROLS: [&str; 19] = [
     "help",
     "version",
     "window",
     "output",
     "quiet",
+    "print_defaults",
     "compare",
     "trace_pixel",
     "trace_sample",

@@ -15,6 +15,7 @@
 pub mod commands;
 mod console;
 mod controls;
+mod defaults;
 mod example;
 mod help;
 mod instruments;
@@ -25,6 +26,7 @@ mod values;
 
 pub use console::{print_stderr, print_stdout};
 pub use controls::controls;
+pub use defaults::{DEFAULTS_MARK, defaults_line};
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};
 pub use run::{one_line, render_for_test, run};

@@ -133,6 +133,12 @@ pub struct CommonArgs {
     /// out/EXAMPLE-photons.png]
     #[arg(long, short, help_heading = COMMON)]
     pub output: Option<PathBuf>,
+    /// Print, before the render, one line of the settings this example takes when no option is given: its
+    /// samples, size and ray depth as its scene sets them, and the defaults of its own options
+    /// (`NAME: defaults: --spp 5, --width 640, --height 480, --max-depth 8, --ior 1.5`). The class command
+    /// reads it to show where a student's program differs from the reference.
+    #[arg(long, help_heading = COMMON)]
+    pub print_defaults: bool,
     /// No progress bar, summary, notes or warnings. Errors are still printed, and so is what was asked
     /// for: --compare's result, --trace-pixel's tree, --view's and --side-by-side's lines.
     #[arg(long, short, help_heading = COMMON)]

@@ -3,6 +3,7 @@
 
 use super::commands;
 use super::console::{print_clap, print_stderr, print_stdout};
+use super::defaults::defaults_line;
 use super::example::{Cli, Example};
 use super::help::help_command;
 use crate::files::output::{check_output, keeps_linear_light, save_atomically};
@@ -233,6 +234,9 @@ fn resolved(path: &Path) -> Option<PathBuf> {
 }
 
 fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
+    if args.common.print_defaults {
+        print_stdout(&format!("{}\n", defaults_line::<E>(name)))?;
+    }
     if let Some(pixel) = args.common.trace_pixel {
         print_stdout(&commands::trace_pixel(name, args, pixel)?)?;
         return Ok(());

@@ -12,7 +12,8 @@ use std::time::Duration;
 use teacher::class::{Progress, Settings, grade};
 use teacher::{chosen_exercises, contact_sheet, gradebook, hand_out, target_folder, workbook};
 
-/// The largest file a student's render may write: a picture or its output, far above any picture's size.
+/// The largest file a student's render may write (its picture; its output goes through a pipe, its two ends
+/// kept): far above any picture's size.
 const OUTPUT_LIMIT: u64 = 256 << 20;
 
 /// Grades a folder of submissions: a copied example per student (a file, or a folder with the student's
@@ -38,9 +39,11 @@ struct Args {
     /// More options for every render, as one string (`--args "--ior 1.33"`).
     #[arg(long, value_name = "OPTIONS", allow_hyphen_values = true)]
     args: Option<String>,
-    /// Each student's render is stopped after this many seconds.
-    #[arg(long, value_name = "SECONDS", default_value = "60", value_parser = seconds)]
-    time_limit: Duration,
+    /// Each student's render is stopped once it has taken this many seconds of processor time (it runs on
+    /// one thread, beside others). [default: 10 times what the teacher's example took, at least 5 s; 60 s
+    /// without a teacher's example]
+    #[arg(long, value_name = "SECONDS", value_parser = seconds)]
+    time_limit: Option<Duration>,
     /// Each student's render is stopped past this much memory (address space), in MiB.
     #[arg(long, value_name = "MIB", default_value_t = 2048, value_parser = clap::value_parser!(u64).range(1..))]
     memory_limit: u64,
@@ -83,6 +86,9 @@ fn progress(step: Progress) {
             Ok(()) => format!("rendered in {:.2} s", run.seconds),
             Err(why) => why.clone(),
         };
+        if !row.differences.is_empty() {
+            part.push_str(&format!(", defaults unlike the reference's: {}", row.differences.join(", ")));
+        }
         if !run.warnings.is_empty() {
             part.push_str(&format!(", {} warning(s)", run.warnings.len()));
         }
@@ -130,19 +136,22 @@ fn main() -> ExitCode {
         workbook,
         reference: args.reference.clone(),
         render_args,
-        run_limits: Limits { time: args.time_limit, memory: Some(args.memory_limit << 20), output: Some(OUTPUT_LIMIT) },
+        time_limit: args.time_limit,
+        memory_limit: Some(args.memory_limit << 20),
+        output_limit: Some(OUTPUT_LIMIT),
         build_limits: Limits { time: args.build_time_limit, memory: None, output: None },
         opt_level: args.opt_level,
         exercises: exercises.clone(),
         exercise_time: args.exercise_time_limit,
     };
     let title = format!("{}: {}", args.submissions.display(), settings.render_args.join(" "));
-    let result = grade(&settings, progress).and_then(|rows| {
+    let result = grade(&settings, progress).and_then(|class| {
+        let (rows, limit) = (&class.rows, &class.time_limit);
         let table = out.join("gradebook.csv");
         // A column per exercise when there are grades to put in them.
         let graded = if rows.iter().any(|row| row.grades.is_some()) { exercises.as_slice() } else { &[] };
-        gradebook::write(&rows, graded, &table)?;
-        contact_sheet::write(&rows, &title, settings.reference.is_some(), &out)?;
+        gradebook::write(rows, limit, graded, &table)?;
+        contact_sheet::write(rows, limit, &title, settings.reference.is_some(), &out)?;
         Ok((rows.len(), table))
     });
     match result {
