@@ -48,7 +48,7 @@
 //! shader gains on at least 1% of those hits.
 //!
 //! Nor does it cost the workbook's own nodes anything: where a node's shape and every shader of it are the
-//! workbook's own ([`Node::is_workbook`]), the point needs no budget (those shaders stay within theirs)
+//! workbook's own (`Node::is_workbook`), the point needs no budget (those shaders stay within theirs)
 //! and no check for rays that find their own surface (those shapes describe their hits exactly and those
 //! shaders spawn their rays with [`Ray::spawn`]), so `raytrace` keeps no shading point for it: its rays
 //! skip the bookkeeping, and only what they bring back NaN or infinite is noted (`Shading`).

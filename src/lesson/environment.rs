@@ -90,7 +90,7 @@ impl<E: Environment> EnvironmentObject for E {
 
 /// An environment as a prepared scene stores it ([`crate::lesson::scene::Scene::prepared`]): one of the
 /// workbook's, each image-based one with the filter the scene's steps read it with (one texel, the slide's,
-/// without [`Step::TexelFilter`]; its own filter with it), or any other through its trait object. The one
+/// without [`Step::TexelFilter`](crate::lesson::beyond::Step::TexelFilter); its own filter with it), or any other through its trait object. The one
 /// place that lists the workbook's environments.
 #[derive(Clone)]
 pub enum Sky {

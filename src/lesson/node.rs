@@ -356,7 +356,7 @@ impl NodeTree {
     }
 
     /// Whether any of `nodes` is hit before `t_max` (shadow rays).
-    /// Kept out of line, as [`NodeTree::nearest_of`].
+    /// Kept out of line, as the search for the nearest hit.
     #[inline(never)]
     pub fn intersects(&self, nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
         beyond!(NodeTree);

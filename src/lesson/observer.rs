@@ -58,7 +58,7 @@ pub enum LightTerm {
     /// Lamp `index`, asked by a shadow ray that starts at `from` towards the lamp (`dir`); `visible` says
     /// whether it got there. Its colour is the irradiance it brings, the cosine included.
     Lamp {
-        /// The lamp's index in [`Scene::lights`].
+        /// The lamp's index in the scene's `lights`.
         index: usize,
         /// The surface point the shadow ray leaves from, in world space.
         from: Vector,
@@ -72,7 +72,7 @@ pub enum LightTerm {
     /// What the shader added of its own for lamp `index` (Phong's highlight): a colour seen as it is, not an
     /// irradiance the shader multiplies by its diffuse colour.
     Highlight {
-        /// The lamp's index in [`Scene::lights`].
+        /// The lamp's index in the scene's `lights`.
         index: usize,
     },
 }

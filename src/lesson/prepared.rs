@@ -8,7 +8,7 @@
 //!   texel at a time ([`Step::TexelFilter`], [`crate::lesson::environment::Sky`]).
 //!
 //! Nothing else is copied: the nodes' shapes and shaders are the scene's own values. A preparation belongs
-//! to the nodes it was made for: [`Preparation::describes`] checks that the scene still has the same steps
+//! to the nodes it was made for: `Preparation::describes` checks that the scene still has the same steps
 //! and nodes of the same bounds (all the node tree depends on), so a scene whose nodes moved after it was
 //! prepared is prepared again rather than traced through a stale tree.
 

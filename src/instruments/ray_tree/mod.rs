@@ -144,7 +144,7 @@ pub enum TermKind {
 /// Where a ray hit.
 #[derive(Clone, Debug)]
 pub struct Hit {
-    /// The node's name (see [`Node::named`]).
+    /// The node's name (see [`Node::named`](crate::lesson::node::Node::named)).
     pub node: String,
     /// The ray parameter of the hit: its distance from the ray's start (the ray's direction is unit).
     pub distance: f32,
