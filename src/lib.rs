@@ -59,7 +59,9 @@ pub use lesson::math::Vector;
 pub mod prelude {
     pub use crate::app::cli::{Example, render_for_test, run};
     pub use crate::app::scenes;
-    pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
+    pub use crate::app::workbook::{
+        self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_data, texture_path,
+    };
     pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
     pub use crate::lesson::camera::{Camera, FovAxis};
     pub use crate::lesson::color::Color;

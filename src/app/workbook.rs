@@ -20,9 +20,17 @@ pub fn texture_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("textures").join(name)
 }
 
-/// Loads the bundled texture `name` (bilinearly filtered, repeating).
+/// Loads the bundled texture `name` as a colour (an 8- or 16-bit file decoded from sRGB to linear light),
+/// bilinearly filtered and repeating.
 pub fn texture(name: &str) -> Result<BitmapTexture> {
     load_texture(name, None, Filter::default())
+}
+
+/// Loads the bundled texture `name` as data, not as a colour (a roughness, bump or mask map: the codes as
+/// they are stored, without the sRGB decoding that [`texture`] applies; see [`BitmapTexture::load_data`]),
+/// bilinearly filtered and repeating.
+pub fn texture_data(name: &str) -> Result<BitmapTexture> {
+    BitmapTexture::load_data(&texture_path(name))
 }
 
 /// Loads a bundled texture, or the student's own file in its place when `custom` is given.

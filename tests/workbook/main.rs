@@ -15,6 +15,7 @@ mod captions;
 mod command_line;
 mod course_look;
 mod cubemap_layout;
+mod data_texture;
 mod determinism;
 mod diagnostics;
 mod dispersion;

@@ -238,6 +238,9 @@ fn assumed_gamma_decodes_the_stored_values() {
         node.shader.shade(&ray, &info, &mut ctx).r()
     };
     let stored = 128.0 / 255.0;
+    // Without a gamma the texture is data: the stored code, not the sRGB decoding's 0.216.
+    assert_eq!(format!("{:.3}", colour("")), "0.502", "no gamma: the stored value");
+    assert_eq!(format!("{:.3}", colour(" assumedGamma 1\n")), "0.502", "gamma 1: the stored value");
     assert!((colour("") - stored).abs() < 1e-3, "no gamma: the stored value {}", colour(""));
     assert!((colour(" assumedGamma 2.2\n") - lecture6::lesson::color::srgb_to_linear(stored)).abs() < 1e-3);
     assert!((colour(" assumedGamma 1.5\n") - stored.powf(1.5)).abs() < 1e-3);

@@ -37,9 +37,15 @@ impl BitmapTexture {
     pub fn new(bitmap: Arc<Bitmap>) -> BitmapTexture {
         BitmapTexture { bitmap, tile_size: 1.0, filter: Filter::Bilinear, wrap: (Wrap::Repeat, Wrap::Repeat) }
     }
-    /// Loads the image at `path`.
+    /// Loads the image at `path` as a colour: an 8- or 16-bit file is decoded from sRGB to linear light
+    /// ([`Bitmap::load`]); a map of numbers is read with [`BitmapTexture::load_data`].
     pub fn load(path: &Path) -> Result<BitmapTexture> {
         Ok(BitmapTexture::new(Arc::new(Bitmap::load(path)?)))
+    }
+    /// Loads the image at `path` as data, not as a colour (a roughness, bump or mask map): its codes as they
+    /// are stored, without the sRGB decoding ([`Bitmap::load_data`]).
+    pub fn load_data(path: &Path) -> Result<BitmapTexture> {
+        Ok(BitmapTexture::new(Arc::new(Bitmap::load_data(path)?)))
     }
     /// The same texture with one copy of the image per `tile_size` units of u/v (larger values make it
     /// larger).
