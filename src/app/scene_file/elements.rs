@@ -11,7 +11,7 @@ use crate::lesson::camera::{Camera, FOV_LIMITS, FovAxis};
 use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::dispatch::shades_per_hit;
 use crate::lesson::environment::{CubemapEnvironment, CubemapLayout, Environment};
-use crate::lesson::error::Result;
+use crate::lesson::error::{Result, printable};
 use crate::lesson::geometry::{Cube, Geometry, Mesh, Plane, Sphere};
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
@@ -393,6 +393,9 @@ impl Loader<'_> {
         };
         let mut node = Node::new(geometry, shader);
         node.transform = transform;
+        // The ray tree and the end-of-run report call the node by the file's name for it (its control
+        // characters, if any, shown as escapes, as in every text the loader echoes).
+        node.name = b.name.as_deref().map(printable);
         Ok(Some(node))
     }
 
