@@ -40,6 +40,7 @@ mod plain_path;
 mod polygon;
 mod progressive;
 mod properties;
+mod quoted_warnings;
 mod reflection_refraction;
 mod regression;
 mod sampling;
