@@ -45,6 +45,7 @@ mod reflection_refraction;
 mod regression;
 mod sampling;
 mod scene_file;
+mod shader_kit;
 mod slide;
 mod stress;
 mod study;

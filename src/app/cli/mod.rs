@@ -27,4 +27,4 @@ pub use console::{print_stderr, print_stdout};
 pub use controls::controls;
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};
-pub use run::{one_line, render_for_test, run};
+pub use run::{one_line, render_and_report, render_for_test, run};
