@@ -43,7 +43,7 @@ impl Shader for Brushed {
             if dir.dot(n) <= 0.0 {
                 continue;
             }
-            sum = sum + ctx.raytrace(&ray.spawn(info, dir, self.tint.max_channel()));
+            sum += ctx.raytrace(&ray.spawn(info, dir, self.tint.max_channel()));
             kept += 1;
         }
         match self.mistake {
