@@ -3,6 +3,7 @@
 //! example uses them the same way, or its own files in their place. (The scenes that examples share are
 //! lessons: they are in [`crate::app::scenes`].)
 
+use crate::files::encoding::{self, Encoding};
 use crate::lesson::bitmap::{Bitmap, Filter};
 use crate::lesson::color::Color;
 use crate::lesson::environment::{self, CubemapEnvironment, Environment};
@@ -31,6 +32,26 @@ pub fn texture(name: &str) -> Result<BitmapTexture> {
 /// bilinearly filtered and repeating.
 pub fn texture_data(name: &str) -> Result<BitmapTexture> {
     BitmapTexture::load_data(&texture_path(name))
+}
+
+// Data textures are read by the workbook's files layer (the encoding of 8-bit codes) on the lesson's types:
+// the lesson's bitmap reads colours, as the slide does.
+impl Bitmap {
+    /// Loads an image file as data (a roughness, bump or mask map), not as a colour: the codes of an 8- or
+    /// 16-bit file (PNG, JPEG, BMP) are read as they are stored, code / 255 or code / 65535, without the sRGB
+    /// decoding (grey 128 is 0.502, where [`Bitmap::load`] makes it 0.216); floating-point files (HDR, EXR)
+    /// are linear already and read as `load` reads them.
+    pub fn load_data(path: &Path) -> Result<Bitmap> {
+        encoding::reading_as(Encoding::Raw, || Bitmap::load(path))
+    }
+}
+
+impl BitmapTexture {
+    /// Loads the image at `path` as data, not as a colour (a roughness, bump or mask map): its codes as they
+    /// are stored, without the sRGB decoding ([`Bitmap::load_data`]).
+    pub fn load_data(path: &Path) -> Result<BitmapTexture> {
+        Ok(BitmapTexture::new(Arc::new(Bitmap::load_data(path)?)))
+    }
 }
 
 /// Loads a bundled texture, or the student's own file in its place when `custom` is given.

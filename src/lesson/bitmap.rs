@@ -114,14 +114,6 @@ impl Bitmap {
         Bitmap::from_file(ImageFile::open(path)?)
     }
 
-    /// Loads an image file as data (a roughness, bump or mask map), not as a colour: the codes of an 8- or
-    /// 16-bit file (PNG, JPEG, BMP) are read as they are stored, code / 255 or code / 65535, without the sRGB
-    /// decoding (grey 128 is 0.502, where [`Bitmap::load`] makes it 0.216); floating-point files (HDR, EXR)
-    /// are linear already and read as `load` reads them.
-    pub fn load_data(path: &Path) -> Result<Bitmap> {
-        encoding::reading_as(Encoding::Raw, || Bitmap::load(path))
-    }
-
     /// Decodes an opened image file.
     pub fn from_file(file: ImageFile) -> Result<Bitmap> {
         let (img, charge) = file.decode(MAX_IMAGE_LIGHT)?;

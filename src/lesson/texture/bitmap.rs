@@ -42,11 +42,6 @@ impl BitmapTexture {
     pub fn load(path: &Path) -> Result<BitmapTexture> {
         Ok(BitmapTexture::new(Arc::new(Bitmap::load(path)?)))
     }
-    /// Loads the image at `path` as data, not as a colour (a roughness, bump or mask map): its codes as they
-    /// are stored, without the sRGB decoding ([`Bitmap::load_data`]).
-    pub fn load_data(path: &Path) -> Result<BitmapTexture> {
-        Ok(BitmapTexture::new(Arc::new(Bitmap::load_data(path)?)))
-    }
     /// The same texture with one copy of the image per `tile_size` units of u/v (larger values make it
     /// larger).
     pub fn with_tile_size(self, tile_size: f32) -> BitmapTexture {
