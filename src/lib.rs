@@ -33,6 +33,7 @@
 //! | [`instruments::side_by_side`], [`instruments::compare`] | two renders and their difference in one captioned picture (`--side-by-side`); image differences (`--compare`) |
 //! | [`instruments::progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`instruments::study`] | run time versus error: renders at rising sample counts against a converged reference |
+//! | [`instruments::test_kit`] | a shader of one's own tested at one hit, without a render: the furnace, the mirror limit, no NaN |
 //! | [`instruments::viewer`] | the live window's example side (the window is the program `lecture6-viewer`, the workspace member `viewer/`): the picture building up, the options as controls, a moving camera |
 //! | [`app::cli`] | the command line every example shares, and the `run` that is every example's `main` |
 //! | [`app::scenes`] | the scenes examples share: the mirror room of the reflection slides, the dispersion studio |
@@ -57,9 +58,12 @@ pub use lesson::math::Vector;
 
 /// Everything an example or a homework needs: `use lecture6::prelude::*;`.
 pub mod prelude {
-    pub use crate::app::cli::{Example, render_for_test, run};
+    pub use crate::app::cli::{Example, render_and_report, render_for_test, run};
     pub use crate::app::scenes;
-    pub use crate::app::workbook::{self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_path};
+    pub use crate::app::workbook::{
+        self, checker_floor, load_texture, sky, sky_cubemap, texture, texture_data, texture_path,
+    };
+    pub use crate::instruments::test_kit::{self, OneHit, check_finite, check_furnace, check_mirror_limit};
     pub use crate::lesson::bitmap::{Bitmap, Filter, Wrap};
     pub use crate::lesson::camera::{Camera, FovAxis};
     pub use crate::lesson::color::Color;

@@ -5,6 +5,7 @@
 //! `examples/hw1.rs`), then in `textures/`. (The scenes that examples share are lessons: they are in
 //! [`crate::app::scenes`].)
 
+use crate::files::encoding::{self, Encoding};
 use crate::lesson::bitmap::{Bitmap, Filter};
 use crate::lesson::color::Color;
 use crate::lesson::environment::{self, CubemapEnvironment, Environment};
@@ -26,12 +27,40 @@ pub fn texture_path(name: &str) -> PathBuf {
     find(name, Location::caller().file()).unwrap_or_else(|_| bundled(name))
 }
 
-/// Loads the texture `name` (bilinearly filtered, repeating): the example's own file beside its source, or
-/// the workbook's of that name under `textures/` (see [`texture_path`]). When it is in neither, the error
-/// names both places.
+/// Loads the texture `name` as a colour (an 8- or 16-bit file decoded from sRGB to linear light),
+/// bilinearly filtered and repeating: the example's own file beside its source, or the workbook's of that
+/// name under `textures/` (see [`texture_path`]). When it is in neither, the error names both places.
 #[track_caller]
 pub fn texture(name: &str) -> Result<BitmapTexture> {
     load_texture(name, None, Filter::default())
+}
+
+/// Loads the texture `name` as data, not as a colour (a roughness, bump or mask map: the codes as they are
+/// stored, without the sRGB decoding that [`texture`] applies; see [`BitmapTexture::load_data`]), bilinearly
+/// filtered and repeating, found as [`texture_path`] finds it.
+#[track_caller]
+pub fn texture_data(name: &str) -> Result<BitmapTexture> {
+    BitmapTexture::load_data(&texture_path(name))
+}
+
+// Data textures are read by the workbook's files layer (the encoding of 8-bit codes) on the lesson's types:
+// the lesson's bitmap reads colours, as the slide does.
+impl Bitmap {
+    /// Loads an image file as data (a roughness, bump or mask map), not as a colour: the codes of an 8- or
+    /// 16-bit file (PNG, JPEG, BMP) are read as they are stored, code / 255 or code / 65535, without the sRGB
+    /// decoding (grey 128 is 0.502, where [`Bitmap::load`] makes it 0.216); floating-point files (HDR, EXR)
+    /// are linear already and read as `load` reads them.
+    pub fn load_data(path: &Path) -> Result<Bitmap> {
+        encoding::reading_as(Encoding::Raw, || Bitmap::load(path))
+    }
+}
+
+impl BitmapTexture {
+    /// Loads the image at `path` as data, not as a colour (a roughness, bump or mask map): its codes as they
+    /// are stored, without the sRGB decoding ([`Bitmap::load_data`]).
+    pub fn load_data(path: &Path) -> Result<BitmapTexture> {
+        Ok(BitmapTexture::new(Arc::new(Bitmap::load_data(path)?)))
+    }
 }
 
 /// Loads the texture `name` as [`texture`] does, or the student's own file in its place when `custom` is

@@ -2,8 +2,10 @@
 //! the memory): the pixel budget of the images a run holds, and [`ImageFile`], a file whose size has been
 //! read from its header and taken from the budget before anything is decoded.
 //!
-//! The images held in memory at once, all of them together (textures, environments, the `--compare`
-//! reference), may have at most [`MAX_IMAGE_PIXELS`] pixels. A small file that claims a huge picture (a
+//! The images held in memory at once, all of them together (textures and environments), may have at most
+//! [`MAX_IMAGE_PIXELS`] pixels. The `--compare` reference does not count against them
+//! ([`ImageFile::open_unbudgeted`]): it is decoded only when its size is the picture's, which has a limit of
+//! its own, as the picture itself does not count. A small file that claims a huge picture (a
 //! 250 KB PNG of 16000 x 16000 pixels) is refused at once instead of being decoded into gigabytes; a
 //! decoder that finds more than its header said is stopped by `image::Limits`. Each image in memory holds a
 //! [`PixelCharge`], given back to the budget when it is dropped. The count is kept for the whole process: a
@@ -53,7 +55,7 @@ impl PixelCharge {
         let mut images = held();
         let total = images.values().map(|(_, n)| n).sum::<u64>();
         if total.checked_add(pixels).is_none_or(|sum| sum > MAX_IMAGE_PIXELS) {
-            let mut holders: Vec<&(String, u64)> = images.values().collect();
+            let mut holders: Vec<&(String, u64)> = images.values().filter(|(_, n)| *n > 0).collect();
             holders.sort_by_key(|(_, n)| std::cmp::Reverse(*n));
             let named: Vec<String> = holders.iter().take(3).map(|(what, n)| format!("{n} by {what}")).collect();
             return Err((total, named.join(", ")));
@@ -201,6 +203,19 @@ impl ImageFile {
     /// header; the format is detected from its contents, or else its extension. A picture of no pixels,
     /// or one that does not fit in what is left of the budget, is refused here.
     pub fn open(path: &Path) -> Result<ImageFile> {
+        ImageFile::open_budgeted(path, true)
+    }
+
+    /// Opens the image file at `path` as [`ImageFile::open`] does, but without taking its pixels from the
+    /// budget: for a picture whose size another limit bounds. The `--compare` reference is one: it is decoded
+    /// only when its size is the render's, itself at most [`MAX_IMAGE_PIXELS`], and a student who may render
+    /// a picture of a size may compare it with a reference of that size, whatever textures the scene holds.
+    pub fn open_unbudgeted(path: &Path) -> Result<ImageFile> {
+        ImageFile::open_budgeted(path, false)
+    }
+
+    /// [`ImageFile::open`], its pixels taken from the budget if `budgeted`.
+    fn open_budgeted(path: &Path, budgeted: bool) -> Result<ImageFile> {
         let (file, size) = input::open(path, "cannot open image")?;
         let refuse = |reason: String| Error::file("cannot read image", path, reason);
         if size > MAX_IMAGE_FILE_BYTES {
@@ -248,26 +263,21 @@ impl ImageFile {
         }
         let pixels = width as u64 * height as u64;
         let what = format!("'{}'", path.display());
-        let charge = PixelCharge::reserve(pixels, what).map_err(|(held, holders)| {
-            Error::file(
-                "cannot load image",
-                path,
-                format!(
-                    "it is {width}x{height} = {pixels} pixels; the images of a run may hold at most {MAX_IMAGE_PIXELS} \
-                     pixels together, and {held} are held already ({holders})"
-                ),
-            )
-        })?;
+        let charge = if budgeted {
+            PixelCharge::reserve(pixels, what).map_err(|(held, holders)| {
+                Error::file(
+                    "cannot load image",
+                    path,
+                    format!(
+                        "it is {width}x{height} = {pixels} pixels; the images of a run may hold at most \
+                         {MAX_IMAGE_PIXELS} pixels together, and {held} are held already ({holders})"
+                    ),
+                )
+            })?
+        } else {
+            PixelCharge::held_by(&mut held(), 0, what)
+        };
         Ok(ImageFile { path: path.to_path_buf(), file, rewritten, format, width, height, charge })
-    }
-
-    /// The file, its pixels held as `what` (say "the --compare reference"): a refusal of another image for
-    /// want of pixels names it so.
-    pub fn held_as(self, what: &str) -> ImageFile {
-        if let Some((name, _)) = held().get_mut(&self.charge.holder) {
-            *name = format!("{what} '{}'", self.path.display());
-        }
-        self
     }
 
     /// Width and height in pixels, as the header says.

@@ -2,11 +2,12 @@
 //! picture, to find out why a homework render looks wrong or where its time goes.
 //!
 //! - `normals`, `uv`, `depth`: what the camera ray through each pixel's centre hits (the geometry and its
-//!   transform, before any shader runs). `uv` shows the coordinates the texture of the surface's shader
-//!   looks up, after its scaling ([`Shader::texture`], [`Texture::lookup_uv`]; a layered shader's is its
-//!   layers' texture, else its blend texture's), so that a floor whose u/v are scene units shows one ramp
-//!   per tile of its texture, not a moiré of one ramp per unit; where the shader names no texture, the
-//!   surface's own u/v;
+//!   transform, before any shader runs). `uv` shows the hit's coordinates as the texture the surface's
+//!   shader names would look them up, after its scaling ([`Shader::texture`], [`Texture::lookup_uv`]; a
+//!   layered shader's is its layers' texture, else its blend texture's), so that a floor whose u/v are scene
+//!   units shows one ramp per tile of its texture, not a moiré of one ramp per unit; where the shader names
+//!   no texture, the surface's own u/v. It is computed from the hit, not from what the shader did: a shader
+//!   that reads its texture elsewhere (u and v swapped, coordinates of its own) is not seen in it;
 //! - `rays`, `shadow-rays`, `depth-reached`: what rendering the pixel cost, counted exactly as the real
 //!   render traces it (same samples, same random streams): a heat map of the rays per pixel shows where
 //!   the time goes, and what adaptive depth control (`--exhaustive` turns it off) and layer skipping
@@ -41,8 +42,9 @@ use std::collections::BTreeSet;
 pub enum DebugView {
     /// The outward shading normal of what each pixel sees, as colour: (x, y, z) in [-1, 1] to RGB in [0, 1].
     Normals,
-    /// The texture coordinates the surface's texture looks up (after its scaling; the surface's own u/v
-    /// where the shader reads no texture), wrapped to [0, 1): u in red, v in green.
+    /// The hit's texture coordinates as the texture the surface's shader names would look them up (after
+    /// its scaling; the surface's own u/v where the shader names no texture), wrapped to [0, 1): u in red, v
+    /// in green. Not what the shader read: one that swaps u and v before reading is not seen in it.
     Uv,
     /// The distance from the camera to what each pixel sees: white near, black far.
     Depth,
@@ -248,9 +250,9 @@ pub fn render_view_with(
     Ok(DebugImage { image, picture, range, scale, ticks })
 }
 
-/// What the `uv` view shows for a hit on `node`: the coordinates the texture of its shader looks up
-/// (the shader's `texture()`, then the texture's `lookup_uv`), or, under a shader that names no texture,
-/// the surface's own u/v; wrapped to [0, 1).
+/// What the `uv` view shows for a hit on `node`: the hit's coordinates as the texture its shader names
+/// would look them up (the shader's `texture()`, then the texture's `lookup_uv`), or, under a shader that
+/// names no texture, the surface's own u/v; wrapped to [0, 1).
 fn texture_uv(info: &IntersectionInfo, node: &Node) -> Sample {
     let ((u, v), source) = match node.shader.texture() {
         Some(texture) => (texture.lookup_uv(info.uv()), UvSource::Texture(texture.name())),
@@ -345,9 +347,9 @@ fn describe_uv(sources: &BTreeSet<UvSource>) -> String {
         if names.is_empty() { "none seen".to_string() } else { names.join(", ") }
     };
     format!(
-        "red = u, green = v, wrapped to [0, 1): where the shader reads a texture ({}), the coordinates the \
-         texture looks up, after its scaling (one ramp per tile of the texture); elsewhere ({}), the surface's \
-         own u/v; dark blue: nothing hit",
+        "red = u, green = v, wrapped to [0, 1): the hit's coordinates, where the shader names a texture ({}) \
+         as that texture looks them up after its scaling (one ramp per tile of the texture), not what the shader \
+         itself read; elsewhere ({}), the surface's own u/v; dark blue: nothing hit",
         names(true),
         names(false)
     )

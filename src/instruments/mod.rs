@@ -8,5 +8,6 @@ pub mod progressive;
 pub mod ray_tree;
 pub mod side_by_side;
 pub mod study;
+pub mod test_kit;
 pub mod tone_mapping;
 pub mod viewer;

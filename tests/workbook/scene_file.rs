@@ -242,6 +242,9 @@ fn assumed_gamma_decodes_the_stored_values() {
         node.shader.shade(&ray, &info, &mut ctx).r()
     };
     let stored = 128.0 / 255.0;
+    // Without a gamma the texture is data: the stored code, not the sRGB decoding's 0.216.
+    assert_eq!(format!("{:.3}", colour("")), "0.502", "no gamma: the stored value");
+    assert_eq!(format!("{:.3}", colour(" assumedGamma 1\n")), "0.502", "gamma 1: the stored value");
     assert!((colour("") - stored).abs() < 1e-3, "no gamma: the stored value {}", colour(""));
     assert!((colour(" assumedGamma 2.2\n") - lecture6::lesson::color::srgb_to_linear(stored)).abs() < 1e-3);
     assert!((colour(" assumedGamma 1.5\n") - stored.powf(1.5)).abs() < 1e-3);
@@ -531,4 +534,29 @@ fn a_scene_files_picture_is_named_after_it() {
     assert_eq!(size("out/scene_file.png"), (8, 6), "the bundled file keeps the example's name");
     let written = std::fs::read_dir(dir.join("out")).unwrap().count();
     assert_eq!(written, 3, "nothing else in out/");
+}
+
+#[test]
+fn nodes_keep_the_files_names_in_the_ray_tree_and_the_report() {
+    use lecture6::instruments::ray_tree::{self, PixelPos};
+    use lecture6::lesson::diagnostics::Problems;
+    use lecture6::lesson::scene::Counters;
+    let text = format!(
+        "{CAMERA}PointLight {{\n pos (0, 0, -10)\n power 100\n}}\nSphere s {{\n R 1\n}}\n\
+         Lambert chalk {{\n color (1, 1, 1)\n}}\nNode ball {{\n geometry s\n shader chalk\n}}\n\
+         Node {{\n geometry s\n shader chalk\n translate (0, 30, 0)\n}}\n"
+    );
+    let file = loaded("names.qdmg", &text);
+    let names: Vec<String> = file.scene.nodes.iter().map(|n| file.scene.node_name(n)).collect();
+    // The named node keeps its name; the unnamed one is called by its shape and place.
+    assert_eq!(names, ["ball", "Sphere #1"]);
+    let settings = RenderSettings { width: 32, height: 24, spp: 1, ..Default::default() };
+    let traced = ray_tree::trace(&file.scene, &settings, PixelPos { x: 16, y: 12 }).unwrap();
+    let tree = traced.tree.to_text(0);
+    assert!(tree.contains("hits ball at distance") && !tree.contains("Sphere #0"), "{tree}");
+    // The end-of-run report names it the same way: a normal counted as not of unit length on it.
+    let mut counters = Counters::default();
+    counters.problems.bad_normals.insert(0, 1);
+    let report = Problems::report(&counters, &file.scene);
+    assert!(report.iter().any(|l| l.ends_with(": ball (Lambert) (1)")), "{report:?}");
 }

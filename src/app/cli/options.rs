@@ -148,13 +148,14 @@ pub struct CommonArgs {
     /// difference, scaled to the largest one, next to the output (OUTPUT-diff.png). Without --output the
     /// picture goes to out/EXAMPLE-compared.png: out/EXAMPLE.png, an earlier render, stays. An 8-bit reference
     /// (.png) is compared in 8-bit sRGB, a linear one (.exr, .hdr) in linear light too. Its size is checked
-    /// from its header; it counts towards the images' budget of 67108864 pixels (see --env).
+    /// from its header and must be the picture's; being no larger than the picture, it does not count towards
+    /// the budget of the scene's images (see --env).
     #[arg(long, value_name = "REFERENCE", help_heading = COMMON, conflicts_with_all = ["trace_pixel", "view", "side_by_side"])]
     pub compare: Option<PathBuf>,
     /// Your own environment for rays that hit nothing, replacing the scene's: an equirectangular image file
     /// (its centre faces +Z, where the default camera looks) or a folder holding six cube faces posx, negx,
-    /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr). The images of a run (textures, environment,
-    /// reference) may have 67108864 pixels together, 2^26 (an 8192 x 8192 picture): a file over that budget
+    /// posy, negy, posz, negz (.png, .jpg, .bmp, .hdr or .exr). The images of a run (textures and
+    /// environment) may have 67108864 pixels together, 2^26 (an 8192 x 8192 picture): a file over that budget
     /// is refused from its header, before it is decoded.
     #[arg(long, value_name = "FILE|FOLDER", help_heading = COMMON)]
     pub env: Option<PathBuf>,

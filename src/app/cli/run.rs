@@ -135,14 +135,21 @@ fn address_space() -> Option<(u64, u64)> {
 /// assert_eq!(picture.width, 80);
 /// ```
 pub fn render_for_test<E: Example>(args: &[&str]) -> Frame {
-    let cli =
-        Cli::<E>::parse_args("homework", args).unwrap_or_else(|e| panic!("{args:?}: {}", one_line(&e.to_string())));
-    let (frame, stats) = cli
-        .prepare()
-        .and_then(|(scene, settings)| render(&scene, &settings))
-        .unwrap_or_else(|e| panic!("{args:?}: {e}"));
-    assert!(stats.warnings.is_empty(), "the end-of-run report of {args:?}:\n{}", stats.warnings.join("\n"));
+    let (frame, warnings) = render_and_report::<E>(args).unwrap_or_else(|e| panic!("{e}"));
+    assert!(warnings.is_empty(), "the end-of-run report of {args:?}:\n{}", warnings.join("\n"));
     frame
+}
+
+/// [`render_for_test`] for a test that decides for itself: renders the example `E` with the options `args`,
+/// as its binary would but without writing anything, and returns its picture and the end-of-run report's
+/// lines (none for a sound render) without judging them, so that the test's own assertion decides (that a
+/// deliberately wrong shader is named, say). It never panics: options refused and a scene that cannot be
+/// built are its error, on one line.
+pub fn render_and_report<E: Example>(args: &[&str]) -> std::result::Result<(Frame, Vec<String>), String> {
+    let cli = Cli::<E>::parse_args("homework", args).map_err(|e| format!("{args:?}: {}", one_line(&e.to_string())))?;
+    let (frame, stats) =
+        cli.prepare().and_then(|(scene, settings)| render(&scene, &settings)).map_err(|e| format!("{args:?}: {e}"))?;
+    Ok((frame, stats.warnings))
 }
 
 /// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
@@ -258,7 +265,7 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     let reference_file = match &args.common.compare {
         Some(path) => {
             check_not_the_reference(path, &output, &heat_path)?;
-            Some((path, ImageFile::open(path)?.held_as("the --compare reference")))
+            Some((path, ImageFile::open_unbudgeted(path)?))
         }
         None => None,
     };

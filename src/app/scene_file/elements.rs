@@ -6,11 +6,11 @@ use super::parse::{Block, Property};
 use super::reader::{MAX_COORDINATE, Reader, checked_triple};
 use super::values::is_space;
 use super::*;
-use crate::files::encoding::{self, Encoding};
+use crate::lesson::bitmap::Bitmap;
 use crate::lesson::camera::{Camera, FOV_LIMITS, FovAxis};
-use crate::lesson::color::{Color, linear_to_srgb, srgb_to_linear};
+use crate::lesson::color::{Color, srgb_to_linear};
 use crate::lesson::environment::{CubemapEnvironment, CubemapLayout, Environment};
-use crate::lesson::error::Result;
+use crate::lesson::error::{Result, printable};
 use crate::lesson::geometry::{Cube, Geometry, Mesh, Plane, Sphere};
 use crate::lesson::math::Vector;
 use crate::lesson::node::Node;
@@ -21,7 +21,6 @@ use crate::lesson::shader::{
 use crate::lesson::texture::{BitmapTexture, CheckerTexture, Fresnel, FresnelMode, Texture};
 use crate::lesson::transform::Transform;
 use rayon::prelude::*;
-use std::path::Path;
 use std::sync::Arc;
 
 impl Loader<'_> {
@@ -194,8 +193,9 @@ impl Loader<'_> {
                     return Err(self.error(r.line_of("scaling"), "BitmapTexture `scaling` must not be 0"));
                 }
                 let gamma = r.float(self, "assumedGamma", 1.0, -1e17, 1e17)? as f32;
-                let texture = BitmapTexture::load(&path).map_err(|e| self.file_error(p, e))?;
-                let bitmap = with_assumed_gamma(&texture.bitmap, &path, gamma);
+                // The stored values, decoded as `assumedGamma` says: as they are by default (a data texture).
+                let stored = Bitmap::load_data(&path).map_err(|e| self.file_error(p, e))?;
+                let bitmap = with_assumed_gamma(stored, gamma);
                 Arc::new(BitmapTexture::new(Arc::new(bitmap)).with_tile_size(scaling as f32))
             }
             _ => {
@@ -395,6 +395,9 @@ impl Loader<'_> {
         };
         let mut node = Node::new(geometry, shader);
         node.transform = transform;
+        // The ray tree and the end-of-run report call the node by the file's name for it (its control
+        // characters, if any, shown as escapes, as in every text the loader echoes).
+        node.name = b.name.as_deref().map(printable);
         Ok(Some(node))
     }
 
@@ -441,40 +444,28 @@ impl Loader<'_> {
     }
 }
 
-/// The bitmap as the course decodes it with `assumedGamma` (spec 3.8): the stored values (what the file
-/// holds: 8-bit values / 255, or the floats of an HDR or EXR file) through the sRGB curve for exactly
-/// 2.2, through `c^gamma` for another gamma in (0, 10), and unchanged otherwise; exactly 0 and 1 stay.
-pub(super) fn with_assumed_gamma(
-    bitmap: &crate::lesson::bitmap::Bitmap,
-    path: &Path,
-    gamma: f32,
-) -> crate::lesson::bitmap::Bitmap {
-    let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
-    // The workbook decodes 8-bit images as sRGB (unless `--encoding raw` read them as the course does) and
-    // keeps floating-point ones linear.
-    let as_stored = matches!(ext.as_str(), "hdr" | "exr") || encoding::reading() == Encoding::Raw;
-    let stored = |c: f32| if as_stored { c } else { linear_to_srgb(c) };
-    let decode = |c: f32| {
-        let s = stored(c);
-        if s == 0.0 || s == 1.0 {
-            s
-        } else if gamma == 2.2 {
-            srgb_to_linear(s)
-        } else if gamma > 0.0 && gamma < 10.0 && gamma != 1.0 {
-            s.powf(gamma)
-        } else {
-            s
-        }
+/// The bitmap as the course decodes it with `assumedGamma` (spec 3.8), from its stored values (what the file
+/// holds, [`Bitmap::load_data`]: 8-bit values / 255, or the floats of an HDR or EXR file): through the sRGB
+/// curve for exactly 2.2, through `c^gamma` for another gamma in (0, 10), and unchanged otherwise (the
+/// default, 1: the bitmap as it was loaded); exactly 0 and 1 stay.
+pub(super) fn with_assumed_gamma(stored: Bitmap, gamma: f32) -> Bitmap {
+    let curve: fn(f32, f32) -> f32 = if gamma == 2.2 {
+        |s, _| srgb_to_linear(s)
+    } else if gamma > 0.0 && gamma < 10.0 && gamma != 1.0 {
+        f32::powf
+    } else {
+        return stored;
     };
-    let (w, h) = (bitmap.width(), bitmap.height());
-    // Texel by texel in parallel (on the current rayon pool): two `powf` per channel are a serial step
-    // before the render otherwise.
+    let decode = |s: f32| if s == 0.0 || s == 1.0 { s } else { curve(s, gamma) };
+    let (w, h) = (stored.width(), stored.height());
+    // Texel by texel in parallel (on the current rayon pool): a `powf` per channel is a serial step before
+    // the render otherwise.
     let pixels = (0..w * h)
         .into_par_iter()
         .map(|i| {
-            let [r, g, b] = bitmap.get_pixel(i % w, i / w).to_array();
+            let [r, g, b] = stored.get_pixel(i % w, i / w).to_array();
             Color::new(decode(r), decode(g), decode(b))
         })
         .collect();
-    crate::lesson::bitmap::Bitmap::from_pixels(w, h, pixels)
+    Bitmap::from_pixels(w, h, pixels)
 }

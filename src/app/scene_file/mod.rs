@@ -27,8 +27,11 @@
 //!   sampled at their centres, not at their top-left corners.
 //! - `BitmapTexture` reads any image format the workbook reads (the course: BMP and EXR only) and samples
 //!   with texel centres at half-integer coordinates (the course: at integers; a sub-texel shift).
-//!   `assumedGamma` applies to the image's stored values, as in the course: 8-bit images are linear unless
-//!   `assumedGamma 2.2` (sRGB) or another gamma is given.
+//!   `assumedGamma` applies to the image's stored values, as in the course: without it (or with 1) the
+//!   texture is data, its codes read as they are stored (grey 128 is 0.502: a roughness or mask map);
+//!   `assumedGamma 2.2` decodes a colour picture from sRGB, another gamma in (0, 10) raises the values to it.
+//! - A Node keeps the file's name for it (`Node ball { .. }` is `ball` in the ray tree and the end-of-run
+//!   report); a Node without a name is called by its geometry and its place in the scene, `Sphere #1`.
 //! - `Mesh` polygons are cut by ear clipping in their plane (the course: a fan, wrong for non-convex
 //!   polygons); `autoSmooth` weights face normals by area (the course: unweighted).
 //! - `CubemapEnvironment` reads the course's face layout (`negz` turned by 180° against OpenGL's); the

@@ -36,7 +36,8 @@ impl BitmapTexture {
     pub fn new(bitmap: Arc<Bitmap>) -> BitmapTexture {
         BitmapTexture { bitmap, tile_size: 1.0, filter: Filter::Bilinear, wrap: (Wrap::Repeat, Wrap::Repeat) }
     }
-    /// Loads the image at `path`.
+    /// Loads the image at `path` as a colour: an 8- or 16-bit file is decoded from sRGB to linear light
+    /// ([`Bitmap::load`]); a map of numbers is read with [`BitmapTexture::load_data`].
     pub fn load(path: &Path) -> Result<BitmapTexture> {
         Ok(BitmapTexture::new(Arc::new(Bitmap::load(path)?)))
     }
