@@ -4,7 +4,9 @@
 //! and its ray depth as its scene sets them, and the default of each of its own options (`--ior 1.5`), so a
 //! default of 20000 samples shows even when the class renders every program with `--spp 4`.
 //!
-//!     fresnel: defaults: --spp 5, --width 640, --height 480, --max-depth 8, --ior 1.5
+//! ```text
+//! fresnel: defaults: --spp 5, --width 640, --height 480, --max-depth 8, --ior 1.5
+//! ```
 
 use super::example::{Cli, Example};
 
