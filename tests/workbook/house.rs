@@ -79,7 +79,6 @@ fn imports() -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
     let files = rust_files(&root().join("src/lesson"));
     let modules: BTreeMap<Vec<String>, PathBuf> =
         files.iter().map(|f| (module_of(f), f.clone())).filter(|(m, _)| !m.is_empty()).collect();
-    let inline = regex_lite_paths;
     let mut graph = BTreeMap::new();
     for file in &files {
         let text = std::fs::read_to_string(file).unwrap();
@@ -106,7 +105,7 @@ fn imports() -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
                 }
                 continue;
             }
-            for path in inline(code) {
+            for path in inline_paths(code) {
                 targets.extend(target(&path, &here, &modules).cloned());
             }
         }
@@ -118,7 +117,7 @@ fn imports() -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
 
 /// The paths written inline in a line of code: every `crate::lesson::a::b` and `super::a` (each as its
 /// segments, up to the first character that cannot continue a path).
-fn regex_lite_paths(code: &str) -> Vec<Vec<String>> {
+fn inline_paths(code: &str) -> Vec<Vec<String>> {
     let mut paths = Vec::new();
     for start in ["crate::lesson::", "super::"] {
         let mut rest = code;
@@ -228,7 +227,7 @@ fn a_circle_of_imports_is_found() {
     ]);
     assert_eq!(circles(&graph)[0].len(), 3);
     assert_eq!(paths_of("crate::lesson::{a::B, c::{d, e as f}}").len(), 3);
-    let inline = regex_lite_paths("let x = crate::lesson::render::MAX_SPP + super::Texture::y(self::z);");
+    let inline = inline_paths("let x = crate::lesson::render::MAX_SPP + super::Texture::y(self::z);");
     assert_eq!(inline, [vec!["crate", "lesson", "render", "MAX_SPP"], vec!["super", "Texture", "y"]]);
 }
 
