@@ -77,12 +77,6 @@ pub enum LightTerm {
     },
 }
 
-/// The old name of [`LightTerm`], which read as one of the scene's lights.
-#[deprecated(
-    note = "renamed `LightTerm`: a term of the light loop's sum, not one of the scene's lights (`PointLight`)"
-)]
-pub type Light = LightTerm;
-
 impl LightTerm {
     /// Whether this light is an irradiance, which the shader multiplies by its colour (all but highlights).
     pub fn is_irradiance(&self) -> bool {

@@ -248,12 +248,6 @@ impl Scene {
         self.preparation.as_ref().and_then(|p| p.node_tree.as_ref())
     }
 
-    /// A copy of the scene prepared for tracing ([`Scene::prepared`]).
-    #[deprecated(note = "use `Scene::prepared`, which also prepares what else the renderer needs")]
-    pub fn with_node_tree(&self) -> Scene {
-        self.prepared().into_owned()
-    }
-
     /// The name of a node of this scene: its own ([`Node::named`]), or its geometry and its position in
     /// `nodes` ("Sphere #2").
     pub fn node_name(&self, node: &Node) -> String {

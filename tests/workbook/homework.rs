@@ -254,24 +254,11 @@ fn the_api_pages_geometry_and_shader_are_the_files_the_tests_render() {
     }
 }
 
-/// The public names renamed for what they are still compile, deprecated, and mean what they meant, so that
-/// a student's code written against them keeps working.
+/// The course's own name for a bitmap's tile size, `scaling`, still compiles, deprecated, and means what it
+/// meant, so that a student's code written against it keeps working.
 #[test]
 #[allow(deprecated)]
-fn the_old_names_still_work_and_mean_the_same() {
-    use lecture6::lesson::observer::{Light, LightTerm};
-    use lecture6::lesson::shader::{casts_caustics, is_caustic_caster};
-    for scene in [caustic_scene(Chalk), Scene::new(Camera::default())] {
-        assert_eq!(scene.casts_caustics(), scene.can_have_caustics());
-    }
-    assert!(caustic_scene(Chalk).casts_caustics());
-    let glass = fresnel_glass(1.5, FresnelMode::Schlick, 1.0);
-    for shader in [&glass as &dyn Shader, &Chalk] {
-        assert_eq!(casts_caustics(shader), is_caustic_caster(shader));
-    }
-    assert!(casts_caustics(&glass) && !casts_caustics(&Chalk));
-    let light: Light = Light::Highlight { index: 0 };
-    assert!(matches!(light, LightTerm::Highlight { index: 0 }) && !light.is_irradiance());
+fn the_courses_name_for_the_tile_size_still_works() {
     let bitmap = Arc::new(Bitmap::from_pixels(1, 1, vec![Color::WHITE]));
     assert_eq!(BitmapTexture::new(bitmap).with_scaling(40.0).tile_size, 40.0);
 }

@@ -65,13 +65,6 @@ impl Scene {
     pub fn can_have_caustics(&self) -> bool {
         crate::lesson::photon_map::Emitter::new(self, 1, 0).is_some()
     }
-
-    /// The old name of [`Scene::can_have_caustics`].
-    #[deprecated(note = "renamed `can_have_caustics`: whether a photon map can add light to the scene (a shader's \
-                         own question is `shader::is_caustic_caster`)")]
-    pub fn casts_caustics(&self) -> bool {
-        self.can_have_caustics()
-    }
 }
 
 /// The box around the scene's bounded objects (or, if none is bounded, around the photons).

@@ -16,8 +16,6 @@ pub use lambert::Lambert;
 pub use layered::{Layer, Layered, MAX_LAYERS, MAX_SHADES_PER_HIT, shades_per_hit};
 pub use material::{IntoShader, Material};
 pub use phong::Phong;
-#[allow(deprecated)]
-pub use reflection::GLOSSY_SPLIT_DEPTH;
 pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
 
@@ -144,13 +142,6 @@ pub trait CausticCaster {
 /// one that a light shines on is [`crate::lesson::scene::Scene::can_have_caustics`]).
 pub fn is_caustic_caster(shader: &dyn Shader) -> bool {
     shader.caustic_caster().is_some()
-}
-
-/// The old name of [`is_caustic_caster`].
-#[deprecated(note = "renamed `is_caustic_caster`: whether the shader's surface sends photons on (a scene's question \
-                     is `Scene::can_have_caustics`)")]
-pub fn casts_caustics(shader: &dyn Shader) -> bool {
-    is_caustic_caster(shader)
 }
 
 /// What a photon does where it hits a surface with `shader`: what its caustic caster says, or, on a surface

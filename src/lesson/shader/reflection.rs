@@ -55,11 +55,6 @@ use std::sync::Arc;
 /// uses 2. The core's bound on every shader's branching ([`crate::lesson::branching`]) allows the same.
 pub const SECONDARY_GLOSSY_SAMPLES: u32 = crate::lesson::branching::SECONDARY_SPLIT;
 
-/// The deepest ray whose shading point still traces [`SECONDARY_GLOSSY_SAMPLES`] rays: the core's
-/// [`crate::lesson::branching::SPLIT_DEPTH`], which bounds every shader's rays alike.
-#[deprecated(note = "the core's branching bound holds for every shader: use `lesson::branching::SPLIT_DEPTH`")]
-pub const GLOSSY_SPLIT_DEPTH: u32 = crate::lesson::branching::SPLIT_DEPTH;
-
 /// The most rays a glossy mirror averages per shading point: twenty times the slide's 200, and low enough
 /// that a mistyped count is refused at once instead of rendering for days.
 pub const MAX_GLOSSY_SAMPLES: u32 = 4096;
