@@ -36,7 +36,7 @@ use lecture6::app::cli::{Cli, Example};
 use lecture6::instruments::compare::difference;
 use lecture6::instruments::study::{Measurement, cost_at_rmse, rmse_at_time, rmse_linear};
 use lecture6::lesson::beyond::{Step, Steps};
-use lecture6::lesson::branching::{SECONDARY_SPLIT, SPLIT_DEPTH};
+use lecture6::lesson::branching::{RAYS_PER_BRANCH, SECONDARY_SPLIT, SPLIT_DEPTH};
 use lecture6::lesson::diagnostics::undeclared_dispersion;
 use lecture6::lesson::frame::Frame;
 use lecture6::lesson::geometry::Mesh;
@@ -1392,6 +1392,8 @@ fn branching_bound(readings: &Readings, rows: &mut Vec<Row>, details: &mut Strin
         let without = if d == 0 { c.rays_by_depth[0] } else { c.rays_by_depth[1] * (N as u64).pow(d as u32 - 1) };
         writeln!(depth_table, "| {d} | {} | {without} |", c.rays_by_depth[d]).unwrap();
     }
+    let runs = branch_budget_runs();
+    let budget = branch_budget(&runs);
     let (rays_default, shared_default, rays_slide, shared_slide) =
         readings.shared.iter().fold((0, 0, 0, 0), |a, (_, s)| (a.0 + s[0], a.1 + s[1], a.2 + s[2], a.3 + s[3]));
     rows.push(Row {
@@ -1401,7 +1403,7 @@ fn branching_bound(readings: &Readings, rows: &mut Vec<Row>, details: &mut Strin
             "the API page's {N}-ray glossy mirror (docs/homework_glossy.rs, each ray its full weight) on two facing panels, depth {DEPTH}, 160x120, 1 spp; and every example in both readings"
         ),
         buys: format!(
-            "{:.2} M rays in {cpu:.2} CPU s with the bound (another {:.2} M given their siblings' mean colour instead of traced; {} traced at depth {DEPTH}), against at most {:.0} M without it ({:.0} M at depth {DEPTH}: {N}^{} times the camera rays' {} glossy rays; the bound allows {N} rays at a camera ray's hit, {SECONDARY_SPLIT} per shading point down to depth {SPLIT_DEPTH}, then 1). On the examples it shares no ray: {shared_default} of {:.1} M rays by default, {shared_slide} of {:.1} M with `--slide`",
+            "{:.2} M rays in {cpu:.2} CPU s with the bound (another {:.2} M given their siblings' mean colour instead of traced; {} traced at depth {DEPTH}), against at most {:.0} M without it ({:.0} M at depth {DEPTH}: {N}^{} times the camera rays' {} glossy rays; the bound allows {N} rays at a camera ray's hit, {SECONDARY_SPLIT} per shading point down to depth {SPLIT_DEPTH}, then 1). On the examples it shares no ray: {shared_default} of {:.1} M rays by default, {shared_slide} of {:.1} M with `--slide`. The budget of a branch ({RAYS_PER_BRANCH} rays; section \"The budget of a branch\") bounds the glass and Layered rays the rule lets through: the layered example with `--slide` at depth limit 64, 48x36, {budget}",
             c.total() as f64 / 1e6,
             c.shared_rays as f64 / 1e6,
             c.rays_by_depth[DEPTH as usize],
@@ -1416,6 +1418,60 @@ fn branching_bound(readings: &Readings, rows: &mut Vec<Row>, details: &mut Strin
         code: vec![Code::File("src/lesson/branching.rs")],
     });
     writeln!(details, "## The branching bound\n\nThe API page's {N}-ray glossy mirror on two panels facing each other, depth limit {DEPTH}, 160x120, one ray per pixel: the rays of each depth with the bound, and the most the same render would trace without it (every shading point tracing its {N} rays, every ray hitting a panel again).\n\n{depth_table}").unwrap();
+    writeln!(details, "## The budget of a branch\n\nThe layered example at 48x36, 4 spp, one thread, in the slides' reading (nothing prunes its glass's and its Layered shaders' rays, each of which fits its shading point's budget) at depth limits the command line refuses there, and by default: every ray below the camera's is in the branch of one ray of a camera ray's hit, which traces at most {RAYS_PER_BRANCH}.\n\n{}", budget_table(&runs)).unwrap();
+}
+
+/// One render of the section "The budget of a branch": its reading, depth limit, rays, rays past the budget
+/// and CPU seconds.
+type BudgetRun = (&'static str, u32, u64, u64, f64);
+
+/// The layered example at 48x36, 4 spp, one thread, in both readings at three depth limits.
+fn branch_budget_runs() -> Vec<BudgetRun> {
+    let mut runs = Vec::new();
+    for (reading, args) in [("`--slide`", vec!["--slide".to_string()]), ("default", vec![])] {
+        let (scene, _) = parse::<examples::layered::Options>(&args).prepare().expect("the layered example");
+        for depth in [8, 64, 1000] {
+            let mut scene = scene.clone();
+            scene.max_depth = depth;
+            let settings = RenderSettings {
+                width: 48,
+                height: 36,
+                spp: 4,
+                threads: Some(1),
+                progress: false,
+                ..Default::default()
+            };
+            let clock = Clock::start();
+            let (_, stats) = render(&scene, &settings).expect("render");
+            let (_, cpu) = clock.stop();
+            runs.push((reading, depth, stats.counters.total(), stats.counters.over_budget_rays, cpu));
+        }
+    }
+    runs
+}
+
+/// The ledger row's words on the budget of a branch.
+fn branch_budget(runs: &[BudgetRun]) -> String {
+    let find = |reading: &str, depth: u32| runs.iter().find(|r| r.0 == reading && r.1 == depth).expect("a run");
+    let (slide, default) = (find("`--slide`", 64), find("default", 64));
+    format!(
+        "traces {:.2} M rays in {:.2} CPU s ({:.2} M past the budget, black), {:.1} times the default reading's {:.3} M",
+        slide.2 as f64 / 1e6,
+        slide.4,
+        slide.3 as f64 / 1e6,
+        slide.2 as f64 / default.2 as f64,
+        default.2 as f64 / 1e6
+    )
+}
+
+/// The table of the section "The budget of a branch".
+fn budget_table(runs: &[BudgetRun]) -> String {
+    let mut table =
+        String::from("| reading | depth limit | rays | past the budget (black) | CPU s |\n|---|---:|---:|---:|---:|\n");
+    for (reading, depth, rays, over, cpu) in runs {
+        writeln!(table, "| {reading} | {depth} | {rays} | {over} | {cpu:.3} |").unwrap();
+    }
+    table
 }
 
 /// The end-of-run report's cost: its one piece of extra work, the probe for shaders that read the wavelength
@@ -1546,7 +1602,7 @@ const BOTH_READINGS: &[(&str, &str, &str, &str)] = &[
         "branching-bound",
         "src/lesson/branching.rs",
         "every ray a shader asks for is traced",
-        "two averaging shaders facing each other branch N^depth rays per camera ray (a render that never ends); the core bounds a shading point's rays (section \"The branching bound\"), below the course's default `maxTraceDepth`, so the course's scenes and the examples trace exactly their rays",
+        "two averaging shaders facing each other branch N^depth rays per camera ray (a render that never ends); the core bounds a shading point's rays (section \"The branching bound\"), below the course's default `maxTraceDepth`, so the course's scenes and the examples trace exactly their rays. Glass and Layered shaders, whose rays fit that bound however faint, double their rays at every level when nothing prunes them: each ray of a camera ray's hit traces at most `RAYS_PER_BRANCH` rays below it (section \"The budget of a branch\"), four times the examples' largest branch, so a program of the library's at any depth limit stays bounded",
     ),
     (
         "tile-size",

@@ -37,6 +37,18 @@
 //! and 1 below it: at most `N * 2^SPLIT_DEPTH` rays per camera ray at any depth (at depth `SPLIT_DEPTH + 1`
 //! and below), a ray count linear in the depth limit.
 //!
+//! The budget of a branch. The rule bounds a shading point's rays by their weights, which bounds their
+//! count only where weights do not shrink: the rays of a glass (R and T) or of a `Layered` shader's layers
+//! (each shaded as a point of its own) fit their budgets however faint they get, and nothing else prunes
+//! them when adaptive depth control is off (`--slide`, `--exhaustive`): two of them facing each other double
+//! the rays at every level, 2^depth. So each ray the camera ray's hit traces (a branch of the ray tree) may
+//! trace at most [`RAYS_PER_BRANCH`] rays in all, itself included, at any depth and in both readings; the
+//! rays past it are not traced (black) and counted in
+//! [`Counters::over_budget_rays`](crate::lesson::scene::Counters), which the end-of-run report names. No
+//! example's branch comes near it (tests/workbook/branching.rs), so it changes no picture; it keeps a
+//! scene of a program of one's own from rendering for days. The camera ray's hit itself may trace as many
+//! rays as its shader likes (a glossy mirror's N), each a branch of its own.
+//!
 //! The energy check. A shading point also keeps what its shader had to make its colour of (`Income`): the
 //! brightest colour, channel by channel, that one of its rays brought back, how many rays it traced, and
 //! the light its light loops gathered ([`crate::lesson::light::light_loop`]: irradiance and highlights). A
@@ -84,6 +96,12 @@ pub fn split_factor(depth: u32) -> f32 {
     };
     FACTORS[(depth as usize).min(SPLIT_DEPTH as usize + 1)]
 }
+
+/// The most rays one branch of the ray tree (a ray the camera ray's hit traces, and every ray below it) may
+/// trace: 1024, four times what any example's branch traces in either reading at its own depth limit (the
+/// largest, a glass at depth 10 with `--exhaustive`, traces between 64 and 256), and few enough that a scene
+/// whose rays double at every level renders in seconds where it would take days.
+pub const RAYS_PER_BRANCH: u32 = 1 << 10;
 
 /// `sqrt(f32::EPSILON)`, 2^-11.5: the relative error of a hit point found by the textbook quadratic at its
 /// worst, when cancellation takes half the digits.
@@ -292,6 +310,19 @@ impl Origin<'_> {
 }
 
 impl<'a> TraceContext<'a> {
+    /// Whether a ray at `depth`, about to be traced, is within its branch's budget ([`RAYS_PER_BRANCH`]),
+    /// counting it: a camera ray (depth 0) belongs to no branch, and a ray of the camera ray's hit (depth 1)
+    /// begins one.
+    #[inline(always)]
+    pub(crate) fn within_branch_budget(&mut self, depth: u32) -> bool {
+        if depth <= 1 {
+            self.branch_rays = depth;
+            return true;
+        }
+        self.branch_rays = self.branch_rays.saturating_add(1);
+        self.branch_rays <= RAYS_PER_BRANCH
+    }
+
     /// The colour the shader of `node` gives the hit `info` of `ray`, shaded as a shading point of its own
     /// (its rays bounded by its budget), and what went wrong there counted for the end-of-run report: a
     /// normal that was not of unit length as the geometry returned it (`unit_normal` false), a ray that

@@ -23,6 +23,7 @@
 //! dispersive" at one point of its node: it traces the node alone, in white light and at both ends of the
 //! visible spectrum, and a shader that gives them different colours is named in the report.
 
+use crate::lesson::branching::RAYS_PER_BRANCH;
 use crate::lesson::camera::CameraFrame;
 use crate::lesson::color::Color;
 use crate::lesson::ray::Ray;
@@ -96,6 +97,15 @@ impl Problems {
                  was split there: return true from Shader::is_dispersive (a Layered shader asks its layers, and \
                  the texture a shader names asks Texture::is_dispersive): {}",
                 nodes.join(", ")
+            ));
+        }
+        if counters.over_budget_rays > 0 {
+            lines.push(format!(
+                "{} ray(s) were not traced (black): their branch of the ray tree (a ray of the camera ray's hit \
+                 and every ray below it) had traced its budget of {RAYS_PER_BRANCH} rays; shaders whose rays do \
+                 not shrink in weight (glass, Layered) double them at every level when nothing prunes them \
+                 (--slide, --exhaustive): lower the depth limit, or take the step adaptive-depth",
+                counters.over_budget_rays
             ));
         }
         if counters.capped_rays > 0 {

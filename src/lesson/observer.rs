@@ -34,6 +34,8 @@ pub enum Stop {
     /// Its shading point had used its budget of rays: its traced siblings' mean colour (see
     /// `branching.rs`).
     Shared,
+    /// Its branch of the ray tree had traced [`crate::lesson::branching::RAYS_PER_BRANCH`] rays: black.
+    BranchBudget,
 }
 
 impl std::fmt::Display for Stop {
@@ -44,6 +46,7 @@ impl std::fmt::Display for Stop {
             Stop::WeightCutoff => "weight below the adaptive cut-off: black",
             Stop::SafetyCap => "recursion safety cap: black",
             Stop::Shared => "over its shading point's budget of rays: the mean of its traced siblings",
+            Stop::BranchBudget => "over its branch's budget of rays: black",
         })
     }
 }

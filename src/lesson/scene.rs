@@ -338,6 +338,9 @@ pub struct Counters {
     /// Rays not traced because their shading point had used its budget: they were given the mean of their
     /// traced siblings' colours (see [`crate::lesson::branching`]; not part of the total).
     pub shared_rays: u64,
+    /// Rays not traced because their branch of the ray tree had traced
+    /// [`RAYS_PER_BRANCH`](crate::lesson::branching::RAYS_PER_BRANCH) rays (black; not part of the total).
+    pub over_budget_rays: u64,
     /// Camera samples that came back NaN or infinite, counted before the renderer cleans them (see
     /// [`crate::lesson::render::RenderSettings::sample`]): 0 in a sound render, which the tests check.
     pub non_finite_samples: u64,
@@ -359,6 +362,7 @@ impl Counters {
         self.capped_rays += other.capped_rays;
         self.pruned_rays += other.pruned_rays;
         self.shared_rays += other.shared_rays;
+        self.over_budget_rays += other.over_budget_rays;
         self.non_finite_samples += other.non_finite_samples;
         self.problems.add(&other.problems);
     }
@@ -384,6 +388,8 @@ pub struct TraceContext<'a> {
     pub met_dispersion: bool,
     /// What `raytrace` keeps of the shaders running, which bounds their rays ([`crate::lesson::branching`]).
     pub(crate) shading: Shading<'a>,
+    /// The rays the current branch of the ray tree has traced ([`crate::lesson::branching::RAYS_PER_BRANCH`]).
+    pub(crate) branch_rays: u32,
 }
 
 impl<'a> TraceContext<'a> {
@@ -397,6 +403,7 @@ impl<'a> TraceContext<'a> {
             observer: None,
             met_dispersion: false,
             shading: Shading::camera(),
+            branch_rays: 0,
         }
     }
 
@@ -463,6 +470,10 @@ impl<'a> TraceContext<'a> {
             self.counters.shared_rays += 1;
             self.tell::<WATCHED>(|o| o.ray_ends(shared, Some(Stop::Shared)));
             return shared;
+        }
+        if !self.within_branch_budget(ray.depth) {
+            self.counters.over_budget_rays += 1;
+            return self.stop::<WATCHED>(Stop::BranchBudget);
         }
         self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
         let scene = self.scene;

@@ -3,7 +3,7 @@
 //! the workbook's own glossy mirror; the workbook's shaders never reach the bound.
 
 use lecture6::lesson::beyond::Steps;
-use lecture6::lesson::branching::{SECONDARY_SPLIT, SPLIT_DEPTH};
+use lecture6::lesson::branching::{RAYS_PER_BRANCH, SECONDARY_SPLIT, SPLIT_DEPTH};
 use lecture6::lesson::frame::Frame;
 use lecture6::lesson::render::{RenderSettings, RenderStats, render};
 use lecture6::lesson::sampling::DiscSampler;
@@ -81,6 +81,25 @@ fn a_full_weight_average_traces_rays_linear_in_the_depth() {
     for steps in [Steps::ALL, Steps::SLIDES] {
         bounded_in(steps);
     }
+}
+
+/// The budget of a branch is the library's, not the command line's (which refuses a depth limit above 64
+/// without adaptive depth control): the layered example read as the slides write it, with a depth limit of
+/// 1000, traces no more rays below its camera rays than `RAYS_PER_BRANCH` for each ray of their hits, and the
+/// end-of-run report names the rays past it. Without the budget its glass doubles its rays at every level.
+#[test]
+fn a_layered_scene_read_as_the_slides_write_it_stays_within_its_budget_at_any_depth() {
+    use crate::common::examples::layered;
+    let (mut scene, _) = crate::common::parse::<layered::Options>(&["--slide"]).prepare().unwrap();
+    scene.max_depth = 1000;
+    let settings = RenderSettings { width: 48, height: 36, spp: 4, ..RenderSettings::default() };
+    let (_, stats) = render(&scene, &settings).unwrap();
+    let c = &stats.counters;
+    let below_the_camera: u64 = c.rays_by_depth[1..].iter().sum();
+    assert!(below_the_camera <= c.rays_by_depth[1] * RAYS_PER_BRANCH as u64, "{:?}", c.rays_by_depth);
+    assert!(c.over_budget_rays > 0 && c.rays_by_depth[15] > 0, "the glass never reached the budget: {c:?}");
+    let named = stats.warnings.iter().filter(|w| w.contains(&format!("its budget of {RAYS_PER_BRANCH} rays")));
+    assert_eq!(named.count(), 1, "{:?}", stats.warnings);
 }
 
 /// The bound holds in either reading: by default and with `--slide` (`steps`).

@@ -40,6 +40,8 @@ pub fn render<E: Example>(args: &[&str]) -> Frame {
     assert_eq!(others, Default::default(), "{args:?}: {:?}", stats.warnings);
     // A property of the workbook's own shaders (a student's N-ray shader shares rays below the first bounce).
     assert_eq!(stats.counters.shared_rays, 0, "{args:?}: the workbook's shaders stay within their budget of rays");
+    // No example's branch of the ray tree comes near its budget.
+    assert_eq!(stats.counters.over_budget_rays, 0, "{args:?}: {:?}", stats.warnings);
     frame
 }
 
