@@ -54,4 +54,5 @@ mod study;
 mod template;
 mod transform;
 mod viewer;
+mod walk;
 mod window;
