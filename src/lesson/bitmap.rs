@@ -21,6 +21,79 @@ use crate::lesson::topic::{Recorder, Texel, Topic, record};
 use glam::Vec3A;
 use std::path::Path;
 
+// The slide's look-up first: the colour at (u, v), nearest or bilinear; the bitmap itself after it.
+impl Bitmap {
+    /// The colour at texture coordinates (u, v): u runs left to right and v top to bottom across the image,
+    /// one image per unit; outside [0, 1) the `wrap` mode decides.
+    #[inline(always)]
+    pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
+        self.sample_recorded(u, v, filter, wrap, None)
+    }
+
+    /// [`Bitmap::sample`], telling `recorder`, if given, the texels it read and their weights
+    /// ([`Topic::Texels`]).
+    #[inline(always)]
+    pub fn sample_recorded(
+        &self,
+        u: f32,
+        v: f32,
+        filter: Filter,
+        wrap: (Wrap, Wrap),
+        recorder: Option<&mut dyn Recorder>,
+    ) -> Color {
+        // The storage is chosen once per look-up, not once per texel.
+        match &self.texels {
+            Texels::Linear(pixels) => self.filtered((u, v), filter, wrap, pixels, |c| c, recorder),
+            Texels::Codes8 { codes, table } => {
+                self.filtered((u, v), filter, wrap, codes, |code| decode(code, table), recorder)
+            }
+        }
+    }
+
+    /// [`Bitmap::sample_recorded`] from the texels `texels` (row by row), `linear` making a linear colour of
+    /// one.
+    #[inline(always)]
+    fn filtered<T: Copy>(
+        &self,
+        (u, v): (f32, f32),
+        filter: Filter,
+        wrap: (Wrap, Wrap),
+        texels: &[T],
+        linear: impl Fn(T) -> Color,
+        recorder: Option<&mut dyn Recorder>,
+    ) -> Color {
+        // NaN coordinates (a degenerate hit) are read as the first texel's (see `Wrap::neighbours`).
+        let (x, y) = (u * self.size.0, v * self.size.1);
+        let at = |i: usize, j: usize| linear(texels[j * self.width + i]);
+        let read = |texels: &[(usize, usize, f32)]| {
+            let texels = texels.iter().map(|&(x, y, weight)| Texel { x, y, weight, color: at(x, y) }).collect();
+            Topic::Texels { u, v, texels }
+        };
+        match filter {
+            Filter::Nearest => {
+                let (i, j) = (wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height));
+                record(recorder, || read(&[(i, j, 1.0)]));
+                at(i, j)
+            }
+            Filter::Bilinear => {
+                beyond!(TexelFilter);
+                exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
+                // Texel centres sit at half-integer coordinates.
+                let (i0, i1, tx) = wrap.0.neighbours(x - 0.5, self.width);
+                let (j0, j1, ty) = wrap.1.neighbours(y - 0.5, self.height);
+                record(recorder, || {
+                    let (sx, sy) = (1.0 - tx, 1.0 - ty);
+                    read(&[(i0, j0, sx * sy), (i1, j0, tx * sy), (i0, j1, sx * ty), (i1, j1, tx * ty)])
+                });
+                // The top two texels mixed, then the bottom two, then the two mixes.
+                let top = at(i0, j0) * (1.0 - tx) + at(i1, j0) * tx;
+                let bottom = at(i0, j1) * (1.0 - tx) + at(i1, j1) * tx;
+                top * (1.0 - ty) + bottom * ty
+            }
+        }
+    }
+}
+
 /// What happens to texture coordinates outside [0, 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Wrap {
@@ -153,76 +226,6 @@ impl Bitmap {
         match &self.texels {
             Texels::Linear(pixels) => pixels[i],
             Texels::Codes8 { codes, table } => decode(codes[i], table),
-        }
-    }
-
-    /// The colour at texture coordinates (u, v): u runs left to right and v top to bottom across the image,
-    /// one image per unit; outside [0, 1) the `wrap` mode decides.
-    #[inline(always)]
-    pub fn sample(&self, u: f32, v: f32, filter: Filter, wrap: (Wrap, Wrap)) -> Color {
-        self.sample_recorded(u, v, filter, wrap, None)
-    }
-
-    /// [`Bitmap::sample`], telling `recorder`, if given, the texels it read and their weights
-    /// ([`Topic::Texels`]).
-    #[inline(always)]
-    pub fn sample_recorded(
-        &self,
-        u: f32,
-        v: f32,
-        filter: Filter,
-        wrap: (Wrap, Wrap),
-        recorder: Option<&mut dyn Recorder>,
-    ) -> Color {
-        // The storage is chosen once per look-up, not once per texel.
-        match &self.texels {
-            Texels::Linear(pixels) => self.filtered((u, v), filter, wrap, pixels, |c| c, recorder),
-            Texels::Codes8 { codes, table } => {
-                self.filtered((u, v), filter, wrap, codes, |code| decode(code, table), recorder)
-            }
-        }
-    }
-
-    /// [`Bitmap::sample_recorded`] from the texels `texels` (row by row), `linear` making a linear colour of
-    /// one.
-    #[inline(always)]
-    fn filtered<T: Copy>(
-        &self,
-        (u, v): (f32, f32),
-        filter: Filter,
-        wrap: (Wrap, Wrap),
-        texels: &[T],
-        linear: impl Fn(T) -> Color,
-        recorder: Option<&mut dyn Recorder>,
-    ) -> Color {
-        // NaN coordinates (a degenerate hit) are read as the first texel's (see `Wrap::neighbours`).
-        let (x, y) = (u * self.size.0, v * self.size.1);
-        let at = |i: usize, j: usize| linear(texels[j * self.width + i]);
-        let read = |texels: &[(usize, usize, f32)]| {
-            let texels = texels.iter().map(|&(x, y, weight)| Texel { x, y, weight, color: at(x, y) }).collect();
-            Topic::Texels { u, v, texels }
-        };
-        match filter {
-            Filter::Nearest => {
-                let (i, j) = (wrap.0.texel(floor(x) as i64, self.width), wrap.1.texel(floor(y) as i64, self.height));
-                record(recorder, || read(&[(i, j, 1.0)]));
-                at(i, j)
-            }
-            Filter::Bilinear => {
-                beyond!(TexelFilter);
-                exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
-                // Texel centres sit at half-integer coordinates.
-                let (i0, i1, tx) = wrap.0.neighbours(x - 0.5, self.width);
-                let (j0, j1, ty) = wrap.1.neighbours(y - 0.5, self.height);
-                record(recorder, || {
-                    let (sx, sy) = (1.0 - tx, 1.0 - ty);
-                    read(&[(i0, j0, sx * sy), (i1, j0, tx * sy), (i0, j1, sx * ty), (i1, j1, tx * ty)])
-                });
-                // The top two texels mixed, then the bottom two, then the two mixes.
-                let top = at(i0, j0) * (1.0 - tx) + at(i1, j0) * tx;
-                let bottom = at(i0, j1) * (1.0 - tx) + at(i1, j1) * tx;
-                top * (1.0 - ty) + bottom * ty
-            }
         }
     }
 }

@@ -63,6 +63,57 @@ use std::f32::consts::{FRAC_1_PI, PI};
 use std::path::Path;
 use std::sync::Arc;
 
+impl Environment for SphericalEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        self.look_up(dir, self.filter)
+    }
+
+    fn into_sky(self: Arc<Self>) -> Sky {
+        let filter = self.filter;
+        Sky::Spherical(Arc::unwrap_or_clone(self), filter)
+    }
+}
+
+/// Where the direction `dir` lands in an equirectangular image: (u, v) in [0, 1] (see the module docs).
+pub fn equirect_uv(dir: Vector) -> (f32, f32) {
+    let u = 0.5 + dir.x.atan2(dir.z) * (0.5 * FRAC_1_PI);
+    let v = 0.5 - dir.y.atan2(dir.x.hypot(dir.z)) * FRAC_1_PI;
+    (u, v)
+}
+
+/// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
+#[inline(always)]
+pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
+    exercise!(cube_face_uv(dir));
+    use CubeFace::*;
+    let a = dir.abs();
+    // The largest component picks the face. `major` is the component along the face's centre, `along_u` and
+    // `along_v` those along its u and v directions: the rows of the table in the module docs, read
+    // straight from `dir` (the products with the axes of `CubeFace::axes`, without the arithmetic).
+    let (face, major, along_u, along_v) = if a.x >= a.y && a.x >= a.z {
+        if dir.x >= 0.0 { (PosX, dir.x, -dir.z, -dir.y) } else { (NegX, -dir.x, dir.z, -dir.y) }
+    } else if a.y >= a.z {
+        if dir.y >= 0.0 { (PosY, dir.y, dir.x, dir.z) } else { (NegY, -dir.y, dir.x, -dir.z) }
+    } else if dir.z >= 0.0 {
+        (PosZ, dir.z, dir.x, -dir.y)
+    } else {
+        (NegZ, -dir.z, -dir.x, -dir.y)
+    };
+    // Project onto the face's plane at distance 1: the major component becomes 1.
+    (face, 0.5 + 0.5 * along_u / major, 0.5 + 0.5 * along_v / major)
+}
+
+impl Environment for CubemapEnvironment {
+    fn get(&self, dir: Vector) -> Color {
+        self.look_up(dir, self.filter)
+    }
+
+    fn into_sky(self: Arc<Self>) -> Sky {
+        let filter = self.filter;
+        Sky::Cubemap(Arc::unwrap_or_clone(self), filter)
+    }
+}
+
 /// The course's `Environment` interface (`getEnvironment(dir)`).
 pub trait Environment: Any + Send + Sync + EnvironmentObject {
     /// The colour seen in the unit direction `dir`.
@@ -167,13 +218,6 @@ pub fn load_with_layout(path: &Path, layout: CubemapLayout) -> Result<Arc<dyn En
     })
 }
 
-/// Where the direction `dir` lands in an equirectangular image: (u, v) in [0, 1] (see the module docs).
-pub fn equirect_uv(dir: Vector) -> (f32, f32) {
-    let u = 0.5 + dir.x.atan2(dir.z) * (0.5 * FRAC_1_PI);
-    let v = 0.5 - dir.y.atan2(dir.x.hypot(dir.z)) * FRAC_1_PI;
-    (u, v)
-}
-
 /// The unit direction that lands at (u, v) of an equirectangular image: the inverse of [`equirect_uv`].
 pub fn equirect_direction(u: f32, v: f32) -> Vector {
     let longitude = (u - 0.5) * 2.0 * PI;
@@ -227,17 +271,6 @@ impl SphericalEnvironment {
     }
 }
 
-impl Environment for SphericalEnvironment {
-    fn get(&self, dir: Vector) -> Color {
-        self.look_up(dir, self.filter)
-    }
-
-    fn into_sky(self: Arc<Self>) -> Sky {
-        let filter = self.filter;
-        Sky::Spherical(Arc::unwrap_or_clone(self), filter)
-    }
-}
-
 /// One face of a cube map.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CubeFace {
@@ -277,28 +310,6 @@ impl CubeFace {
             CubeFace::NegZ => (-z, -x, -y),
         }
     }
-}
-
-/// The face the direction `dir` points into, and where in it: (face, u, v) with u, v in [0, 1].
-#[inline(always)]
-pub fn cube_face_uv(dir: Vector) -> (CubeFace, f32, f32) {
-    exercise!(cube_face_uv(dir));
-    use CubeFace::*;
-    let a = dir.abs();
-    // The largest component picks the face. `major` is the component along the face's centre, `along_u` and
-    // `along_v` those along its u and v directions: the rows of the table in the module docs, read
-    // straight from `dir` (the products with the axes of `CubeFace::axes`, without the arithmetic).
-    let (face, major, along_u, along_v) = if a.x >= a.y && a.x >= a.z {
-        if dir.x >= 0.0 { (PosX, dir.x, -dir.z, -dir.y) } else { (NegX, -dir.x, dir.z, -dir.y) }
-    } else if a.y >= a.z {
-        if dir.y >= 0.0 { (PosY, dir.y, dir.x, dir.z) } else { (NegY, -dir.y, dir.x, -dir.z) }
-    } else if dir.z >= 0.0 {
-        (PosZ, dir.z, dir.x, -dir.y)
-    } else {
-        (NegZ, -dir.z, -dir.x, -dir.y)
-    };
-    // Project onto the face's plane at distance 1: the major component becomes 1.
-    (face, 0.5 + 0.5 * along_u / major, 0.5 + 0.5 * along_v / major)
 }
 
 /// The unit direction through (u, v) of a cube face: the inverse of [`cube_face_uv`].
@@ -407,17 +418,6 @@ impl CubemapEnvironment {
     /// The same cube map read with `filter`.
     pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {
         CubemapEnvironment { filter, ..self }
-    }
-}
-
-impl Environment for CubemapEnvironment {
-    fn get(&self, dir: Vector) -> Color {
-        self.look_up(dir, self.filter)
-    }
-
-    fn into_sky(self: Arc<Self>) -> Sky {
-        let filter = self.filter;
-        Sky::Cubemap(Arc::unwrap_or_clone(self), filter)
     }
 }
 

@@ -12,6 +12,60 @@ use crate::lesson::transform::Transform;
 
 pub use crate::lesson::geometry::IntoGeometry;
 
+// The slide's Node::intersect first: the ray into the shape's own space, its hit there, the hit back in the world.
+impl Node {
+    /// The slide's `Node::intersect`: the ray goes to canonical space, meets the geometry there, and the hit
+    /// comes back to world space.
+    ///
+    /// ```text
+    /// function Node::intersect(ray, info)
+    ///     t_ray = ray * T-1
+    ///     geometry->intersect(t_ray, info)
+    ///     info = info * T
+    /// ```
+    #[inline(always)]
+    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
+        self.checked_intersect(ray, t_max).map(|(info, _)| info)
+    }
+
+    /// [`Node::intersect`], and whether the geometry described the hit with a unit normal (see
+    /// [`Node::checked_surface`]).
+    #[inline(always)]
+    pub(crate) fn checked_intersect(&self, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
+        match &self.transform {
+            None => self.geometry.intersect(ray, t_max).map(|info| (info, self.is_unit_normal(&info))),
+            Some(t) => self.intersect_transformed(t, ray, t_max),
+        }
+    }
+
+    /// [`Node::checked_intersect`] through the node's transform, out of the node loop as
+    /// [`Node::hit_transformed`].
+    #[inline(never)]
+    fn intersect_transformed(&self, t: &Transform, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
+        let info = self.geometry.intersect(&t.ray_to_canonical(ray), t_max)?;
+        Some((t.info_to_world(&info), self.is_unit_normal(&info)))
+    }
+}
+
+/// The slides' loop over the nodes (slide "Model трансформация"): `intersect(i, t_max)` of every node `i` in
+/// turn, each searched up to the closest hit so far, so that a node added earlier keeps a tie. The closest
+/// hit, its node's index, and whether its normal was of unit length.
+#[inline(always)]
+pub(crate) fn closest_of(
+    count: usize,
+    mut intersect: impl FnMut(usize, f32) -> Option<(IntersectionInfo, bool)>,
+) -> Option<(IntersectionInfo, usize, bool)> {
+    let mut closest = None;
+    let mut t_max = f32::INFINITY;
+    for i in 0..count {
+        if let Some((info, unit_normal)) = intersect(i, t_max) {
+            t_max = info.distance;
+            closest = Some((info, i, unit_normal));
+        }
+    }
+    closest
+}
+
 /// One object of the scene: a geometry in its canonical form, the shader that colours it and the transform
 /// that places it in the world (slide "Model трансформация").
 #[derive(Clone)]
@@ -61,38 +115,6 @@ impl Node {
     /// Moves the node by `offset` after its current transform.
     pub fn translate(self, offset: Vector) -> Node {
         self.with_transform(|t| t.translate(offset))
-    }
-
-    /// The slide's `Node::intersect`: the ray goes to canonical space, meets the geometry there, and the hit
-    /// comes back to world space.
-    ///
-    /// ```text
-    /// function Node::intersect(ray, info)
-    ///     t_ray = ray * T-1
-    ///     geometry->intersect(t_ray, info)
-    ///     info = info * T
-    /// ```
-    #[inline(always)]
-    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
-        self.checked_intersect(ray, t_max).map(|(info, _)| info)
-    }
-
-    /// [`Node::intersect`], and whether the geometry described the hit with a unit normal (see
-    /// [`Node::checked_surface`]).
-    #[inline(always)]
-    pub(crate) fn checked_intersect(&self, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
-        match &self.transform {
-            None => self.geometry.intersect(ray, t_max).map(|info| (info, self.is_unit_normal(&info))),
-            Some(t) => self.intersect_transformed(t, ray, t_max),
-        }
-    }
-
-    /// [`Node::checked_intersect`] through the node's transform, out of the node loop as
-    /// [`Node::hit_transformed`].
-    #[inline(never)]
-    fn intersect_transformed(&self, t: &Transform, ray: &Ray, t_max: f32) -> Option<(IntersectionInfo, bool)> {
-        let info = self.geometry.intersect(&t.ray_to_canonical(ray), t_max)?;
-        Some((t.info_to_world(&info), self.is_unit_normal(&info)))
     }
 
     /// The first phase of [`Node::intersect`] ([`Geometry::hit`] in canonical space): where the ray meets
@@ -287,25 +309,6 @@ pub(crate) fn any_of(nodes: &[Node], ray: &Ray, t_max: f32) -> bool {
         }
     }
     false
-}
-
-/// The slides' loop over the nodes (slide "Model трансформация"): `intersect(i, t_max)` of every node `i` in
-/// turn, each searched up to the closest hit so far, so that a node added earlier keeps a tie. The closest
-/// hit, its node's index, and whether its normal was of unit length.
-#[inline(always)]
-pub(crate) fn closest_of(
-    count: usize,
-    mut intersect: impl FnMut(usize, f32) -> Option<(IntersectionInfo, bool)>,
-) -> Option<(IntersectionInfo, usize, bool)> {
-    let mut closest = None;
-    let mut t_max = f32::INFINITY;
-    for i in 0..count {
-        if let Some((info, unit_normal)) = intersect(i, t_max) {
-            t_max = info.distance;
-            closest = Some((info, i, unit_normal));
-        }
-    }
-    closest
 }
 
 impl NodeTree {

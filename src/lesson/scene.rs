@@ -38,6 +38,180 @@ use std::borrow::Cow;
 use std::collections::HashMap;
 use std::sync::Arc;
 
+// The slides' raytrace first (the nearest hit, its shader's colour, the shadow rays); the scene after it.
+impl<'a> TraceContext<'a> {
+    /// The slides' `raytrace(ray)` ("Reflection v0.2"): the colour seen along the ray. Black past the depth
+    /// limit (or the [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth
+    /// control, a step); the environment when nothing is hit; otherwise whatever the hit node's shader says.
+    /// A ray over its shading point's budget is not traced and brings back its siblings' mean colour
+    /// ([`crate::lesson::branching`]). An observer in the context (the ray tree) is told what it does: the
+    /// same code makes the picture and the ray tree, compiled once with the reports to the observer and once
+    /// without them, for every render but one pixel's.
+    #[inline(always)]
+    pub fn raytrace(&mut self, ray: &Ray) -> Color {
+        if self.observer.is_some() {
+            return self.raytrace_watched(ray);
+        }
+        self.raytrace_unwatched(ray)
+    }
+
+    /// `raytrace` with no observer to tell.
+    #[inline(never)]
+    fn raytrace_unwatched(&mut self, ray: &Ray) -> Color {
+        self.trace::<false>(ray)
+    }
+
+    /// `raytrace` with an observer to tell.
+    #[inline(never)]
+    fn raytrace_watched(&mut self, ray: &Ray) -> Color {
+        self.trace::<true>(ray)
+    }
+
+    /// `raytrace`, telling the observer what it does when `WATCHED`.
+    #[inline(always)]
+    fn trace<const WATCHED: bool>(&mut self, ray: &Ray) -> Color {
+        self.tell::<WATCHED>(|o| o.ray_begins(ray));
+        // A student's shader's ray is at least one level deeper than the ray it shades: one made with
+        // `Ray::new` (depth 0) cannot restart the count, so the recursion stops at the depth limit whatever
+        // the shader does.
+        let restarted;
+        let ray = if ray.depth < self.shading.least_depth {
+            restarted = self.restarted(ray);
+            &restarted
+        } else {
+            ray
+        };
+        if ray.depth > self.scene.max_depth {
+            return self.stop::<WATCHED>(Stop::DepthLimit);
+        }
+        if ray.depth > RECURSION_SAFETY_CAP {
+            self.counters.capped_rays += 1;
+            return self.stop::<WATCHED>(Stop::SafetyCap);
+        }
+        if ray.weight < self.scene.min_ray_weight && self.scene.steps.has(Step::AdaptiveDepth) {
+            beyond!(AdaptiveDepth);
+            self.counters.pruned_rays += 1;
+            return self.stop::<WATCHED>(Stop::WeightCutoff);
+        }
+        if let Some(shared) = self.shading.share(ray.weight) {
+            self.counters.shared_rays += 1;
+            self.tell::<WATCHED>(|o| o.ray_ends(shared, Some(Stop::Shared)));
+            return shared;
+        }
+        if !self.within_branch_budget(ray.depth) {
+            self.counters.over_budget_rays += 1;
+            return self.stop::<WATCHED>(Stop::BranchBudget);
+        }
+        self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
+        let scene = self.scene;
+        let (color, stop) = if !scene.steps.has(Step::TwoPhaseHit) {
+            self.trace_by_loop::<WATCHED>(ray)
+        } else {
+            beyond!(TwoPhaseHit);
+            match scene.nearest_hit_index(ray) {
+                Some((hit, i)) => self.shade_any_hit::<WATCHED>(i, ray, &hit),
+                None => (self.environment(ray), Some(Stop::Missed)),
+            }
+        };
+        self.shading.traced(color);
+        self.tell::<WATCHED>(|o| o.ray_ends(color, stop));
+        color
+    }
+
+    /// `ray`, traced by a student's shader with a depth below its own ray's, at the depth it should have,
+    /// counted against the node whose shader traced it (the rare path, out of line).
+    #[cold]
+    #[inline(never)]
+    fn restarted(&mut self, ray: &Ray) -> Ray {
+        let scene = self.scene;
+        let node = self.shading.node().and_then(|node| scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
+        let source = node.map_or(Source::Environment, Source::Node);
+        Problems::count(&mut self.counters.problems.restarted_depth, source);
+        Ray { depth: self.shading.least_depth, ..*ray }
+    }
+
+    /// The colour of the hit `hit` of `ray` on node `i`, any node, with its surface described as its shape
+    /// does ([`Scene::surface`]), told to the observer, if there is one: what the shader makes of it, or what
+    /// the environment shows if the shape cannot find the hit again.
+    #[inline(always)]
+    fn shade_any_hit<const WATCHED: bool>(&mut self, i: usize, ray: &Ray, hit: &Hit) -> (Color, Option<Stop>) {
+        let scene = self.scene;
+        let Some((info, i, unit_normal)) = scene.surface(i, ray, hit) else {
+            return (self.environment(ray), Some(Stop::Missed));
+        };
+        self.shade_found::<WATCHED>(i, ray, &info, unit_normal)
+    }
+
+    /// `raytrace`'s hit as the slide finds it ([`Scene::closest_by_loop`]: every node intersected in full),
+    /// shaded as the two-phase hit's is: the usual case without the step [`Step::TwoPhaseHit`], kept out of
+    /// the default reading's `raytrace`.
+    #[inline(never)]
+    fn trace_by_loop<const WATCHED: bool>(&mut self, ray: &Ray) -> (Color, Option<Stop>) {
+        let scene = self.scene;
+        match scene.closest_by_loop(ray) {
+            Some((info, i, unit_normal)) => self.shade_found::<WATCHED>(i, ray, &info, unit_normal),
+            None => (self.environment(ray), Some(Stop::Missed)),
+        }
+    }
+
+    /// The colour of the hit `info` of `ray` on node `i`, any node, told to the observer, if there is one: a
+    /// node of the workbook's own shape and shaders is shaded without a shading point of its own
+    /// ([`crate::lesson::branching`]).
+    #[inline(always)]
+    fn shade_found<const WATCHED: bool>(
+        &mut self,
+        i: usize,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        unit_normal: bool,
+    ) -> (Color, Option<Stop>) {
+        let scene = self.scene;
+        let node = &scene.nodes[i];
+        self.tell::<WATCHED>(|o| o.ray_hits(&scene.node_name(node), node.shader.name(), info));
+        self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
+        if node.is_workbook() {
+            return (self.shade_workbook_hit(i, ray, info), None);
+        }
+        (self.shade_hit(i, ray, info, unit_normal), None)
+    }
+
+    /// What a ray that hit nothing sees: the environment, or black.
+    #[inline(always)]
+    fn environment(&mut self, ray: &Ray) -> Color {
+        let scene = self.scene;
+        let color = scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir));
+        if !color.is_finite() {
+            self.note_environment_non_finite();
+        }
+        color
+    }
+
+    /// Counts an environment colour that was NaN or infinite (the rare path, out of line).
+    #[cold]
+    #[inline(never)]
+    fn note_environment_non_finite(&mut self) {
+        Problems::count(&mut self.counters.problems.non_finite, Source::Environment);
+    }
+
+    /// A ray not traced, for the reason `stop`: black.
+    #[inline(always)]
+    fn stop<const WATCHED: bool>(&mut self, stop: Stop) -> Color {
+        self.tell::<WATCHED>(|o| o.ray_ends(Color::BLACK, Some(stop)));
+        Color::BLACK
+    }
+
+    /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
+    #[inline(always)]
+    pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
+        self.counters.shadow_rays += 1;
+        let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
+        let to_light = to - start;
+        let t_max = to_light.length();
+        let ray = Ray::new(start, to_light / t_max);
+        !self.scene.intersects(&ray, t_max)
+    }
+}
+
 /// The slide's `MAX_RAY_DEPTH` default ("Reflection v0.2" shows 2); scenes set their own.
 pub const MAX_RAY_DEPTH: u32 = 2;
 
@@ -413,166 +587,6 @@ impl<'a> TraceContext<'a> {
         self.shading = Shading::camera();
     }
 
-    /// The slides' `raytrace(ray)` ("Reflection v0.2"): the colour seen along the ray. Black past the depth
-    /// limit (or the [`RECURSION_SAFETY_CAP`]), or when the ray's weight is too small to show (adaptive depth
-    /// control, a step); the environment when nothing is hit; otherwise whatever the hit node's shader says.
-    /// A ray over its shading point's budget is not traced and brings back its siblings' mean colour
-    /// ([`crate::lesson::branching`]). An observer in the context (the ray tree) is told what it does: the
-    /// same code makes the picture and the ray tree, compiled once with the reports to the observer and once
-    /// without them, for every render but one pixel's.
-    #[inline(always)]
-    pub fn raytrace(&mut self, ray: &Ray) -> Color {
-        if self.observer.is_some() {
-            return self.raytrace_watched(ray);
-        }
-        self.raytrace_unwatched(ray)
-    }
-
-    /// `raytrace` with no observer to tell.
-    #[inline(never)]
-    fn raytrace_unwatched(&mut self, ray: &Ray) -> Color {
-        self.trace::<false>(ray)
-    }
-
-    /// `raytrace` with an observer to tell.
-    #[inline(never)]
-    fn raytrace_watched(&mut self, ray: &Ray) -> Color {
-        self.trace::<true>(ray)
-    }
-
-    /// `raytrace`, telling the observer what it does when `WATCHED`.
-    #[inline(always)]
-    fn trace<const WATCHED: bool>(&mut self, ray: &Ray) -> Color {
-        self.tell::<WATCHED>(|o| o.ray_begins(ray));
-        // A student's shader's ray is at least one level deeper than the ray it shades: one made with
-        // `Ray::new` (depth 0) cannot restart the count, so the recursion stops at the depth limit whatever
-        // the shader does.
-        let restarted;
-        let ray = if ray.depth < self.shading.least_depth {
-            restarted = self.restarted(ray);
-            &restarted
-        } else {
-            ray
-        };
-        if ray.depth > self.scene.max_depth {
-            return self.stop::<WATCHED>(Stop::DepthLimit);
-        }
-        if ray.depth > RECURSION_SAFETY_CAP {
-            self.counters.capped_rays += 1;
-            return self.stop::<WATCHED>(Stop::SafetyCap);
-        }
-        if ray.weight < self.scene.min_ray_weight && self.scene.steps.has(Step::AdaptiveDepth) {
-            beyond!(AdaptiveDepth);
-            self.counters.pruned_rays += 1;
-            return self.stop::<WATCHED>(Stop::WeightCutoff);
-        }
-        if let Some(shared) = self.shading.share(ray.weight) {
-            self.counters.shared_rays += 1;
-            self.tell::<WATCHED>(|o| o.ray_ends(shared, Some(Stop::Shared)));
-            return shared;
-        }
-        if !self.within_branch_budget(ray.depth) {
-            self.counters.over_budget_rays += 1;
-            return self.stop::<WATCHED>(Stop::BranchBudget);
-        }
-        self.counters.rays_by_depth[(ray.depth as usize).min(15)] += 1;
-        let scene = self.scene;
-        let (color, stop) = if !scene.steps.has(Step::TwoPhaseHit) {
-            self.trace_by_loop::<WATCHED>(ray)
-        } else {
-            beyond!(TwoPhaseHit);
-            match scene.nearest_hit_index(ray) {
-                Some((hit, i)) => self.shade_any_hit::<WATCHED>(i, ray, &hit),
-                None => (self.environment(ray), Some(Stop::Missed)),
-            }
-        };
-        self.shading.traced(color);
-        self.tell::<WATCHED>(|o| o.ray_ends(color, stop));
-        color
-    }
-
-    /// `ray`, traced by a student's shader with a depth below its own ray's, at the depth it should have,
-    /// counted against the node whose shader traced it (the rare path, out of line).
-    #[cold]
-    #[inline(never)]
-    fn restarted(&mut self, ray: &Ray) -> Ray {
-        let scene = self.scene;
-        let node = self.shading.node().and_then(|node| scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
-        let source = node.map_or(Source::Environment, Source::Node);
-        Problems::count(&mut self.counters.problems.restarted_depth, source);
-        Ray { depth: self.shading.least_depth, ..*ray }
-    }
-
-    /// The colour of the hit `hit` of `ray` on node `i`, any node, with its surface described as its shape
-    /// does ([`Scene::surface`]), told to the observer, if there is one: what the shader makes of it, or what
-    /// the environment shows if the shape cannot find the hit again.
-    #[inline(always)]
-    fn shade_any_hit<const WATCHED: bool>(&mut self, i: usize, ray: &Ray, hit: &Hit) -> (Color, Option<Stop>) {
-        let scene = self.scene;
-        let Some((info, i, unit_normal)) = scene.surface(i, ray, hit) else {
-            return (self.environment(ray), Some(Stop::Missed));
-        };
-        self.shade_found::<WATCHED>(i, ray, &info, unit_normal)
-    }
-
-    /// `raytrace`'s hit as the slide finds it ([`Scene::closest_by_loop`]: every node intersected in full),
-    /// shaded as the two-phase hit's is: the usual case without the step [`Step::TwoPhaseHit`], kept out of
-    /// the default reading's `raytrace`.
-    #[inline(never)]
-    fn trace_by_loop<const WATCHED: bool>(&mut self, ray: &Ray) -> (Color, Option<Stop>) {
-        let scene = self.scene;
-        match scene.closest_by_loop(ray) {
-            Some((info, i, unit_normal)) => self.shade_found::<WATCHED>(i, ray, &info, unit_normal),
-            None => (self.environment(ray), Some(Stop::Missed)),
-        }
-    }
-
-    /// The colour of the hit `info` of `ray` on node `i`, any node, told to the observer, if there is one: a
-    /// node of the workbook's own shape and shaders is shaded without a shading point of its own
-    /// ([`crate::lesson::branching`]).
-    #[inline(always)]
-    fn shade_found<const WATCHED: bool>(
-        &mut self,
-        i: usize,
-        ray: &Ray,
-        info: &IntersectionInfo,
-        unit_normal: bool,
-    ) -> (Color, Option<Stop>) {
-        let scene = self.scene;
-        let node = &scene.nodes[i];
-        self.tell::<WATCHED>(|o| o.ray_hits(&scene.node_name(node), node.shader.name(), info));
-        self.met_dispersion |= ray.wavelength.is_some() && node.shader.is_dispersive();
-        if node.is_workbook() {
-            return (self.shade_workbook_hit(i, ray, info), None);
-        }
-        (self.shade_hit(i, ray, info, unit_normal), None)
-    }
-
-    /// What a ray that hit nothing sees: the environment, or black.
-    #[inline(always)]
-    fn environment(&mut self, ray: &Ray) -> Color {
-        let scene = self.scene;
-        let color = scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir));
-        if !color.is_finite() {
-            self.note_environment_non_finite();
-        }
-        color
-    }
-
-    /// Counts an environment colour that was NaN or infinite (the rare path, out of line).
-    #[cold]
-    #[inline(never)]
-    fn note_environment_non_finite(&mut self) {
-        Problems::count(&mut self.counters.problems.non_finite, Source::Environment);
-    }
-
-    /// A ray not traced, for the reason `stop`: black.
-    #[inline(always)]
-    fn stop<const WATCHED: bool>(&mut self, stop: Stop) -> Color {
-        self.tell::<WATCHED>(|o| o.ray_ends(Color::BLACK, Some(stop)));
-        Color::BLACK
-    }
-
     /// One layer of a `Layered` shader (slide "Layered Shader"): what the layer's shader makes of the hit,
     /// times the layer's `weight` there (its blend, times what the layers above it let through). The same as
     /// `layer.shader.shade(ray, info, ctx) * weight`; going through the context lets an instrument show each
@@ -602,17 +616,6 @@ impl<'a> TraceContext<'a> {
     #[inline(always)]
     pub(crate) fn begin_layer(&mut self, ray: &Ray) {
         self.shading.begin_layer(ray);
-    }
-
-    /// Whether the point `to` can be seen from the hit point `from` (a shadow ray).
-    #[inline(always)]
-    pub fn visible(&mut self, from: &IntersectionInfo, to: Vector) -> bool {
-        self.counters.shadow_rays += 1;
-        let start = spawn_point(from.ip, from.geometric_normal, from.error, to - from.ip);
-        let to_light = to - start;
-        let t_max = to_light.length();
-        let ray = Ray::new(start, to_light / t_max);
-        !self.scene.intersects(&ray, t_max)
     }
 
     /// The observer, if there is one, as the recorder of what the techniques compute

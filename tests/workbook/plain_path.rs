@@ -354,3 +354,46 @@ fn the_plain_path_is_at_most_3000_lines_and_each_topics_core_about_150() {
     }
     assert!(total <= 3000, "the slides' reading is {total} lines of code, more than 3,000");
 }
+
+/// Each topic's core (the slide's version of the technique, the first part of its topic) is the first thing
+/// in its file, where a student opens it: the file's first items are the core's (or the `impl` that holds
+/// one; two topics sharing a file, the mirror and the glossy mirror, put both cores first); only the
+/// module's doc, its `mod` and `use` lines and comments come before them.
+#[test]
+fn each_topics_core_is_the_first_thing_in_its_file() {
+    // Per file, the top-level items that hold a core's items: an item itself, or the `impl` above a method.
+    let mut holders: std::collections::BTreeMap<&str, std::collections::BTreeSet<usize>> = Default::default();
+    for (_, parts) in PLAIN_PATH {
+        let (file, items) = parts[0];
+        let text = std::fs::read_to_string(root().join("src/lesson").join(file)).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        for start in items {
+            let at = lines.iter().position(|l| l.starts_with(start)).expect("the core's item (checked above)");
+            let top_level = |i: &usize| !lines[*i].is_empty() && !lines[*i].starts_with(char::is_whitespace);
+            let holder = (0..=at).rev().find(top_level).unwrap();
+            holders.entry(file).or_default().insert(holder);
+        }
+    }
+    let mut late = Vec::new();
+    for (file, holders) in holders {
+        let text = std::fs::read_to_string(root().join("src/lesson").join(file)).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        let preamble = |l: &str| {
+            let l = l.trim_start_matches("pub ");
+            l.is_empty() || ["//", "#", "use ", "mod "].iter().any(|p| l.starts_with(p))
+        };
+        // The file's top-level items, in order, after its preamble.
+        let first = lines.iter().position(|l| !preamble(l)).unwrap();
+        let items: Vec<usize> = (first..lines.len())
+            .filter(|&i| !lines[i].starts_with(char::is_whitespace) && !preamble(lines[i]))
+            .collect();
+        // Not the closing lines of an item or of a signature written over several lines.
+        let items: Vec<usize> = items.into_iter().filter(|&i| !lines[i].starts_with(['}', ')'])).collect();
+        let leading: std::collections::BTreeSet<usize> = items.iter().take(holders.len()).copied().collect();
+        if leading != holders {
+            let before: Vec<&str> = leading.difference(&holders).map(|&i| lines[i]).collect();
+            late.push(format!("src/lesson/{file}: {before:?} before the core"));
+        }
+    }
+    assert!(late.is_empty(), "cores that are not the first thing in their file:\n{}", late.join("\n"));
+}

@@ -34,6 +34,54 @@ use glam::Vec3A;
 use std::collections::HashMap;
 use std::sync::Arc;
 
+impl Shader for Layered {
+    #[inline(always)]
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        if ctx.scene.steps.has(Step::LayerPruning) && !self.every_layer {
+            return shade_pruned(&self.layers, ray, info, ctx);
+        }
+        shade_bottom_up(&self.layers, ray, info, ctx)
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Layered(self)
+    }
+
+    fn is_dispersive(&self) -> bool {
+        self.layers.iter().any(|l| l.shader.is_dispersive() || l.blend_tex.as_ref().is_some_and(|t| t.is_dispersive()))
+    }
+
+    /// A caustic caster when one of its layers is.
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        self.layers.iter().any(|layer| is_caustic_caster(&layer.shader)).then_some(self as &dyn CausticCaster)
+    }
+
+    /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a
+    /// textured Lambert under a faint reflection, the floor's texture. Where no layer's shader reads a
+    /// texture, the first blend texture, from the bottom up, that reads u/v ([`Texture::reads_uv`]): a
+    /// pattern painted with a checker as a layer's blend shows the checker's coordinates, and a glass
+    /// blended by the Fresnel texture, which reads no u/v, names none.
+    fn texture(&self) -> Option<&dyn Texture> {
+        let blend = || {
+            let blend_textures = self.layers.iter().filter_map(|layer| layer.blend_tex.as_ref());
+            blend_textures.map(|t| t as &dyn Texture).find(|t| t.reads_uv())
+        };
+        self.layers.iter().find_map(|layer| layer.shader.texture()).or_else(blend)
+    }
+}
+
+/// The slide's Layered loop: every layer from the bottom up, `res = res * (1 - blend) + layer_color * blend`.
+#[inline(always)]
+fn shade_bottom_up(layers: &[Layer], ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+    let mut res = Color::BLACK;
+    for layer in layers {
+        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx));
+        ctx.observe(|o| o.layers_covered(blend));
+        res = res * (Color::WHITE - blend) + ctx.shade_layer(layer, ray, info, blend);
+    }
+    res
+}
+
 /// One layer of a [`Layered`] shader: a shader and how opaque it is (slide "Layered Shader").
 #[derive(Clone)]
 pub struct Layer {
@@ -67,18 +115,6 @@ impl Layer {
             None => self.blend,
         }
     }
-}
-
-/// The slide's Layered loop: every layer from the bottom up, `res = res * (1 - blend) + layer_color * blend`.
-#[inline(always)]
-fn shade_bottom_up(layers: &[Layer], ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-    let mut res = Color::BLACK;
-    for layer in layers {
-        let blend = Layer::clamp_blend(layer.blend(ray, info, ctx));
-        ctx.observe(|o| o.layers_covered(blend));
-        res = res * (Color::WHITE - blend) + ctx.shade_layer(layer, ray, info, blend);
-    }
-    res
 }
 
 /// Layer pruning ([`Step::LayerPruning`]): from the top down, `uncovered` is how much of the layers seen so
@@ -196,42 +232,6 @@ impl Layered {
             }
         }
         (weights, bottom)
-    }
-}
-
-impl Shader for Layered {
-    #[inline(always)]
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        if ctx.scene.steps.has(Step::LayerPruning) && !self.every_layer {
-            return shade_pruned(&self.layers, ray, info, ctx);
-        }
-        shade_bottom_up(&self.layers, ray, info, ctx)
-    }
-
-    fn into_material(self: Arc<Self>) -> Material {
-        Material::Layered(self)
-    }
-
-    fn is_dispersive(&self) -> bool {
-        self.layers.iter().any(|l| l.shader.is_dispersive() || l.blend_tex.as_ref().is_some_and(|t| t.is_dispersive()))
-    }
-
-    /// A caustic caster when one of its layers is.
-    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        self.layers.iter().any(|layer| is_caustic_caster(&layer.shader)).then_some(self as &dyn CausticCaster)
-    }
-
-    /// The texture of the first layer, from the bottom up, whose shader reads one: for the slides' floor, a
-    /// textured Lambert under a faint reflection, the floor's texture. Where no layer's shader reads a
-    /// texture, the first blend texture, from the bottom up, that reads u/v ([`Texture::reads_uv`]): a
-    /// pattern painted with a checker as a layer's blend shows the checker's coordinates, and a glass
-    /// blended by the Fresnel texture, which reads no u/v, names none.
-    fn texture(&self) -> Option<&dyn Texture> {
-        let blend = || {
-            let blend_textures = self.layers.iter().filter_map(|layer| layer.blend_tex.as_ref());
-            blend_textures.map(|t| t as &dyn Texture).find(|t| t.reads_uv())
-        };
-        self.layers.iter().find_map(|layer| layer.shader.texture()).or_else(blend)
     }
 }
 

@@ -51,6 +51,82 @@ use crate::lesson::texture::Texture;
 use std::f32::consts::FRAC_PI_2;
 use std::sync::Arc;
 
+impl Shader for Reflection {
+    /// The mirror ray, or the glossy cone's average, times the mirror's colour at the hit.
+    #[inline(always)]
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let multiplier = self.multiplier.at(ray, info, ctx);
+        let n = faceforward(info.normal, ray.dir);
+        if self.glossiness >= 1.0 {
+            return self.trace_mirror(ray, info, n, ctx, multiplier);
+        }
+        self.shade_glossy(multiplier, ray, info, n, ctx)
+    }
+
+    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
+        Some(self)
+    }
+
+    /// The texture of a textured mirror's colour.
+    fn texture(&self) -> Option<&dyn Texture> {
+        self.multiplier.texture()
+    }
+
+    fn into_material(self: Arc<Self>) -> Material {
+        Material::Reflection(Arc::unwrap_or_clone(self))
+    }
+}
+
+// The slides' mirror and glossy mirror first; the constructors after them.
+impl Reflection {
+    /// The perfect mirror ray (the slide's Reflection v0.2): one ray in the mirror direction, one level
+    /// deeper, and what it brings back times the mirror's colour `m`.
+    #[inline(always)]
+    fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
+        let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
+        ctx.raytrace(&new_ray) * m
+    }
+
+    /// The glossy mirror's colour at the hit when its colour there is `multiplier`: the average of its cone
+    /// of rays (the slide's steps 1-7).
+    #[inline(never)]
+    fn shade_glossy(
+        &self,
+        multiplier: Color,
+        ray: &Ray,
+        info: &IntersectionInfo,
+        n: Vector,
+        ctx: &mut TraceContext,
+    ) -> Color {
+        let steps = ctx.scene.steps;
+        let num_samples =
+            if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
+        let cone = GlossyCone::new(ray.dir, n, self.glossiness);
+        // The slide's random points, or, with the step, the mirror's own sampler; the first bounce of a
+        // camera ray may share its pixel's set of points (the joint sampler), deeper bounces take their own.
+        let sampler = if steps.has(Step::DiscSamples) { self.sampler } else { DiscSampler::Random };
+        let disc = match ctx.pixel_sample {
+            Some(sample) if ray.depth == 0 => {
+                DiscSamples::for_pixel_sample(sampler, &sample, num_samples, &mut ctx.rng)
+            }
+            _ => DiscSamples::new(sampler, &mut ctx.rng),
+        };
+        let attenuation = multiplier.max_channel();
+        let mut sum = Color::BLACK;
+        let mut kept = 0u32;
+        for i in 0..num_samples {
+            if let Some(dir) = cone.direction(disc.point(i, &mut ctx.rng)) {
+                sum += ctx.raytrace(&ray.spawn(info, dir, attenuation));
+                kept += 1;
+            }
+        }
+        if kept == 0 {
+            return self.trace_mirror(ray, info, n, ctx, multiplier);
+        }
+        sum * multiplier / kept as f32
+    }
+}
+
 /// Rays a glossy mirror traces for a ray that is itself a reflection or refraction (depth > 0); the course
 /// uses 2. The core's bound on every shader's branching ([`crate::lesson::branching`]) allows the same.
 pub const SECONDARY_GLOSSY_SAMPLES: u32 = crate::lesson::branching::SECONDARY_SPLIT;
@@ -109,79 +185,6 @@ impl Reflection {
     pub fn with_sampler(mut self, sampler: DiscSampler) -> Reflection {
         self.sampler = sampler;
         self
-    }
-
-    /// The perfect mirror ray (the slide's Reflection v0.2): one ray in the mirror direction, one level
-    /// deeper, and what it brings back times the mirror's colour `m`.
-    #[inline(always)]
-    fn trace_mirror(&self, ray: &Ray, info: &IntersectionInfo, n: Vector, ctx: &mut TraceContext, m: Color) -> Color {
-        let new_ray = ray.spawn(info, reflect(ray.dir, n), m.max_channel());
-        ctx.raytrace(&new_ray) * m
-    }
-
-    /// The glossy mirror's colour at the hit when its colour there is `multiplier`: the average of its cone
-    /// of rays (the slide's steps 1-7).
-    #[inline(never)]
-    fn shade_glossy(
-        &self,
-        multiplier: Color,
-        ray: &Ray,
-        info: &IntersectionInfo,
-        n: Vector,
-        ctx: &mut TraceContext,
-    ) -> Color {
-        let steps = ctx.scene.steps;
-        let num_samples =
-            if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
-        let cone = GlossyCone::new(ray.dir, n, self.glossiness);
-        // The slide's random points, or, with the step, the mirror's own sampler; the first bounce of a
-        // camera ray may share its pixel's set of points (the joint sampler), deeper bounces take their own.
-        let sampler = if steps.has(Step::DiscSamples) { self.sampler } else { DiscSampler::Random };
-        let disc = match ctx.pixel_sample {
-            Some(sample) if ray.depth == 0 => {
-                DiscSamples::for_pixel_sample(sampler, &sample, num_samples, &mut ctx.rng)
-            }
-            _ => DiscSamples::new(sampler, &mut ctx.rng),
-        };
-        let attenuation = multiplier.max_channel();
-        let mut sum = Color::BLACK;
-        let mut kept = 0u32;
-        for i in 0..num_samples {
-            if let Some(dir) = cone.direction(disc.point(i, &mut ctx.rng)) {
-                sum += ctx.raytrace(&ray.spawn(info, dir, attenuation));
-                kept += 1;
-            }
-        }
-        if kept == 0 {
-            return self.trace_mirror(ray, info, n, ctx, multiplier);
-        }
-        sum * multiplier / kept as f32
-    }
-}
-
-impl Shader for Reflection {
-    /// The mirror ray, or the glossy cone's average, times the mirror's colour at the hit.
-    #[inline(always)]
-    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        let multiplier = self.multiplier.at(ray, info, ctx);
-        let n = faceforward(info.normal, ray.dir);
-        if self.glossiness >= 1.0 {
-            return self.trace_mirror(ray, info, n, ctx, multiplier);
-        }
-        self.shade_glossy(multiplier, ray, info, n, ctx)
-    }
-
-    fn caustic_caster(&self) -> Option<&dyn CausticCaster> {
-        Some(self)
-    }
-
-    /// The texture of a textured mirror's colour.
-    fn texture(&self) -> Option<&dyn Texture> {
-        self.multiplier.texture()
-    }
-
-    fn into_material(self: Arc<Self>) -> Material {
-        Material::Reflection(Arc::unwrap_or_clone(self))
     }
 }
 

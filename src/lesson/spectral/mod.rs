@@ -37,6 +37,43 @@ pub use colour::{
 
 use crate::lesson::error::{Error, Result};
 
+/// What the renderer does about wavelengths for one render.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SpectralPlan {
+    /// White light: one pass, rays carry no wavelength (nothing in the scene is dispersive).
+    White,
+    /// One pass per band, each traced at the band's centre.
+    Passes(Vec<Band>),
+    /// One pass; sample s of a pixel traces a wavelength in its own band out of spp.
+    Sampled,
+    /// One pass; each sample's path carries `per_path` wavelengths, and splits where it meets dispersive glass.
+    Hero {
+        /// The wavelengths each camera path carries.
+        per_path: u32,
+    },
+}
+
+impl SpectralPlan {
+    /// The plan for a scene: white light when nothing in it is dispersive, else what `mode` asks for, with
+    /// `wavelengths` passes (or wavelengths per path) of a light of the spectrum `illuminant`.
+    pub fn new(dispersive: bool, mode: SpectralMode, wavelengths: u32, illuminant: Illuminant) -> SpectralPlan {
+        match (dispersive, mode) {
+            (false, _) => SpectralPlan::White,
+            (true, SpectralMode::Passes) => SpectralPlan::Passes(bands(wavelengths, illuminant)),
+            (true, SpectralMode::Sampled) => SpectralPlan::Sampled,
+            (true, SpectralMode::Hero) => SpectralPlan::Hero { per_path: wavelengths },
+        }
+    }
+
+    /// How many times the frame is traced.
+    pub fn passes(&self) -> u32 {
+        match self {
+            SpectralPlan::Passes(bands) => bands.len() as u32,
+            _ => 1,
+        }
+    }
+}
+
 /// The helium d line (yellow), in nanometres: where a glass's n_d is measured.
 pub const LAMBDA_D: f32 = 587.6;
 /// The hydrogen F line (blue), in nanometres: with the C line, it gives the dispersion n_F - n_C.
@@ -158,43 +195,6 @@ impl SpectralMode {
             SpectralMode::Passes => 8,
             SpectralMode::Sampled => 1,
             SpectralMode::Hero => 4,
-        }
-    }
-}
-
-/// What the renderer does about wavelengths for one render.
-#[derive(Clone, Debug, PartialEq)]
-pub enum SpectralPlan {
-    /// White light: one pass, rays carry no wavelength (nothing in the scene is dispersive).
-    White,
-    /// One pass per band, each traced at the band's centre.
-    Passes(Vec<Band>),
-    /// One pass; sample s of a pixel traces a wavelength in its own band out of spp.
-    Sampled,
-    /// One pass; each sample's path carries `per_path` wavelengths, and splits where it meets dispersive glass.
-    Hero {
-        /// The wavelengths each camera path carries.
-        per_path: u32,
-    },
-}
-
-impl SpectralPlan {
-    /// The plan for a scene: white light when nothing in it is dispersive, else what `mode` asks for, with
-    /// `wavelengths` passes (or wavelengths per path) of a light of the spectrum `illuminant`.
-    pub fn new(dispersive: bool, mode: SpectralMode, wavelengths: u32, illuminant: Illuminant) -> SpectralPlan {
-        match (dispersive, mode) {
-            (false, _) => SpectralPlan::White,
-            (true, SpectralMode::Passes) => SpectralPlan::Passes(bands(wavelengths, illuminant)),
-            (true, SpectralMode::Sampled) => SpectralPlan::Sampled,
-            (true, SpectralMode::Hero) => SpectralPlan::Hero { per_path: wavelengths },
-        }
-    }
-
-    /// How many times the frame is traced.
-    pub fn passes(&self) -> u32 {
-        match self {
-            SpectralPlan::Passes(bands) => bands.len() as u32,
-            _ => 1,
         }
     }
 }
