@@ -12,6 +12,9 @@
 //! - a shader that returned more light than its rays and its light loop brought it (the energy check of
 //!   [`crate::lesson::branching`]: a sum of N rays not divided by N);
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`](crate::lesson::node::Node::surface));
+//! - a ray a shader traced in a direction that is not of unit length (its squared length off by more than
+//!   four times the normal check's tolerance, which a reflection about a normal that passes that check never
+//!   is; a NaN direction is left to the NaN check);
 //!
 //! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
 //!
@@ -74,6 +77,7 @@ impl Problems {
             (&problems.self_hits, SELF_HITS, false),
             (&gaining, ENERGY_GAINS, true),
             (&problems.bad_normals, BAD_NORMALS, false),
+            (&problems.long_directions, LONG_DIRECTIONS, false),
         ] {
             if !counts.is_empty() {
                 lines.push(format!(
@@ -127,6 +131,10 @@ const ENERGY_GAINS: &str = "a shader returned more light than its brightest ray 
 
 /// The report's line on normals that are not of unit length.
 const BAD_NORMALS: &str = "a geometry returned a normal that is not of unit length, or NaN (normalise it)";
+
+/// The report's line on rays a shader traced in a direction that is not of unit length.
+const LONG_DIRECTIONS: &str = "a shader traced rays whose direction is not of unit length, which throws off the \
+     cosines, reflections and distances along them (normalise the direction before ray.spawn(info, dir, attenuation))";
 
 /// How many probe rays across, and how many down, [`undeclared_dispersion`] aims over the picture.
 pub const PROBE_RAYS: u32 = 16;

@@ -455,6 +455,7 @@ impl<'a> TraceContext<'a> {
         } else {
             ray
         };
+        self.check_direction(ray.dir);
         if ray.depth > self.scene.max_depth {
             return self.stop::<WATCHED>(Stop::DepthLimit);
         }
