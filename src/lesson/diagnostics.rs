@@ -16,7 +16,9 @@
 //!   four times the normal check's tolerance, which a reflection about a normal that passes that check never
 //!   is; a NaN direction is left to the NaN check);
 //!
-//! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
+//! and [`Problems::report`] turns the counts into one line each, naming the node and its shader. (A course
+//! shader's parameter outside the range it takes, read from the scene and not from a ray, is the command
+//! line's line after these: `crate::app::parameter_ranges`.)
 //!
 //! One mistake no ray shows: a shader whose colour depends on the ray's wavelength must say so
 //! ([`Shader::is_dispersive`]), or the renderer traces its scene in white light (every ray's `wavelength`

@@ -80,6 +80,103 @@ fn the_same_shader_normalising_its_direction_renders_without_a_word() {
     assert!(stats.counters.rays_by_depth[1] > 1000, "the brushed pillar reflects: {:?}", stats.counters);
 }
 
+/// The pillar's scene with the mirror ball's shader replaced by `shader`, named "ball".
+fn ball(shader: impl IntoShader) -> Scene {
+    let mut scene = scene(Cylinder, Lambert::new(Color::gray(0.5)));
+    scene.nodes[1] = Node::new(Sphere::new(Vector::new(25.0, 0.0, 0.0), 8.0), shader).named("ball");
+    scene.lights.push(PointLight::new(Vector::new(0.0, 100.0, -100.0), Color::WHITE, 20000.0));
+    scene
+}
+
+/// The ball's shader in the cases of [`Ball`]: out of range (0 to 3), then in range (4 to 7).
+fn ball_shader(case: usize) -> Material {
+    let layered = |blend: Color| {
+        let mut layered = Layered::new();
+        layered.add_layer(Lambert::new(Color::gray(0.5)), Color::WHITE, None).add_layer(
+            Reflection::new(0.9),
+            blend,
+            None,
+        );
+        layered.into_shader()
+    };
+    let glossy = |glossiness: f32| {
+        let mut glossy = Reflection::glossy(Color::gray(0.9), 0.9, 4).unwrap();
+        glossy.glossiness = glossiness;
+        glossy.into_shader()
+    };
+    match case {
+        0 => fresnel_glass(1.5, FresnelMode::Schlick, 9.0).into_shader(),
+        1 => Reflection::new(1.2).into_shader(),
+        2 => layered(Color::new(0.2, 1.5, 0.2)),
+        3 => glossy(1.3),
+        4 => fresnel_glass(1.5, FresnelMode::Schlick, 1.0).into_shader(),
+        5 => layered(Color::new(0.0, 1.0, 0.5)),
+        6 => glossy(1.0),
+        _ => Refraction::new(1.5, 0.0).into_shader(),
+    }
+}
+
+/// A homework of the pillar and the ball, the ball's shader picked by `--case` ([`ball_shader`]).
+#[derive(clap::Args, Clone, Debug)]
+struct Ball {
+    #[arg(long)]
+    case: usize,
+}
+
+impl Example for Ball {
+    const DEFAULT_SPP: u32 = 1;
+    fn scene(&self) -> Result<Scene> {
+        Ok(ball(ball_shader(self.case)))
+    }
+}
+
+/// The end-of-run report of the homework [`Ball`] in `case`, as the example's run prints it (`Cli::render`)
+/// and as a homework's test gets it (`render_and_report`), the same by default and with `--slide`.
+fn reported(case: usize) -> Vec<String> {
+    let case = case.to_string();
+    let args = ["--width", "160", "--height", "120", "--case", &case];
+    let warnings = render_and_report::<Ball>(&args).unwrap().1;
+    for args in [&args[..], &[&args[..], &["--slide"]].concat()] {
+        let (_, stats) = crate::common::parse::<Ball>(args).render().unwrap();
+        assert_eq!(stats.warnings, warnings, "{args:?}");
+        assert_eq!(render_and_report::<Ball>(args).unwrap().1, warnings, "{args:?}");
+    }
+    warnings
+}
+
+/// The one line of `warnings` that contains `what`.
+fn only_line<'a>(warnings: &'a [String], what: &str) -> &'a str {
+    assert_eq!(warnings.len(), 1, "one line about {what}: {warnings:?}");
+    assert!(warnings[0].contains(what), "{warnings:?}");
+    &warnings[0]
+}
+
+#[test]
+fn a_glass_passing_nine_times_the_light_is_named_with_its_multipliers() {
+    // The teacher's class: a copy of fresnel whose glass passes 9 times the light.
+    let warnings = reported(0);
+    let line = only_line(&warnings, "multiplier is outside 0 to 1");
+    let named = "ball (Layered): layer 0's Refraction multiplier 9, layer 1's Reflection multiplier (9, 9, 9)";
+    assert!(line.ends_with(named), "{line}");
+}
+
+#[test]
+fn a_mirror_above_one_a_blend_above_one_and_a_glossiness_above_one_are_named() {
+    let line = only_line(&reported(1), "multiplier is outside 0 to 1").to_string();
+    assert!(line.ends_with("ball (Reflection): its Reflection multiplier (1.2, 1.2, 1.2)"), "{line}");
+    let line = only_line(&reported(2), "blend is outside 0 to 1").to_string();
+    assert!(line.ends_with("ball (Layered): layer 1's blend (0.2, 1.5, 0.2)"), "{line}");
+    let line = only_line(&reported(3), "glossiness is outside its range").to_string();
+    assert!(line.ends_with("ball (Reflection): its Reflection glossiness 1.3"), "{line}");
+}
+
+#[test]
+fn course_shaders_in_range_render_without_a_word() {
+    for case in 4..8 {
+        assert_eq!(reported(case), Vec::<String>::new(), "case {case}: {}", ball_shader(case).name());
+    }
+}
+
 /// No false alarm: every example and the API page's homeworks, rendered at 80x60 with every node behind a
 /// type the renderer does not know (so that every ray a shader traces has its direction checked, as a
 /// student's shader's has), by default and with `--slide`, print no warning at all.
