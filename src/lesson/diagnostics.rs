@@ -57,7 +57,8 @@ impl Problems {
                 Source::Environment => "the environment".to_string(),
             });
             lines.push(format!(
-                "{} sample(s) came back NaN or infinite and were shown as black; made by {sources}",
+                "{} sample(s) came back NaN or infinite and were shown as black; made by {sources}; each count is of the \
+                 NaN or infinite colours that source made, and one sample can carry several of them",
                 counters.non_finite_samples
             ));
         }

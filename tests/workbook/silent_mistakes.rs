@@ -6,7 +6,7 @@
 //! count. Each in one line naming the node and its shader, by default and with `--slide`; the same scenes
 //! done right, and every example and the API page's homeworks, render without a word.
 
-use crate::diagnostics::{Cylinder, line, rendered, scene};
+use crate::diagnostics::{Broken, Cylinder, line, rendered, scene};
 use lecture6::lesson::beyond::Steps;
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::prelude::*;
@@ -175,6 +175,40 @@ fn course_shaders_in_range_render_without_a_word() {
     for case in 4..8 {
         assert_eq!(reported(case), Vec::<String>::new(), "case {case}: {}", ball_shader(case).name());
     }
+}
+
+/// A student's correct glossy-like shader: the mean of four mirror rays.
+struct MeanOfFour;
+
+impl Shader for MeanOfFour {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let dir = reflect(ray.dir, faceforward(info.normal, ray.dir));
+        let mut sum = Color::BLACK;
+        for _ in 0..4 {
+            sum += ctx.raytrace(&ray.spawn(info, dir, 0.9));
+        }
+        sum / 4.0 * 0.9
+    }
+}
+
+#[test]
+fn the_nan_lines_counts_say_what_they_count() {
+    // The pillar makes NaN; the ball's four rays each carry one of them into the same sample, so the counts
+    // beside the pillar add up to more samples than came back NaN, and the line says why.
+    let mut scene = ball(MeanOfFour);
+    scene.nodes[0].shader = Broken.into_shader();
+    let stats = rendered(&scene);
+    let line = line(&stats, "NaN or infinite");
+    let counted: u64 = stats.counters.problems.non_finite.values().sum();
+    assert!(counted > stats.counters.non_finite_samples, "{counted} {:?}", stats.counters);
+    assert!(line.starts_with(&format!("{} sample(s)", stats.counters.non_finite_samples)), "{line}");
+    assert!(line.contains("made by the shader of pillar (Broken)"), "{line}");
+    assert!(
+        line.ends_with(
+            "each count is of the NaN or infinite colours that source made, and one sample can carry several of them"
+        ),
+        "{line}"
+    );
 }
 
 /// No false alarm: every example and the API page's homeworks, rendered at 80x60 with every node behind a
