@@ -384,12 +384,12 @@ impl<'a> TraceContext<'a> {
     /// a few `EPSILON` of 1, and the reflection `i - 2 (i.n) n` of a unit direction about a normal of squared
     /// length `1 + d` has squared length `1 + 4 (i.n)^2 d`, so a normal the normal check lets pass never makes
     /// a direction this check names; a direction a shader did not normalise is off by what it left out. A NaN
-    /// direction is left to the NaN check (a NaN normal makes one in the course's own mirror).
+    /// direction is left to the NaN check (a NaN normal makes one in the course's own mirror), and the report
+    /// leaves out the directions of a node whose normals the normal check names (they are made from them).
     #[inline(always)]
     pub(crate) fn check_direction(&mut self, dir: Vector) {
         if !self.shading.workbook && (dir.length_squared() - 1.0).abs() > 4.0 * UNIT_NORMAL_TOLERANCE {
-            let scene = self.scene;
-            let node = self.shading.node().and_then(|node| scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
+            let node = self.shading.node().and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
             node.into_iter().for_each(|i| self.note(i, |p| &mut p.long_directions));
         }
     }

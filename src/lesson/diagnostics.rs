@@ -75,12 +75,15 @@ impl Problems {
         }
         let gains = problems.energy_gains.iter().enumerate().filter(|(_, g)| g.gained > 0 && 100 * g.gained >= g.hits);
         let gaining: BTreeMap<usize, u64> = gains.map(|(i, g)| (i, g.gained)).collect();
+        // A direction made from a normal that is not of unit length is the normal's fault, named on its own line.
+        let long = problems.long_directions.iter().filter(|(i, _)| !problems.bad_normals.contains_key(i));
+        let directions: BTreeMap<usize, u64> = long.map(|(&i, &n)| (i, n)).collect();
         for (counts, what, energy) in [
             (&problems.unspawned_rays, UNSPAWNED_RAYS, false),
             (&problems.self_hits, SELF_HITS, false),
             (&gaining, ENERGY_GAINS, true),
             (&problems.bad_normals, BAD_NORMALS, false),
-            (&problems.long_directions, LONG_DIRECTIONS, false),
+            (&directions, LONG_DIRECTIONS, false),
         ] {
             if !counts.is_empty() {
                 lines.push(format!(

@@ -19,13 +19,13 @@ pub(crate) use homework_geometry::Cylinder;
 /// The cylinder with one mistake a student makes: its hit point as `ray.at(t)` (not put back on the
 /// surface), its normal NaN, or its normal not normalised.
 #[derive(Clone, Copy)]
-enum Mistake {
+pub(crate) enum Mistake {
     AtT,
     NanNormal,
     LongNormal,
 }
 
-struct Mistaken(Mistake);
+pub(crate) struct Mistaken(pub(crate) Mistake);
 
 impl Geometry for Mistaken {
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {

@@ -6,7 +6,7 @@
 //! count. Each in one line naming the node and its shader, by default and with `--slide`; the same scenes
 //! done right, and every example and the API page's homeworks, render without a word.
 
-use crate::diagnostics::{Broken, Cylinder, line, rendered, scene};
+use crate::diagnostics::{Broken, Cylinder, Mistake, Mistaken, line, rendered, scene};
 use lecture6::lesson::beyond::Steps;
 use lecture6::lesson::render::{RenderSettings, render};
 use lecture6::prelude::*;
@@ -78,6 +78,20 @@ fn the_same_shader_normalising_its_direction_renders_without_a_word() {
     let stats = rendered(&scene(Cylinder, Brushed { normalised: true }));
     assert!(stats.warnings.is_empty(), "{:?}", stats.warnings);
     assert!(stats.counters.rays_by_depth[1] > 1000, "the brushed pillar reflects: {:?}", stats.counters);
+}
+
+#[test]
+fn a_direction_made_from_a_normal_not_of_unit_length_is_left_to_the_normals_line() {
+    // The course's mirror reflects about the geometry's normal as it comes: a normal twice too long makes a
+    // direction that is not of unit length either, which is the normal's fault, not the mirror's.
+    // Untransformed and seen from near: a transform would normalise the normal on its way to the world.
+    let mut scene = scene(Mistaken(Mistake::LongNormal), Reflection::new(0.9));
+    scene.nodes[0].transform = None;
+    scene.camera = Camera::look_at(Vector::new(0.0, 4.0, -30.0), Vector::ZERO, 12.0);
+    let stats = rendered(&scene);
+    assert!(stats.counters.problems.long_directions.contains_key(&0), "{:?}", stats.counters.problems);
+    assert!(line(&stats, "a geometry returned a normal").contains("pillar (Reflection)"));
+    assert_eq!(stats.warnings.len(), 1, "the normal's line only: {:?}", stats.warnings);
 }
 
 /// The pillar's scene with the mirror ball's shader replaced by `shader`, named "ball".
