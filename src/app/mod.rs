@@ -4,6 +4,7 @@
 pub mod assets;
 pub mod cli;
 pub mod limits;
+pub mod parameter_ranges;
 pub mod scene_file;
 pub mod scenes;
 pub mod workbook;

@@ -68,7 +68,7 @@
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::{Vector, max_abs};
-use crate::lesson::node::Node;
+use crate::lesson::node::{Node, UNIT_NORMAL_TOLERANCE};
 use crate::lesson::problems::{Gains, Problems, Source};
 use crate::lesson::ray::{Ray, spawn_point};
 use crate::lesson::scene::TraceContext;
@@ -405,6 +405,23 @@ impl<'a> TraceContext<'a> {
     fn note_non_finite(&mut self, i: usize, color: Color) {
         if !color.is_finite() && !self.shading.non_finite_below {
             Problems::count(&mut self.counters.problems.non_finite, Source::Node(i));
+        }
+    }
+
+    /// Counts `dir`, the direction of a ray the innermost shader traces, against its node if it is not of
+    /// unit length (the camera's rays, and those of the workbook's own shaders on its own shapes, are made
+    /// so). Its squared length may be off by four times a normal's ([`UNIT_NORMAL_TOLERANCE`]): a direction
+    /// made of unit vectors by a few f32 operations (a reflection, a refraction, a normalisation) is within
+    /// a few `EPSILON` of 1, and the reflection `i - 2 (i.n) n` of a unit direction about a normal of squared
+    /// length `1 + d` has squared length `1 + 4 (i.n)^2 d`, so a normal the normal check lets pass never makes
+    /// a direction this check names; a direction a shader did not normalise is off by what it left out. A NaN
+    /// direction is left to the NaN check (a NaN normal makes one in the course's own mirror), and the report
+    /// leaves out the directions of a node whose normals the normal check names (they are made from them).
+    #[inline(always)]
+    pub(crate) fn check_direction(&mut self, dir: Vector) {
+        if !self.shading.workbook && (dir.length_squared() - 1.0).abs() > 4.0 * UNIT_NORMAL_TOLERANCE {
+            let node = self.shading.node().and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
+            node.into_iter().for_each(|i| self.note(i, |p| &mut p.long_directions));
         }
     }
 

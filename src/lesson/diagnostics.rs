@@ -12,8 +12,13 @@
 //! - a shader that returned more light than its rays and its light loop brought it (the energy check of
 //!   [`crate::lesson::branching`]: a sum of N rays not divided by N);
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`](crate::lesson::node::Node::surface));
+//! - a ray a shader traced in a direction that is not of unit length (its squared length off by more than
+//!   four times the normal check's tolerance, which a reflection about a normal that passes that check never
+//!   is; a NaN direction is left to the NaN check);
 //!
-//! and [`Problems::report`] turns the counts into one line each, naming the node and its shader.
+//! and [`Problems::report`] turns the counts into one line each, naming the node and its shader. (A course
+//! shader's parameter outside the range it takes, read from the scene and not from a ray, is the command
+//! line's line after these: `crate::app::parameter_ranges`.)
 //!
 //! One mistake no ray shows: a shader whose colour depends on the ray's wavelength must say so
 //! ([`Shader::is_dispersive`]), or the renderer traces its scene in white light (every ray's `wavelength`
@@ -53,7 +58,8 @@ impl Problems {
                 Source::Environment => "the environment".to_string(),
             });
             lines.push(format!(
-                "{} sample(s) came back NaN or infinite and were shown as black; made by {sources}",
+                "{} sample(s) came back NaN or infinite and were shown as black; made by {sources}; each count is of the \
+                 NaN or infinite colours that source made, and one sample can carry several of them",
                 counters.non_finite_samples
             ));
         }
@@ -70,11 +76,15 @@ impl Problems {
         }
         let gains = problems.energy_gains.iter().enumerate().filter(|(_, g)| g.gained > 0 && 100 * g.gained >= g.hits);
         let gaining: BTreeMap<usize, u64> = gains.map(|(i, g)| (i, g.gained)).collect();
+        // A direction made from a normal that is not of unit length is the normal's fault, named on its own line.
+        let long = problems.long_directions.iter().filter(|(i, _)| !problems.bad_normals.contains_key(i));
+        let directions: BTreeMap<usize, u64> = long.map(|(&i, &n)| (i, n)).collect();
         for (counts, what, energy) in [
             (&problems.unspawned_rays, UNSPAWNED_RAYS, false),
             (&problems.self_hits, SELF_HITS, false),
             (&gaining, ENERGY_GAINS, true),
             (&problems.bad_normals, BAD_NORMALS, false),
+            (&directions, LONG_DIRECTIONS, false),
         ] {
             if !counts.is_empty() {
                 lines.push(format!(
@@ -137,6 +147,10 @@ const ENERGY_GAINS: &str = "a shader returned more light than its brightest ray 
 
 /// The report's line on normals that are not of unit length.
 const BAD_NORMALS: &str = "a geometry returned a normal that is not of unit length, or NaN (normalise it)";
+
+/// The report's line on rays a shader traced in a direction that is not of unit length.
+const LONG_DIRECTIONS: &str = "a shader traced rays whose direction is not of unit length, which throws off the \
+     cosines, reflections and distances along them (normalise the direction before ray.spawn(info, dir, attenuation))";
 
 /// How many probe rays across, and how many down, [`undeclared_dispersion`] aims over the picture.
 pub const PROBE_RAYS: u32 = 16;

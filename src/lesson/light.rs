@@ -2,6 +2,7 @@
 //! I / d^2 (times its colour) to a surface facing it, if nothing stands in between.
 
 use crate::lesson::color::Color;
+use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
 use crate::lesson::observer::LightTerm;
@@ -22,6 +23,19 @@ impl PointLight {
     /// A light at `position` (world space) of the given colour and intensity.
     pub fn new(position: Vector, color: Color, intensity: f32) -> PointLight {
         PointLight { position, color, intensity }
+    }
+
+    /// Fails when the light's position, colour or intensity holds a NaN or an infinity, naming the light by
+    /// its `index` in the scene's lights (as the ray tree does) and its values: such a light makes every
+    /// surface it reaches NaN, and the end-of-run report would name those surfaces' shaders, not the light.
+    /// [`crate::lesson::scene::Scene::check`] asks it of every light before a render.
+    pub fn check(&self, index: usize) -> Result<()> {
+        let (at, colour, intensity) = (self.position, self.color.0, self.intensity);
+        let what = format!("{index} (a point light at {at}, colour {colour}, intensity {intensity})");
+        match at.is_finite() && colour.is_finite() && intensity.is_finite() {
+            true => Ok(()),
+            false => Err(Error::parameter("light", what, "its position, colour and intensity must be finite")),
+        }
     }
 }
 

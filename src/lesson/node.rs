@@ -85,7 +85,7 @@ pub struct Node {
 /// within 0.1% of 1. A normal normalised in f32 is within a few 1e-7 of it, and one computed from a hit point
 /// that a quadratic found with the textbook formula (which loses half the digits, `sqrt(EPSILON)`) within a
 /// few 1e-4; a normal not normalised at all is off by its length.
-const UNIT_NORMAL_TOLERANCE: f32 = 1.0 / 512.0;
+pub(crate) const UNIT_NORMAL_TOLERANCE: f32 = 1.0 / 512.0;
 
 impl Node {
     /// A node showing `geometry` with `shader`, not yet transformed. Either may be shared with other nodes

@@ -28,6 +28,8 @@ pub struct Problems {
     pub energy_gains: Vec<Gains>,
     /// Hits whose normal, as the geometry returned it, is not of unit length (or is NaN), by node.
     pub bad_normals: BTreeMap<usize, u64>,
+    /// Rays a shader traced in a direction not of unit length, by the node whose shader traced them.
+    pub long_directions: BTreeMap<usize, u64>,
     /// Rays a shader traced with a depth below its own ray's (made with `Ray::new`, which starts at depth 0),
     /// by the node whose shader traced them: `raytrace` counts them at their real depth.
     pub restarted_depth: BTreeMap<Source, u64>,
@@ -69,6 +71,7 @@ impl Problems {
                 (mine.hits + g.hits, mine.gained + g.gained, mine.largest.max(g.largest));
         }
         merge(&mut self.bad_normals, &other.bad_normals);
+        merge(&mut self.long_directions, &other.long_directions);
         merge(&mut self.restarted_depth, &other.restarted_depth);
         self.undeclared_dispersion.extend(&other.undeclared_dispersion);
     }

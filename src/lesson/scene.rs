@@ -81,6 +81,7 @@ impl<'a> TraceContext<'a> {
         } else {
             ray
         };
+        self.check_direction(ray.dir);
         if ray.depth > self.scene.max_depth {
             return self.stop::<WATCHED>(Stop::DepthLimit);
         }
@@ -349,10 +350,12 @@ impl Scene {
         point + self.world_origin
     }
 
-    /// Checks what can only be checked once the scene is complete: every node's transform is invertible, and
-    /// no node's shader shades more than [`MAX_SHADES_PER_HIT`] shaders at a hit (Layered shaders whose layers
-    /// share the shaders below them multiply the work with each level).
+    /// Checks what can only be checked once the scene is complete: every light is made of numbers (no NaN,
+    /// no infinity: [`PointLight::check`]), every node's transform is invertible, and no node's shader shades
+    /// more than [`MAX_SHADES_PER_HIT`] shaders at a hit (Layered shaders whose layers share the shaders below
+    /// them multiply the work with each level).
     pub fn check(&self) -> Result<()> {
+        self.lights.iter().enumerate().try_for_each(|(index, light)| light.check(index))?;
         self.nodes.iter().filter_map(|n| n.transform.as_ref()).try_for_each(|t| t.check())?;
         let mut counted = HashMap::new();
         for node in &self.nodes {

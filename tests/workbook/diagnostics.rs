@@ -14,18 +14,18 @@ use lecture6::prelude::*;
 #[path = "../../docs/homework_geometry.rs"]
 mod homework_geometry;
 
-use homework_geometry::Cylinder;
+pub(crate) use homework_geometry::Cylinder;
 
 /// The cylinder with one mistake a student makes: its hit point as `ray.at(t)` (not put back on the
 /// surface), its normal NaN, or its normal not normalised.
 #[derive(Clone, Copy)]
-enum Mistake {
+pub(crate) enum Mistake {
     AtT,
     NanNormal,
     LongNormal,
 }
 
-struct Mistaken(Mistake);
+pub(crate) struct Mistaken(pub(crate) Mistake);
 
 impl Geometry for Mistaken {
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
@@ -44,7 +44,7 @@ impl Geometry for Mistaken {
 
 /// A mirror cylinder, stretched and turned, seen from far enough that `ray.at(t)` is off its surface by
 /// more than the hit's error bound, beside a mirror ball; a striped sky.
-fn scene(cylinder: impl Geometry + 'static, shader: impl IntoShader) -> Scene {
+pub(crate) fn scene(cylinder: impl Geometry + 'static, shader: impl IntoShader) -> Scene {
     let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 40.0, -300.0), Vector::ZERO, 12.0));
     scene.add(Node::new(cylinder, shader).named("pillar").scale(Vector::new(8.0, 20.0, 8.0)).rotate(20.0, 0.0, 30.0));
     scene.add(Node::new(Sphere::new(Vector::new(25.0, 0.0, 0.0), 8.0), Reflection::new(0.9)));
@@ -59,7 +59,7 @@ fn settings() -> RenderSettings {
 
 /// The scene rendered by default; rendered in the slides' reading too (`--slide`), whose report must name the
 /// same nodes and shaders for the same problems (the counts may differ: the two readings trace other rays).
-fn rendered(scene: &Scene) -> RenderStats {
+pub(crate) fn rendered(scene: &Scene) -> RenderStats {
     let stats = render(scene, &settings()).unwrap().1;
     let mut slides = scene.clone();
     slides.steps = Steps::SLIDES;
@@ -72,7 +72,7 @@ fn rendered(scene: &Scene) -> RenderStats {
 }
 
 /// The one report line that contains `what`.
-fn line<'a>(stats: &'a RenderStats, what: &str) -> &'a str {
+pub(crate) fn line<'a>(stats: &'a RenderStats, what: &str) -> &'a str {
     let lines: Vec<_> = stats.warnings.iter().filter(|l| l.contains(what)).collect();
     assert_eq!(lines.len(), 1, "one line about {what}: {:?}", stats.warnings);
     lines[0]
@@ -108,7 +108,7 @@ fn a_normal_not_normalised_is_named() {
 }
 
 /// A shader that returns NaN, as `0.0 / 0.0` in a student's formula would.
-struct Broken;
+pub(crate) struct Broken;
 
 impl Shader for Broken {
     fn shade(&self, _: &Ray, _: &IntersectionInfo, _: &mut TraceContext) -> Color {

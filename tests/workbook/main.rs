@@ -48,6 +48,7 @@ mod regression;
 mod sampling;
 mod scene_file;
 mod shader_kit;
+mod silent_mistakes;
 mod slide;
 mod stress;
 mod study;

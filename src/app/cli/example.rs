@@ -3,6 +3,7 @@
 
 use super::options::CommonArgs;
 use super::progress::SampleBar;
+use crate::app::parameter_ranges::out_of_range;
 use crate::files::encoding;
 use crate::instruments::tone_mapping::Film;
 use crate::lesson::beyond::{Step, Steps};
@@ -235,7 +236,8 @@ impl<E: Example> Cli<E> {
         let (scene, settings) = self.prepare_checked(check)?;
         let bar = settings.progress.then(SampleBar::on_terminal).flatten();
         let progress = bar.as_ref().map(|bar| bar as &dyn Progress);
-        let (frame, stats) = render_with_progress(&scene, &settings, progress)?;
+        let (frame, mut stats) = render_with_progress(&scene, &settings, progress)?;
+        stats.warnings.extend(out_of_range(&scene));
         Ok((frame, stats, settings))
     }
 

@@ -6,6 +6,7 @@ use super::console::{print_clap, print_stderr, print_stdout};
 use super::defaults::defaults_line;
 use super::example::{Cli, Example};
 use super::help::help_command;
+use crate::app::parameter_ranges::out_of_range;
 use crate::files::output::{check_output, keeps_linear_light, save_atomically};
 use crate::instruments::compare::{self, Reference};
 use crate::lesson::error::{Error, Result, printable};
@@ -120,8 +121,9 @@ fn address_space() -> Option<(u64, u64)> {
 /// returns its picture. Panics, failing the test, if the options are refused, the scene cannot be built, or
 /// the end-of-run report says anything: a NaN or infinite sample, a ray that found the surface it left, a
 /// ray made with `Ray::new` in a shader, a shader that returns more light than its rays and its light loop
-/// brought it (N rays added up and not divided by N), a normal that is not of unit length, a shader that
-/// reads the wavelength without saying so. A correct shader, of one ray or of N, passes.
+/// brought it (N rays added up and not divided by N), a normal that is not of unit length, a ray traced in a
+/// direction that is not, a shader that reads the wavelength without saying so, a course shader's parameter
+/// outside the range it takes (a multiplier above 1). A correct shader, of one ray or of N, passes.
 ///
 /// ```no_run
 /// # use lecture6::prelude::*;
@@ -147,9 +149,9 @@ pub fn render_for_test<E: Example>(args: &[&str]) -> Frame {
 /// built are its error, on one line.
 pub fn render_and_report<E: Example>(args: &[&str]) -> std::result::Result<(Frame, Vec<String>), String> {
     let cli = Cli::<E>::parse_args("homework", args).map_err(|e| format!("{args:?}: {}", one_line(&e.to_string())))?;
-    let (frame, stats) =
-        cli.prepare().and_then(|(scene, settings)| render(&scene, &settings)).map_err(|e| format!("{args:?}: {e}"))?;
-    Ok((frame, stats.warnings))
+    let (scene, settings) = cli.prepare().map_err(|e| format!("{args:?}: {e}"))?;
+    let (frame, stats) = render(&scene, &settings).map_err(|e| format!("{args:?}: {e}"))?;
+    Ok((frame, [stats.warnings, out_of_range(&scene)].concat()))
 }
 
 /// Makes INT, TERM and HUP end the run as they would, after removing the temporary file of a picture being
