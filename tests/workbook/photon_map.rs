@@ -437,3 +437,27 @@ fn the_photon_grid_finds_what_a_scan_of_every_photon_finds() {
         }
     }
 }
+
+/// The progressive caustic (`--photon-passes`): the same picture on one thread and on two; each pass after
+/// the first adds a caustic of its own (the picture is not the first pass's); and with a dispersive glass
+/// (`--abbe 8`) every pass's photons carry their wavelengths' colours, so the caustic stays coloured.
+#[test]
+fn the_progressive_caustic_is_the_same_on_any_thread_count_and_keeps_the_caustics_colours() {
+    let small = ["--width", "80", "--height", "60", "--spp", "1", "--photons", "40000"];
+    let with = |extra: &[&str]| common::render::<photon_map::Options>(&[&small[..], extra].concat());
+    let one = with(&["--photon-passes", "4", "--threads", "1"]);
+    let two = with(&["--photon-passes", "4", "--threads", "2"]);
+    assert!(one.pixels == two.pixels, "4 passes: the picture depends on the thread count");
+    assert!(one.pixels != with(&["--threads", "2"]).pixels, "4 passes render the first pass's picture");
+    // How far the caustic's red and blue part: zero for the white caustic of a glass without dispersion.
+    let hue = |frame: &Frame| frame.pixels.iter().map(|c| (c.r() - c.b()).abs() as f64).sum::<f64>();
+    let chromatic = with(&["--photon-passes", "3", "--abbe", "8", "--spectral", "passes", "--wavelengths", "8"]);
+    assert!(chromatic.pixels.iter().all(|c| c.is_finite()), "a pixel of the chromatic caustic is not finite");
+    let white = with(&["--photon-passes", "3", "--spectral", "passes", "--wavelengths", "8"]);
+    assert!(
+        hue(&chromatic) > 2.0 * hue(&white),
+        "the dispersive glass's caustic is no more coloured than the white one's: {} against {}",
+        hue(&chromatic),
+        hue(&white)
+    );
+}
