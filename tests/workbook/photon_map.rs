@@ -461,3 +461,24 @@ fn the_progressive_caustic_is_the_same_on_any_thread_count_and_keeps_the_caustic
         hue(&white)
     );
 }
+
+/// The progressive caustic's radii shrink as Knaus and Zwicker write them, r_(i+1)^2 = r_i^2 (i + alpha) /
+/// (i + 1), so as pass^(-1/6) for alpha = 2/3; pass 1 keeps the render's seed and every other pass has one of
+/// its own.
+#[test]
+fn the_progressive_radius_shrinks_as_knaus_and_zwicker_write_it_and_each_pass_has_its_own_seed() {
+    use lecture6::lesson::photon_map::{ALPHA, pass_seed, radius_scale};
+    assert_eq!(radius_scale(1), 1.0);
+    let mut r2 = 1.0f64;
+    for pass in 1..200u32 {
+        let (i, next) = (pass as f64, radius_scale(pass + 1) as f64);
+        r2 *= (i + ALPHA) / (i + 1.0);
+        assert!((next * next - r2).abs() <= 1e-6 * r2, "pass {}: {next} against {}", pass + 1, r2.sqrt());
+    }
+    let ratio = radius_scale(1024) as f64 / radius_scale(16) as f64;
+    assert!((ratio - 64f64.powf(-1.0 / 6.0)).abs() < 0.01 * ratio, "{ratio}");
+    assert_eq!(pass_seed(7, 1), 7);
+    let seeds: std::collections::HashSet<u64> = (1..100).map(|pass| pass_seed(7, pass)).collect();
+    assert_eq!(seeds.len(), 99);
+    assert_ne!(pass_seed(7, 2), pass_seed(8, 2));
+}

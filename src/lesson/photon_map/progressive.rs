@@ -30,6 +30,9 @@ pub const ALPHA: f64 = 2.0 / 3.0;
 /// The most passes a progressive caustic may be asked for.
 pub const MAX_PHOTON_PASSES: u32 = 1 << 16;
 
+/// Why more than one pass needs the step photon-grid.
+pub const NEEDS_THE_GRID: &str = "more than one needs the step photon-grid (the slide's k-d tree finds the k nearest photons, not every photon within a pass's radius): add --step photon-grid";
+
 /// Keeps the seeds of the passes apart from the seeds a user gives.
 const PASS_KEY: u64 = 0x5050_4d5f_5041_5353;
 
@@ -68,21 +71,13 @@ impl PhotonMap {
         Ok(Some(map))
     }
 
-    /// Refuses a number of passes this map cannot start: too many, or more than one for the slide's k-d tree,
-    /// which finds the k nearest photons, not every photon within a radius.
+    /// Refuses more than one pass of the slide's k-d tree, which finds the k nearest photons, not every photon
+    /// within a radius (the number of passes is [`RenderSettings::check`](crate::lesson::render::RenderSettings::check)'s).
     pub fn check_passes(&self, passes: u32) -> Result<()> {
-        if !(1..=MAX_PHOTON_PASSES).contains(&passes) {
-            return Err(Error::parameter("photon passes", passes, format!("must be 1 to {MAX_PHOTON_PASSES}")));
+        match (passes > 1, &self.lookup) {
+            (true, Lookup::KdTree(_)) => Err(Error::parameter("photon passes", passes, NEEDS_THE_GRID)),
+            _ => Ok(()),
         }
-        if passes > 1 && !matches!(self.lookup, Lookup::Grid(_)) {
-            return Err(Error::parameter(
-                "photon passes",
-                passes,
-                "more than one needs the step photon-grid (the slide's k-d tree finds the k nearest photons, not \
-                 every photon within a pass's radius): add --step photon-grid, or render one pass",
-            ));
-        }
-        Ok(())
     }
 
     /// A later pass's estimate at `p` (normal `n`): every photon of this map within r_i, r_i^2 the pass's
@@ -109,32 +104,5 @@ impl PhotonMap {
             grid.within(p, r2, found);
             self.cone_filtered(found, n, r2, recorder)
         })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_radius_shrinks_as_knaus_and_zwicker_write_it() {
-        assert_eq!(radius_scale(1), 1.0);
-        let mut r2 = 1.0f64;
-        for pass in 1..200u32 {
-            let (i, next) = (pass as f64, radius_scale(pass + 1) as f64);
-            r2 *= (i + ALPHA) / (i + 1.0);
-            assert!((next * next - r2).abs() <= 1e-6 * r2, "pass {}: {next} against {}", pass + 1, r2.sqrt());
-        }
-        // The product falls as pass^(alpha - 1), so the radius as pass^(-1/6).
-        let ratio = radius_scale(1024) as f64 / radius_scale(16) as f64;
-        assert!((ratio - 64f64.powf(-1.0 / 6.0)).abs() < 0.01 * ratio, "{ratio}");
-    }
-
-    #[test]
-    fn pass_one_keeps_the_seed_and_the_others_differ() {
-        assert_eq!(pass_seed(7, 1), 7);
-        let seeds: std::collections::HashSet<u64> = (1..100).map(|pass| pass_seed(7, pass)).collect();
-        assert_eq!(seeds.len(), 99);
-        assert_ne!(pass_seed(7, 2), pass_seed(8, 2));
     }
 }
