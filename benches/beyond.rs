@@ -629,8 +629,10 @@ fn main() {
     hero_wavelengths(&plan, &all, &mut rows, &mut details);
     photon_map(&plan, &all, &mut rows, &mut details);
     details.push_str(&kept_section(CAUSTIC_REFERENCE));
+    details.push_str(&kept_section(PROGRESSIVE_CAUSTIC));
     layer_pruning(&plan, &all, &mut rows, &mut details);
     camera_relative(&all, &mut rows, &mut details);
+    progressive_caustic(&mut rows);
     branching_bound(&readings, &mut rows, &mut details);
     end_of_run_report(&plan, &all, &readings, &mut rows, &mut details);
     deviations(&mut rows);
@@ -641,6 +643,33 @@ fn main() {
 /// `benches/caustic_rings.rs` (the reference light tracer, `benches/caustic_reference.rs`, takes far longer
 /// than this ledger): the ledger keeps it as it finds it.
 const CAUSTIC_REFERENCE: &str = "## The caustic against an independent light tracer\n";
+
+/// The heading of the section on the progressive caustic, written from the figures of
+/// `benches/caustic_convergence.rs` (its renders of 64 passes take longer than this ledger): the ledger
+/// keeps it as it finds it, and its row quotes the section's line that starts with `What it buys: `.
+const PROGRESSIVE_CAUSTIC: &str = "## The progressive caustic\n";
+
+/// The progressive caustic's row (a render setting, `photon_passes`, whose first choice, one pass, is the
+/// slide's): its figures from its section (see [`PROGRESSIVE_CAUSTIC`]).
+fn progressive_caustic(rows: &mut Vec<Row>) {
+    let section = kept_section(PROGRESSIVE_CAUSTIC);
+    let line = |prefix: &str| section.lines().find_map(|l| l.strip_prefix(prefix)).map(str::to_string);
+    let missing = "not measured: run `cargo bench --features study --bench caustic_convergence`".to_string();
+    rows.push(Row {
+        step: "The progressive caustic (`src/lesson/photon_map/progressive.rs`; the render setting `photon_passes`, `--photon-passes N`)".into(),
+        slide: "one photon map: the k nearest photons within the maximum radius",
+        measured: "photon_map against the independent light tracer's rings (section \"The progressive caustic\"): passes of 400,000 photons against one map of more photons, 640x480 at 4 spp, 1 thread".into(),
+        buys: line("What it buys: ").unwrap_or_else(|| missing.clone()),
+        verdict: line("Verdict: ").unwrap_or(missing),
+        code: vec![
+            Code::File("src/lesson/photon_map/progressive.rs"),
+            Code::Items(
+                "src/lesson/render.rs",
+                &["fn render_photon_passes", "struct PassesProgress", "impl Progress for PassesProgress", "fn add_pass"],
+            ),
+        ],
+    });
+}
 
 /// The section of the ledger now in `docs/beyond-the-slides.md` that starts with `heading`, up to the next
 /// section; empty if there is none.

@@ -15,6 +15,8 @@
 #[macro_use]
 #[path = "../tests/workbook/common/examples.rs"]
 mod examples;
+// Shared with the test `caustic_reference` and the other caustic bench, each of which uses part of it.
+#[allow(dead_code)]
 #[path = "../tests/workbook/common/caustic.rs"]
 mod caustic;
 mod common;

@@ -16,7 +16,10 @@
 //!   aberration: the sphere's rim focuses closer than its centre);
 //! - the mirror's spot on the wall: the shape of the mirror, stretched by the angle at which it lands;
 //! - `--photons 0`: the same picture without a photon map, where both are missing;
-//! - `--show-photons`: the photons themselves, one dot each, like the slide's last picture.
+//! - `--show-photons`: the photons themselves, one dot each, like the slide's last picture;
+//! - `--photon-passes 16`: the progressive caustic, a step beyond the slide (16 photon maps of their own
+//!   seeds, the later ones gathering within a shrinking radius, their pictures averaged): the caustic's
+//!   blotches fade and its edge sharpens, in 16 times the time.
 //!
 //! Try: `--photons 20000` (blotchy) and `--photons 1000000` (smooth); `--k 10` versus `--k 300`;
 //! `--radius 0.5` versus `--radius 8` (noise against blur); `--ior 1.33` (water focuses farther away);

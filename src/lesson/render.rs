@@ -28,7 +28,7 @@ use crate::lesson::diagnostics::{Problems, undeclared_dispersion};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::frame::Frame;
 use crate::lesson::observer::Observer;
-use crate::lesson::photon_map::PhotonStats;
+use crate::lesson::photon_map::{PhotonMap, PhotonStats, pass_seed};
 use crate::lesson::ray::Ray;
 pub use crate::lesson::render_settings::{MAX_PIXELS, MAX_SPP, MAX_THREADS, RenderSettings};
 pub use crate::lesson::rng::pixel_key;
@@ -38,6 +38,8 @@ use crate::lesson::spectral::{Band, SpectralMode, SpectralPlan};
 use rayon::prelude::*;
 use std::borrow::Cow;
 use std::ops::Range;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// What a render produced besides the picture.
@@ -58,6 +60,24 @@ pub struct RenderStats {
 }
 
 impl RenderStats {
+    /// Adds a later pass of a progressive caustic: its render time, rays and photon map, and the warnings
+    /// not yet given.
+    fn add_pass(&mut self, pass: RenderStats) {
+        self.elapsed += pass.elapsed;
+        self.counters.add(&pass.counters);
+        if let (Some(all), Some(map)) = (&mut self.photons, pass.photons) {
+            all.emitted = all.emitted.saturating_add(map.emitted);
+            all.stored += map.stored;
+            all.trace_time += map.trace_time;
+            all.build_time += map.build_time;
+        }
+        for warning in pass.warnings {
+            if !self.warnings.contains(&warning) {
+                self.warnings.push(warning);
+            }
+        }
+    }
+
     /// The photon pass before the render (tracing the photons and building their map); zero without one.
     pub fn photon_pass(&self) -> Duration {
         self.photons.as_ref().map_or(Duration::ZERO, |p| p.trace_time + p.build_time)
@@ -134,7 +154,70 @@ pub fn render_with_progress(
     settings: &RenderSettings,
     progress: Option<&dyn Progress>,
 ) -> Result<(Frame, RenderStats)> {
-    RenderJob::for_scene(scene, settings)?.render(progress)
+    match &scene.photon_map {
+        Some(first) if settings.photon_passes > 1 => render_photon_passes(scene, first, settings, progress),
+        _ => RenderJob::for_scene(scene, settings)?.render(progress),
+    }
+}
+
+/// The progressive caustic ([`RenderSettings::photon_passes`]): pass 1 renders the scene as it is, with its
+/// photon map `first`; every later pass renders it with a photon map of its own
+/// ([`PhotonMap::build_pass`]) and the pass's own seed for the pixels too, so that the passes are
+/// independent renders; the pictures are averaged. One pass's map and picture live at a time, beside the sum
+/// of the pictures: memory does not grow with the passes. The statistics add up the passes' (their photon
+/// maps' too).
+fn render_photon_passes(
+    scene: &Scene,
+    first: &Arc<PhotonMap>,
+    settings: &RenderSettings,
+    progress: Option<&dyn Progress>,
+) -> Result<(Frame, RenderStats)> {
+    let passes = settings.photon_passes;
+    first.check_passes(passes)?;
+    let bar = progress.map(|inner| PassesProgress { inner, passes: passes as u64, begun: AtomicBool::new(false) });
+    let progress = bar.as_ref().map(|p| p as &dyn Progress);
+    let (mut frame, mut stats) = RenderJob::for_scene(scene, settings)?.render(progress)?;
+    let mut sum: Vec<[f64; 3]> = frame.pixels.iter().map(|c| c.to_array().map(f64::from)).collect();
+    let mut pass_scene = scene.clone();
+    for pass in 2..=passes {
+        let seed = pass_seed(settings.seed, pass);
+        let map = on_workers(settings.threads, |_| PhotonMap::build_pass(scene, first, settings.seed, pass))??;
+        pass_scene.photon_map = map.map(Arc::new);
+        let (pass_frame, pass_stats) =
+            RenderJob::for_scene(&pass_scene, &RenderSettings { seed, ..*settings })?.render(progress)?;
+        pass_scene.photon_map = None;
+        for (s, c) in sum.iter_mut().zip(&pass_frame.pixels) {
+            s.iter_mut().zip(c.to_array()).for_each(|(s, v)| *s += v as f64);
+        }
+        stats.add_pass(pass_stats);
+    }
+    if let Some(bar) = &bar {
+        bar.inner.end();
+    }
+    for (pixel, s) in frame.pixels.iter_mut().zip(&sum) {
+        *pixel = to_color(s.map(|v| v / passes as f64));
+    }
+    Ok((frame, stats))
+}
+
+/// The progress of all the passes of a progressive caustic as one bar: begun once for every pass's samples,
+/// ended after the last pass.
+struct PassesProgress<'p> {
+    inner: &'p dyn Progress,
+    passes: u64,
+    begun: AtomicBool,
+}
+
+impl Progress for PassesProgress<'_> {
+    fn begin(&self, samples: u64) {
+        if !self.begun.swap(true, Ordering::Relaxed) {
+            self.inner.begin(samples * self.passes);
+        }
+    }
+    fn advance(&self, samples: u64) {
+        self.inner.advance(samples);
+    }
+    fn end(&self) {}
 }
 
 /// What `settings` ask of the scene's wavelengths: white light when nothing in it is dispersive, the slide's K

@@ -4,6 +4,7 @@
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 pub use crate::lesson::frame::MAX_SPP;
+use crate::lesson::photon_map::MAX_PHOTON_PASSES;
 use crate::lesson::scene::Counters;
 use crate::lesson::spectral::{MAX_WAVELENGTHS, SpectralMode};
 
@@ -41,6 +42,11 @@ pub struct RenderSettings {
     /// to it, hue kept. It tames fireflies (a glossy surface that now and then reflects a small, very bright
     /// sun) at the price of bias: the clamped light is lost. `None`, the default, keeps every sample as is.
     pub max_sample: Option<f32>,
+    /// The passes of a progressive caustic (`--photon-passes`): each traces a photon map of its own and
+    /// renders the picture with it, later passes gathering within a shrinking radius, and the passes'
+    /// pictures are averaged (see [`crate::lesson::photon_map::PhotonMap::build_pass`]). 1, the default, is
+    /// the slide's one photon map; a scene without a photon map renders once whatever it says.
+    pub photon_passes: u32,
 }
 
 impl Default for RenderSettings {
@@ -56,6 +62,7 @@ impl Default for RenderSettings {
             spectral: SpectralMode::default(),
             adaptive_aa: false,
             max_sample: None,
+            photon_passes: 1,
         }
     }
 }
@@ -108,6 +115,13 @@ impl RenderSettings {
             && !(max.is_finite() && max > 0.0)
         {
             return Err(Error::parameter("--clamp-sample", max, "must be a positive number"));
+        }
+        if !(1..=MAX_PHOTON_PASSES).contains(&self.photon_passes) {
+            return Err(Error::parameter(
+                "photon passes",
+                self.photon_passes,
+                format!("must be 1 to {MAX_PHOTON_PASSES}"),
+            ));
         }
         if let Some(threads) = self.threads
             && !(1..=MAX_THREADS).contains(&threads)

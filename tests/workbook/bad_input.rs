@@ -319,6 +319,9 @@ fn impossible_ior_multipliers_and_kinds_are_rejected() {
         ("photon_map", &["--radius", "NaN"][..], "photon radius NaN"),
         ("photon_map", &["--k", "0"][..], "photon k 0"),
         ("photon_map", &["--photons", "4000000000"][..], "photon count 4000000000"),
+        ("photon_map", &["--photon-passes", "0"][..], "photon passes 0"),
+        ("photon_map", &["--photon-passes", "70000"][..], "photon passes 70000"),
+        ("photon_map", &["--slide", "--photon-passes", "2"][..], "--photon-passes 2: needs the step photon-grid"),
         ("bitmap_textures", &["--radius", "inf"][..], "photon radius inf"),
     ] {
         rejected(example, args, needle);

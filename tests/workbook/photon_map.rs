@@ -437,3 +437,48 @@ fn the_photon_grid_finds_what_a_scan_of_every_photon_finds() {
         }
     }
 }
+
+/// The progressive caustic (`--photon-passes`): the same picture on one thread and on two; each pass after
+/// the first adds a caustic of its own (the picture is not the first pass's); and with a dispersive glass
+/// (`--abbe 8`) every pass's photons carry their wavelengths' colours, so the caustic stays coloured.
+#[test]
+fn the_progressive_caustic_is_the_same_on_any_thread_count_and_keeps_the_caustics_colours() {
+    let small = ["--width", "80", "--height", "60", "--spp", "1", "--photons", "40000"];
+    let with = |extra: &[&str]| common::render::<photon_map::Options>(&[&small[..], extra].concat());
+    let one = with(&["--photon-passes", "4", "--threads", "1"]);
+    let two = with(&["--photon-passes", "4", "--threads", "2"]);
+    assert!(one.pixels == two.pixels, "4 passes: the picture depends on the thread count");
+    assert!(one.pixels != with(&["--threads", "2"]).pixels, "4 passes render the first pass's picture");
+    // How far the caustic's red and blue part: zero for the white caustic of a glass without dispersion.
+    let hue = |frame: &Frame| frame.pixels.iter().map(|c| (c.r() - c.b()).abs() as f64).sum::<f64>();
+    let chromatic = with(&["--photon-passes", "3", "--abbe", "8", "--spectral", "passes", "--wavelengths", "8"]);
+    assert!(chromatic.pixels.iter().all(|c| c.is_finite()), "a pixel of the chromatic caustic is not finite");
+    let white = with(&["--photon-passes", "3", "--spectral", "passes", "--wavelengths", "8"]);
+    assert!(
+        hue(&chromatic) > 2.0 * hue(&white),
+        "the dispersive glass's caustic is no more coloured than the white one's: {} against {}",
+        hue(&chromatic),
+        hue(&white)
+    );
+}
+
+/// The progressive caustic's radii shrink as Knaus and Zwicker write them, r_(i+1)^2 = r_i^2 (i + alpha) /
+/// (i + 1), so as pass^(-1/6) for alpha = 2/3; pass 1 keeps the render's seed and every other pass has one of
+/// its own.
+#[test]
+fn the_progressive_radius_shrinks_as_knaus_and_zwicker_write_it_and_each_pass_has_its_own_seed() {
+    use lecture6::lesson::photon_map::{ALPHA, pass_seed, radius_scale};
+    assert_eq!(radius_scale(1), 1.0);
+    let mut r2 = 1.0f64;
+    for pass in 1..200u32 {
+        let (i, next) = (pass as f64, radius_scale(pass + 1) as f64);
+        r2 *= (i + ALPHA) / (i + 1.0);
+        assert!((next * next - r2).abs() <= 1e-6 * r2, "pass {}: {next} against {}", pass + 1, r2.sqrt());
+    }
+    let ratio = radius_scale(1024) as f64 / radius_scale(16) as f64;
+    assert!((ratio - 64f64.powf(-1.0 / 6.0)).abs() < 0.01 * ratio, "{ratio}");
+    assert_eq!(pass_seed(7, 1), 7);
+    let seeds: std::collections::HashSet<u64> = (1..100).map(|pass| pass_seed(7, pass)).collect();
+    assert_eq!(seeds.len(), 99);
+    assert_ne!(pass_seed(7, 2), pass_seed(8, 2));
+}

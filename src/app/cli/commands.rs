@@ -6,10 +6,11 @@
 use super::example::{Cli, Example, matches_within_f32};
 use crate::files::output::{check_output, save_atomically};
 use crate::instruments::debug_view::{DebugView, Legend, render_view_with};
-use crate::instruments::ray_tree::{self, PixelPos};
+use crate::instruments::ray_tree::{self, PixelPos, TraceFormat};
 use crate::instruments::side_by_side::{Panel, a_b_difference};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::input;
+use crate::lesson::photon_map::radius_scale;
 use crate::lesson::render::RenderStats;
 use clap::ValueEnum;
 use std::ffi::OsString;
@@ -20,7 +21,19 @@ use std::time::Instant;
 pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Result<String> {
     let (scene, settings) = args.prepare()?;
     let trace = ray_tree::trace(&scene, &settings, pixel)?;
-    ray_tree::describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)
+    let mut text =
+        ray_tree::describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)?;
+    let passes = settings.photon_passes;
+    if passes > 1 && scene.photon_map.is_some() && args.common.trace_format == TraceFormat::Text {
+        text.push_str(&format!(
+            "{name}: progressive caustic: {passes} photon passes, each with a photon map of its own; the tree above \
+             is pass 1's. Pass i >= 2 gathers every photon within r_i of the point, r_(i+1)^2 = r_i^2 (i + 2/3) / \
+             (i + 1), from r_1 = the radius of pass 1's disc there (each photon estimate above): the last pass's \
+             r_{passes} = {:.4} r_1\n",
+            radius_scale(passes)
+        ));
+    }
+    Ok(text)
 }
 
 /// `--view`: draws the example's debug view and writes it to `--output`, or `out/NAME-VIEW.png` (a heat view

@@ -134,6 +134,7 @@ impl<E: Example> Cli<E> {
             spectral,
             adaptive_aa: c.adaptive_aa,
             max_sample: c.clamp_sample,
+            photon_passes: c.photons.photon_passes.unwrap_or(1),
         }
     }
 
@@ -247,8 +248,21 @@ impl<E: Example> Cli<E> {
     }
 
     /// Refuses a choice that needs a step the render does not take: `--spectral hero` or `sampled` without
-    /// the step hero-wavelengths (under `--slide`, the slide's K passes).
+    /// the step hero-wavelengths (under `--slide`, the slide's K passes), and more than one photon pass
+    /// without the step photon-grid (under `--slide`, the slide's one photon map).
     fn check_steps(&self) -> Result<()> {
+        if let Some(passes) = self.common.photons.photon_passes
+            && passes > 1
+            && !self.steps().has(Step::PhotonGrid)
+        {
+            return Err(Error::parameter(
+                "--photon-passes",
+                passes,
+                "needs the step photon-grid, which --slide or --no-step leaves out (the slide's k-d tree finds the \
+                 k nearest photons, not every photon within a pass's radius): add --step photon-grid, or render \
+                 the slide's one pass",
+            ));
+        }
         match self.common.spectral {
             Some(mode) if mode != SpectralMode::Passes && !self.steps().has(Step::HeroWavelengths) => {
                 Err(Error::parameter(
@@ -272,11 +286,15 @@ impl<E: Example> Cli<E> {
             ("--k", p.k.is_some()),
             ("--radius", p.radius.is_some()),
             ("--show-photons", p.show_photons),
+            ("--photon-passes", p.photon_passes.is_some()),
         ]);
         if !photon_options.is_empty() && !scene.can_have_caustics() {
             notes.push(no_effect(&photon_options, "no mirror or glass in this scene casts caustics from a light"));
         } else if scene.photons.count == 0 && photon_options.iter().any(|o| *o != "--photons") {
-            notes.push("--k, --radius and --show-photons change nothing without a photon map: add --photons N".into());
+            notes.push(
+                "--k, --radius, --show-photons and --photon-passes change nothing without a photon map: add --photons N"
+                    .into(),
+            );
         }
         let dispersion_options = given(&[
             ("--wavelengths", c.wavelengths.is_some()),

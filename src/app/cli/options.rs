@@ -183,7 +183,7 @@ pub struct CommonArgs {
     /// keeps the unmapped values, negative channels included. [default: clip]
     #[arg(long, value_enum, help_heading = DISPERSION)]
     pub gamut: Option<GamutMapping>,
-    /// The photon-mapping options (`--photons`, `--k`, `--radius`, `--show-photons`).
+    /// The photon-mapping options (`--photons`, `--k`, `--radius`, `--show-photons`, `--photon-passes`).
     #[command(flatten)]
     pub photons: PhotonArgs,
     /// Print the tree of rays behind pixel X,Y (from the top left) instead of rendering: each ray's kind,
@@ -294,6 +294,12 @@ pub struct PhotonArgs {
     /// goes to out/EXAMPLE-photons.png (without --output): the caustic picture at out/EXAMPLE.png stays.
     #[arg(long, help_heading = HEADING)]
     pub show_photons: bool,
+    /// Passes of the progressive caustic: each traces a photon map of its own (as many photons, its own
+    /// seed) and renders the picture with it, the passes after the first gathering within a radius that
+    /// shrinks from pass to pass; the pictures are averaged, so the caustic's noise and blur both fade.
+    /// Takes N times as long. Needs the step photon-grid. [default: 1, one photon map]
+    #[arg(long, value_name = "N", help_heading = HEADING)]
+    pub photon_passes: Option<u32>,
 }
 
 impl PhotonArgs {

@@ -63,9 +63,11 @@ mod build;
 mod emitter;
 mod grid;
 pub mod kd_tree;
+mod progressive;
 
 pub use build::{default_radius, min_radius};
 pub use emitter::{Emitter, strength, trace_photons};
+pub use progressive::{ALPHA, MAX_PHOTON_PASSES, pass_seed, radius_scale};
 
 use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
@@ -173,6 +175,8 @@ pub struct PhotonMap {
     k: NonZeroUsize,
     max_radius: f32,
     show: bool,
+    /// A later pass of a progressive caustic: its estimate gathers within its pass's radius.
+    pass: Option<progressive::Pass>,
     /// What building the map took: photons emitted and stored, and the time spent.
     pub stats: PhotonStats,
 }
@@ -197,7 +201,7 @@ impl PhotonMap {
             false => Lookup::KdTree(KdTree::new(photons.iter().map(|photon| photon.position))),
         };
         let stats = PhotonStats { stored: photons.len(), build_time: start.elapsed(), ..PhotonStats::default() };
-        Ok(PhotonMap { photons, lookup, k, max_radius, show, stats })
+        Ok(PhotonMap { photons, lookup, k, max_radius, show, pass: None, stats })
     }
 
     /// The stored photons.
@@ -225,46 +229,63 @@ impl PhotonMap {
             Lookup::Grid(grid) => grid,
         };
         beyond!(PhotonGrid);
-        let max_r2 = self.max_radius * self.max_radius;
-        let k = self.k.get();
+        if let Some(pass) = &self.pass {
+            return self.pass_irradiance(grid, pass, p, n, recorder);
+        }
         FOUND.with_borrow_mut(|found| {
-            // Where photons are dense (a caustic), the k nearest lie much closer than the maximum radius:
-            // a smaller ball holding k photons holds the k nearest of the larger one (every photon outside
-            // it is farther than every photon inside), so smaller balls are searched first, and the result
-            // is the same as searching the largest at once.
-            for fraction in SEARCH_FRACTIONS {
-                grid.within(p, max_r2 * fraction * fraction, found);
-                if found.len() >= k {
-                    break;
-                }
-            }
-            if found.is_empty() {
+            let Some(r2) = self.nearest_disc(grid, p, found) else {
                 return Color::BLACK;
-            }
-            let r2 = if found.len() < k {
-                max_r2
-            } else {
-                if found.len() > k {
-                    // The k nearest first (ties by photon index, so the choice is the same every time).
-                    found.select_nth_unstable(k - 1);
-                    found.truncate(k);
-                }
-                found.iter().fold(0.0, |m, f| f.d2().max(m))
             };
             exercise!(irradiance_estimate(found.iter().map(|f| (f.d2(), &self.photons[f.index()])), r2, n));
-            let filter_radius = CONE_FILTER_K * r2.sqrt();
-            let cone = |d2: f32| 1.0 - d2.sqrt() / filter_radius;
-            let mut sum = Color::BLACK;
-            for f in found.iter() {
-                let (d2, photon) = (f.d2(), &self.photons[f.index()]);
-                if photon.dir.dot(n) < 0.0 {
-                    sum += photon.power * cone(d2);
-                }
-            }
-            let irradiance = arriving_light(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2));
-            record(recorder, || self.topic(found.iter().map(|f| (f.d2(), f.index())).collect(), n, r2, cone));
-            irradiance
+            self.cone_filtered(found, n, r2, recorder)
         })
+    }
+
+    /// The k nearest photons to `p` within the maximum radius, left in `found`, and the squared radius of
+    /// their disc: through the farthest of them, or the maximum radius when fewer than k lie within it.
+    /// `None` when no photon lies within the maximum radius.
+    fn nearest_disc(&self, grid: &PhotonGrid, p: Vector, found: &mut Vec<Found>) -> Option<f32> {
+        let max_r2 = self.max_radius * self.max_radius;
+        let k = self.k.get();
+        // Where photons are dense (a caustic), the k nearest lie much closer than the maximum radius:
+        // a smaller ball holding k photons holds the k nearest of the larger one (every photon outside
+        // it is farther than every photon inside), so smaller balls are searched first, and the result
+        // is the same as searching the largest at once.
+        for fraction in SEARCH_FRACTIONS {
+            grid.within(p, max_r2 * fraction * fraction, found);
+            if found.len() >= k {
+                break;
+            }
+        }
+        if found.is_empty() {
+            return None;
+        }
+        if found.len() < k {
+            return Some(max_r2);
+        }
+        if found.len() > k {
+            // The k nearest first (ties by photon index, so the choice is the same every time).
+            found.select_nth_unstable(k - 1);
+            found.truncate(k);
+        }
+        Some(found.iter().fold(0.0, |m, f| f.d2().max(m)))
+    }
+
+    /// The caustic irradiance of the photons `found` in the disc of squared radius `r2` at a point of normal
+    /// `n`: those that arrived on the viewer's side, weighted by the cone filter of that disc, over its area.
+    fn cone_filtered(&self, found: &[Found], n: Vector, r2: f32, recorder: Option<&mut dyn Recorder>) -> Color {
+        let filter_radius = CONE_FILTER_K * r2.sqrt();
+        let cone = |d2: f32| 1.0 - d2.sqrt() / filter_radius;
+        let mut sum = Color::BLACK;
+        for f in found.iter() {
+            let (d2, photon) = (f.d2(), &self.photons[f.index()]);
+            if photon.dir.dot(n) < 0.0 {
+                sum += photon.power * cone(d2);
+            }
+        }
+        let irradiance = arriving_light(sum / ((1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI * r2));
+        record(recorder, || self.topic(found.iter().map(|f| (f.d2(), f.index())).collect(), n, r2, cone));
+        irradiance
     }
 
     /// What an estimate at a point of normal `n` found: the photons `found` (squared distance and index), each

@@ -9,6 +9,7 @@ use lecture6::lesson::scene::Scene;
 use rayon::prelude::*;
 use std::f64::consts::PI;
 use std::path::Path;
+use std::sync::Arc;
 
 /// The committed reference's file, from the package root.
 pub const REFERENCE: &str = "benches/results/caustic_reference.tsv";
@@ -98,6 +99,20 @@ pub fn estimated_rings(map: &PhotonMap, scene: &Scene, reference: &Reference, sp
             sum / points.len() as f64
         })
         .collect()
+}
+
+/// The progressive caustic on the reference's rings: the mean over `passes` passes of each pass's estimate
+/// ([`estimated_rings`]), pass 1 the map of `seed`, the others their own maps
+/// ([`PhotonMap::build_pass`]), one at a time, as a render of `--photon-passes` builds them.
+pub fn progressive_rings(scene: &Scene, reference: &Reference, passes: u32, seed: u64, spacing: f64) -> Vec<f64> {
+    let first = Arc::new(PhotonMap::build(scene, seed).expect("valid settings").expect("the glass casts a caustic"));
+    let mut sum = estimated_rings(&first, scene, reference, spacing);
+    for pass in 2..=passes {
+        let map = PhotonMap::build_pass(scene, &first, seed, pass).expect("valid settings").expect("a caustic");
+        let values = estimated_rings(&map, scene, reference, spacing);
+        sum.iter_mut().zip(values).for_each(|(s, v)| *s += v);
+    }
+    sum.iter().map(|s| s / passes as f64).collect()
 }
 
 /// The renderer's photons binned in the reference's rings, with no gathering at all: the power of the
