@@ -315,11 +315,7 @@ impl<'a> TraceContext<'a> {
     /// begins one.
     #[inline(always)]
     pub(crate) fn within_branch_budget(&mut self, depth: u32) -> bool {
-        if depth <= 1 {
-            self.branch_rays = depth;
-            return true;
-        }
-        self.branch_rays = self.branch_rays.saturating_add(1);
+        self.branch_rays = if depth <= 1 { depth } else { self.branch_rays.saturating_add(1) };
         self.branch_rays <= RAYS_PER_BRANCH
     }
 
