@@ -1026,7 +1026,7 @@ fn bitmap_filtering(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
         ),
         verdict: noise_verdict(&v, &modeled(&bilinear)),
         code: vec![
-            Code::Items("src/lesson/bitmap.rs", &["fn neighbours", "fn wrapped_pair", "enum Texels", "fn sample", "fn filtered", "fn bilinear", "enum Filter"]),
+            Code::Items("src/lesson/bitmap.rs", &["fn neighbours", "fn wrapped_pair", "enum Texels", "fn sample", "fn filtered", "enum Filter"]),
             Code::Items("src/lesson/color.rs", &["fn srgb8_to_linear_table"]),
         ],
     });
