@@ -24,6 +24,7 @@ impl Plane {
 }
 
 impl Geometry for Plane {
+    #[inline(always)]
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
         self.hit(ray, t_max).and_then(|hit| self.surface(ray, &hit))
     }

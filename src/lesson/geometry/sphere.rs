@@ -84,6 +84,7 @@ fn spherical_uv([x, y, z]: [f32; 3]) -> (f32, f32) {
 }
 
 impl Geometry for Sphere {
+    #[inline(always)]
     fn intersect(&self, ray: &Ray, t_max: f32) -> Option<IntersectionInfo> {
         self.hit(ray, t_max).map(|hit| self.info(ray, hit.distance))
     }
