@@ -89,10 +89,13 @@ impl<'a> TraceContext<'a> {
             self.counters.capped_rays += 1;
             return self.stop::<WATCHED>(Stop::SafetyCap);
         }
-        if ray.weight < self.scene.min_ray_weight && self.scene.steps.has(Step::AdaptiveDepth) {
-            beyond!(AdaptiveDepth);
-            self.counters.pruned_rays += 1;
-            return self.stop::<WATCHED>(Stop::WeightCutoff);
+        if ray.weight < self.scene.min_ray_weight {
+            self.counters.steps_reached[Step::AdaptiveDepth as usize] += 1;
+            if self.scene.steps.has(Step::AdaptiveDepth) {
+                beyond!(AdaptiveDepth);
+                self.counters.pruned_rays += 1;
+                return self.stop::<WATCHED>(Stop::WeightCutoff);
+            }
         }
         if let Some(shared) = self.shading.share(ray.weight) {
             self.counters.shared_rays += 1;
@@ -316,21 +319,11 @@ impl Scene {
     /// in f32, a scene moved 1e6 from the origin would then be rounded to 0.0625 units around its hit points.
     /// A scene whose `steps` leave it out is left as it is.
     pub fn relative_to_camera(&mut self) {
-        if !self.steps.has(Step::CameraRelative) {
-            return;
-        }
-        let camera = self.camera.position;
-        let farthest = self
-            .nodes
-            .iter()
-            .filter_map(Node::bounds)
-            .flat_map(|b| b.corners())
-            .map(|c| max_abs(c - camera))
-            .fold(0.0, f32::max);
-        if max_abs(camera) <= farthest {
+        if !self.steps.has(Step::CameraRelative) || !self.is_far_from_the_origin() {
             return;
         }
         beyond!(CameraRelative);
+        let camera = self.camera.position;
         for node in &mut self.nodes {
             node.transform = Some(node.transform.unwrap_or_default().translate(-camera));
         }
@@ -339,6 +332,14 @@ impl Scene {
         }
         self.camera.position = Vector::ZERO;
         self.world_origin += camera;
+    }
+
+    /// Whether the camera is farther from the origin than from every node's box, which is when
+    /// [`Scene::relative_to_camera`] moves the scene (nearer, world coordinates are as precise).
+    pub fn is_far_from_the_origin(&self) -> bool {
+        let camera = self.camera.position;
+        let corners = self.nodes.iter().filter_map(Node::bounds).flat_map(|b| b.corners());
+        max_abs(camera) > corners.map(|c| max_abs(c - camera)).fold(0.0, f32::max)
     }
 
     /// Where `point`, in the coordinates the renderer computes with (a hit's `info.ip`), lies in the world the
@@ -523,6 +524,12 @@ pub struct Counters {
     pub non_finite_samples: u64,
     /// What went wrong, by node, for the end-of-run report ([`Problems::report`]).
     pub problems: Problems,
+    /// For each step beyond the slides whose work depends on the rays, by [`Step`] (`Step as usize`), how
+    /// often the render came where that step and the slide's version part, whether it took the step or
+    /// not: a ray below the weight adaptive depth control cuts at, a bitmap texture read with a filter of
+    /// its own through [`ColorSource::at`](crate::lesson::shader::ColorSource::at), a glossy mirror's disc points drawn by a sampler of its own, a `Layered` shader
+    /// shaded. 0 tells that the step changed nothing in this render (the command line notes it).
+    pub steps_reached: [u64; Step::ALL.len()],
 }
 
 impl Counters {
@@ -542,6 +549,9 @@ impl Counters {
         self.over_budget_rays += other.over_budget_rays;
         self.non_finite_samples += other.non_finite_samples;
         self.problems.add(&other.problems);
+        for (a, b) in self.steps_reached.iter_mut().zip(&other.steps_reached) {
+            *a += b;
+        }
     }
 }
 

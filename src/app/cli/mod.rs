@@ -22,6 +22,7 @@ mod instruments;
 mod options;
 mod progress;
 mod run;
+mod step_effect;
 mod values;
 
 pub use console::{print_stderr, print_stdout};

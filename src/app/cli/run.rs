@@ -6,6 +6,7 @@ use super::console::{print_clap, print_stderr, print_stdout};
 use super::defaults::defaults_line;
 use super::example::{Cli, Example};
 use super::help::help_command;
+use super::step_effect;
 use crate::app::parameter_ranges::out_of_range;
 use crate::files::output::{check_output, keeps_linear_light, save_atomically};
 use crate::instruments::compare::{self, Reference};
@@ -279,7 +280,9 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
     }
     let mut reference = None;
     let quiet = args.common.quiet;
+    let mut scope = None;
     let (frame, stats, settings) = args.render_checked(|scene, settings| {
+        scope = Some(step_effect::Scope::of(scene, settings));
         // Every input has been read by now (the scene's files, the reference): no output may replace one.
         input::check_not_an_input(&output, "the picture")?;
         if let Some((path, file)) = reference_file {
@@ -294,6 +297,11 @@ fn run_parsed<E: Example>(name: &str, args: &Cli<E>) -> Result<()> {
         }
         Ok(())
     })?;
+    if let Some(scope) = scope.filter(|_| !quiet) {
+        for note in step_effect::notes(&args.common, &scope, &stats.counters) {
+            print_stderr(&format!("{name}: note: {note}\n"))?;
+        }
+    }
     // The picture as written: exposed, and tone mapped for an 8-bit file; the comparison sees the same.
     let frame = args.film().develop(frame, keeps_linear_light(&output));
     frame.save(&output)?;

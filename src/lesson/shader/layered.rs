@@ -37,8 +37,11 @@ use std::sync::Arc;
 impl Shader for Layered {
     #[inline(always)]
     fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        if ctx.scene.steps.has(Step::LayerPruning) && !self.every_layer {
-            return shade_pruned(&self.layers, ray, info, ctx);
+        if !self.every_layer {
+            ctx.counters.steps_reached[Step::LayerPruning as usize] += 1;
+            if ctx.scene.steps.has(Step::LayerPruning) {
+                return shade_pruned(&self.layers, ray, info, ctx);
+            }
         }
         shade_bottom_up(&self.layers, ray, info, ctx)
     }

@@ -19,6 +19,8 @@ pub use phong::Phong;
 pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
 
+use crate::lesson::beyond::Step;
+use crate::lesson::bitmap::Filter;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
@@ -179,7 +181,11 @@ impl ColorSource {
     pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
         match self {
             ColorSource::Color(c) => *c,
-            ColorSource::Texture(t) => t.color(ray, info, ctx.scene.steps, ctx.recorder()),
+            ColorSource::Texture(t) => {
+                let filters = matches!(t, Tex::Bitmap(bitmap) if bitmap.filter != Filter::Nearest);
+                ctx.counters.steps_reached[Step::TexelFilter as usize] += filters as u64;
+                t.color(ray, info, ctx.scene.steps, ctx.recorder())
+            }
         }
     }
 

@@ -104,6 +104,7 @@ impl Reflection {
         let cone = GlossyCone::new(ray.dir, n, self.glossiness);
         // The slide's random points, or, with the step, the mirror's own sampler; the first bounce of a
         // camera ray may share its pixel's set of points (the joint sampler), deeper bounces take their own.
+        ctx.counters.steps_reached[Step::DiscSamples as usize] += (self.sampler != DiscSampler::Random) as u64;
         let sampler = if steps.has(Step::DiscSamples) { self.sampler } else { DiscSampler::Random };
         let disc = match ctx.pixel_sample {
             Some(sample) if ray.depth == 0 => {
