@@ -11,7 +11,7 @@
 //! time, fair to programs sharing a busy machine; by default it is [`REFERENCE_MULTIPLE`] times what the
 //! teacher's example took, and at least [`LIMIT_FLOOR`] ([`TimeLimit`]).
 
-use crate::class_package::{Built, ClassPackage};
+use crate::class_package::{Built, ClassPackage, placed_as};
 use crate::comparison::{Score, compare};
 use crate::exercise_grades::{Grades, GradingCopy};
 use crate::rendering::{Run, RunLimits, run};
@@ -216,8 +216,7 @@ pub fn grade(settings: &Settings, mut progress: impl FnMut(Progress)) -> Result<
     let package = if sources.is_empty() {
         None
     } else {
-        let dir = out.join("build");
-        let package = ClassPackage::create(&dir, &settings.workbook, &settings.target, &sources, settings.opt_level)?;
+        let package = ClassPackage::new(&settings.workbook, &settings.target, settings.opt_level);
         progress(Progress::Preparing("building the workbook's library for the class (once)"));
         package.build_library(&PREPARATION_LIMIT, &out.join("logs").join("library.build.txt"))?;
         Some(package)
@@ -410,7 +409,7 @@ impl Class<'_> {
         // A panic's place names the example by its file name, as the compiler's errors do.
         if let Some(source) = &job.source {
             let file = source.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            result.outcome = result.outcome.map_err(|why| why.replace(source.to_string_lossy().as_ref(), &file));
+            result.outcome = result.outcome.map_err(|why| why.replace(&placed_as(&job.id), &file));
         }
         let score = match (&result.outcome, self.reference) {
             (Ok(()), Some(reference)) => {

@@ -23,6 +23,19 @@ use std::sync::Mutex;
 /// folder, and a build waiting for the other test's would count against its time limit.
 static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
 
+/// The builds of the library in the workbook's target folder (one file per build: cargo names each by
+/// what it was built with).
+fn libraries(workbook: &Path) -> Vec<String> {
+    let deps = teacher::target_folder(workbook).join("release").join("deps");
+    let files = std::fs::read_dir(deps).expect("the target folder's dependencies").flatten();
+    let mut names: Vec<String> = files
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| name.starts_with("liblecture6-") && name.ends_with(".rlib"))
+        .collect();
+    names.sort();
+    names
+}
+
 /// Runs the class command on the folder `class` with `options`, its output into `out`.
 fn run_class(class: &Path, out: &Path, options: &[&str]) {
     let _alone = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
@@ -50,9 +63,24 @@ fn every_kind_of_submission_gets_its_own_row() {
     let reference = reference.to_string_lossy();
     let options =
         ["--reference", &reference, "--width", "160", "--height", "120", "--spp", "4", "--memory-limit", "1024"];
+    // The library as the workbook's examples build it: the class builds against that very build.
+    let workbook = teacher::workbook();
+    let built = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+        .args(["build", "--release", "--example", "refract", "--manifest-path"])
+        .arg(workbook.join("Cargo.toml"))
+        .env("CARGO_TARGET_DIR", teacher::target_folder(workbook))
+        .status()
+        .expect("cargo runs");
+    assert!(built.success(), "{built:?}");
+    let libraries_before = libraries(workbook);
     run_class(&class, &out, &options);
     let rows = gradebook(&out.join("gradebook.csv"));
     let row = |student: &str| rows.get(student).unwrap_or_else(|| panic!("no row for {student}"));
+    // No second build of the library, and no submission left in the workbook's examples.
+    assert_eq!(libraries(workbook), libraries_before, "the class built the library again");
+    let left = std::fs::read_dir(workbook.join("examples")).expect("the examples").flatten();
+    let left: Vec<_> = left.filter(|e| e.path().join("main.rs").exists()).map(|e| e.file_name()).collect();
+    assert!(left.is_empty(), "submissions left in the workbook's examples: {left:?}");
 
     // Unchanged: the reference's picture exactly.
     assert_eq!((row("alice")["run"].as_str(), row("alice")["psnr"].as_str()), ("ok", "99.00"));
