@@ -21,6 +21,11 @@ use std::time::{Duration, Instant};
 /// How many copies of each kind.
 const COPIES: usize = 6;
 
+/// The kinds of the class test left out, so that the class is ten students copied six times: one that
+/// writes its picture itself and never finishes (three of the kinds already run away), and the glass and
+/// the light that the end-of-run report names (their renders are as short as the reference's).
+const LEFT_OUT: [&str; 3] = ["mallory", "ken", "lena"];
+
 fn main() {
     // In the target folder, where the contact sheet stays to be looked at.
     let dir = teacher::target_folder(teacher::workbook()).join("class-of-sixty");
@@ -30,7 +35,7 @@ fn main() {
     let class = dir.join("hw");
     std::fs::create_dir_all(&class).expect("the class's folder");
     let kinds: Vec<(&str, String)> =
-        submissions::submissions().into_iter().filter(|(student, _)| *student != "mallory").collect();
+        submissions::submissions().into_iter().filter(|(student, _)| !LEFT_OUT.contains(student)).collect();
     for copy in 1..=COPIES {
         for (student, source) in &kinds {
             std::fs::write(class.join(format!("{student}{copy}.rs")), source).expect("a submission");

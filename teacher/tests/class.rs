@@ -1,7 +1,8 @@
 //! The class command on a folder of made-up submissions, one of each kind, all copies of
 //! `examples/refract.rs` (the teacher's reference): unchanged, a changed scene, not compiling, panicking,
-//! looping, a runaway sample count, NaN light, a shader that gains energy, a memory hog, 20000 samples by
-//! default, and one that writes its picture itself and never finishes. Each row of the gradebook says what
+//! looping, a runaway sample count, NaN light from a shader, a shader that gains energy, a memory hog, 20000
+//! samples by default, one that writes its picture itself and never finishes, a glass passing 9 times the
+//! light and a light of NaN intensity. Each row of the gradebook says what
 //! happened to that student, and nothing that happened to one stopped another; the renders are stopped at
 //! the default time limit, derived from the reference's own run, and leave no temporary file.
 //!
@@ -50,7 +51,7 @@ fn run_class(class: &Path, out: &Path, options: &[&str]) {
 }
 
 #[test]
-#[ignore = "builds and runs eleven submissions (about two minutes): cargo test --release -p teacher --test class -- --ignored"]
+#[ignore = "builds and runs thirteen submissions (about two minutes): cargo test --release -p teacher --test class -- --ignored"]
 fn every_kind_of_submission_gets_its_own_row() {
     let dir = tempfile::tempdir().expect("a temporary folder");
     let class = dir.path().join("hw");
@@ -125,6 +126,16 @@ fn every_kind_of_submission_gets_its_own_row() {
     // NaN light: the end-of-run report's warning.
     assert_eq!(row("grace")["run"], "ok");
     assert!(row("grace")["warnings"].contains("sample(s) came back NaN or infinite"), "{:?}", row("grace"));
+    // A glass passing 9 times the light, and a NaN light: each named by what caused it.
+    assert_eq!(row("ken")["run"], "ok");
+    assert!(
+        row("ken")["warnings"].contains("a mirror's or a glass's multiplier is outside 0 to 1"),
+        "{:?}",
+        row("ken")
+    );
+    assert!(row("ken")["warnings"].contains("Refraction multiplier 9"), "{:?}", row("ken"));
+    let lena = &row("lena")["run"];
+    assert!(lena.contains("invalid light 0") && lena.contains("intensity NaN"), "{:?}", row("lena"));
     // A memory hog: stopped at the memory limit.
     assert!(row("ivan")["run"].starts_with("stopped at the memory limit of 1024 MiB"), "{:?}", row("ivan"));
     // Every row's warnings are the warnings its run printed, one each: the shader that gains energy's too,

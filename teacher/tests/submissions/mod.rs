@@ -77,6 +77,8 @@ pub fn submissions() -> Vec<(&'static str, String)> {
             ),
         ),
         ("kate", refract_with("const DEFAULT_SPP: u32 = 4;", "const DEFAULT_SPP: u32 = 20_000;", "")),
+        ("ken", refract_with("Refraction::new(self.ior, 0.95)", "Refraction::new(self.ior, 9.0)", "")),
+        ("lena", refract_with("Color::new(1.0, 0.96, 0.9), 60000.0)", "Color::new(1.0, 0.96, 0.9), f32::NAN)", "")),
         (
             "mallory",
             "//! A picture written by hand, its write never finished.\n\
