@@ -341,7 +341,13 @@ impl Class<'_> {
                         index
                     }
                     Ok(Done::Ran(index, run, score)) => {
-                        rows[index].differences = differences(&run.defaults, &self.reference_defaults);
+                        // A program whose scene cannot be built prints no depth among its defaults (the
+                        // error names what is wrong): its settings are not compared with the reference's.
+                        let scene_built = run.outcome.is_ok() || run.defaults.iter().any(|(o, _)| o == "--max-depth");
+                        rows[index].differences = match scene_built {
+                            true => differences(&run.defaults, &self.reference_defaults),
+                            false => Vec::new(),
+                        };
                         (rows[index].run, rows[index].score) = (Some(run), score);
                         index
                     }

@@ -136,6 +136,7 @@ fn every_kind_of_submission_gets_its_own_row() {
     assert!(row("ken")["warnings"].contains("Refraction multiplier 9"), "{:?}", row("ken"));
     let lena = &row("lena")["run"];
     assert!(lena.contains("invalid light 0") && lena.contains("intensity NaN"), "{:?}", row("lena"));
+    assert_eq!(row("lena")["settings"], "", "a scene that was not built has no settings to compare");
     // A memory hog: stopped at the memory limit.
     assert!(row("ivan")["run"].starts_with("stopped at the memory limit of 1024 MiB"), "{:?}", row("ivan"));
     // Every row's warnings are the warnings its run printed, one each: the shader that gains energy's too,
