@@ -59,7 +59,8 @@ pub enum DebugView {
     /// to [0, 1): u in red, v in green; grey where it read none (reads through `get_tex_color`, a checker's,
     /// the Fresnel texture's and a texture of one's own are not seen).
     Lookup,
-    /// The colour that read returned, as a picture shows it (sRGB); grey where it read none.
+    /// The colour returned by the read `lookup` shows (the first texture read of each pixel's first hit), as
+    /// a picture shows a colour (sRGB); grey where it read none.
     LookupValue,
     /// The distance from the camera to what each pixel sees: white near, black far.
     Depth,
