@@ -11,9 +11,9 @@
 //! - `lookup`, `lookup-value`: what the shader of the surface seen through each pixel's centre actually read
 //!   first: where it read its texture (u in red, v in green, wrapped to [0, 1) as in `uv`), and the colour
 //!   that read returned. The centre ray is traced as the render traces it, watched by an observer that keeps
-//!   the first bitmap look-up the shader of the camera ray's hit made (`src/instruments/debug_view/lookup.rs`
-//!   says which reads are seen), so a shader that swaps u and v shows its u in green; where it matches `uv`,
-//!   the shader read where the hit says it should;
+//!   the first bitmap look-up the shader of the camera ray's hit made (the view's scale says which reads
+//!   are seen), so a shader that swaps u and v shows its u in green; where it matches `uv`, the shader read
+//!   where the hit says it should;
 //! - `rays`, `shadow-rays`, `depth-reached`: what rendering the pixel cost, counted exactly as the real
 //!   render traces it (same samples, same random streams): a heat map of the rays per pixel shows where
 //!   the time goes, and what adaptive depth control (`--exhaustive` turns it off) and layer skipping
@@ -29,7 +29,6 @@
 //! [`Texture::lookup_uv`]: crate::lesson::texture::Texture::lookup_uv
 
 mod legend;
-mod lookup;
 
 pub use legend::Tick;
 
@@ -37,11 +36,14 @@ use crate::lesson::color::{Color, to_srgb8};
 use crate::lesson::error::Result;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::node::Node;
+use crate::lesson::observer::{Observer, Stop};
+use crate::lesson::ray::Ray;
 use crate::lesson::render::{RenderSettings, on_workers, render_row};
-use crate::lesson::scene::{Counters, Scene};
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::{Counters, Scene, TraceContext};
 use crate::lesson::shader::Shader;
+use crate::lesson::topic::{Recorder, Topic};
 use legend::HeatScale;
-use lookup::{FirstRead, first_read};
 use rayon::prelude::*;
 use std::collections::BTreeSet;
 
@@ -308,6 +310,88 @@ fn looked_up_sample(view: DebugView, read: FirstRead) -> Sample {
         FirstRead::Read { shader, uv: (u, v), .. } => {
             Sample::TexCoords([u - u.floor(), v - v.floor()], Source::ReadBy(shader))
         }
+    }
+}
+
+/// What the shader of a camera ray's hit read first.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum FirstRead {
+    /// The ray hit nothing.
+    Missed,
+    /// The hit's shader, called `shader`, read a bitmap first at (u, v) (after the texture's scaling, before
+    /// wrapping: one image per unit), which gave `color` (linear light).
+    Read {
+        /// The hit's shader's name.
+        shader: &'static str,
+        /// Where the read looked up.
+        uv: (f32, f32),
+        /// The colour the read returned: its texels' weighted sum.
+        color: Color,
+    },
+    /// The hit's shader, called `shader`, made no read the core records.
+    Nothing {
+        /// The hit's shader's name.
+        shader: &'static str,
+    },
+}
+
+/// Traces `ray` in the prepared `scene`, drawing its random numbers from a stream keyed by `keys`, and says
+/// what the shader of its hit read first: where it read (u and v) and what it got back, rather than where
+/// the hit says it should read (`--view uv`).
+///
+/// The ray is traced as the render traces a camera ray, with an observer ([`crate::lesson::observer`]) that
+/// keeps the first texture look-up the core records at the first hit: the texels a bitmap mixed, which a
+/// shader reads through `ColorSource::at` (every shader of the workbook, and a student's that reads its
+/// texture as `docs/homework-api.md` shows), and which a `Layered` shader's layers and blend textures read so
+/// too. Nothing of it runs in a render: the core records a look-up only for an observer. What the core does
+/// not record is not seen: a read through `Texture::get_tex_color` (or `ColorSource::get`) called directly,
+/// a checker's, a texture of a student's own, and the Fresnel texture (which reads no u/v); a surface whose
+/// shader read only such textures shows as one that read none.
+fn first_read(scene: &Scene, ray: &Ray, keys: &[u64]) -> FirstRead {
+    let mut watch = Watch::default();
+    let mut ctx = TraceContext::new(scene, Rng::for_keys(keys));
+    ctx.observer = Some(&mut watch);
+    ctx.raytrace(ray);
+    drop(ctx);
+    match (watch.shader, watch.read) {
+        (None, _) => FirstRead::Missed,
+        (Some(shader), Some((uv, color))) => FirstRead::Read { shader, uv, color },
+        (Some(shader), None) => FirstRead::Nothing { shader },
+    }
+}
+
+/// The observer of one camera ray's trace: how deep the ray being traced is (1: the camera ray), the shader
+/// of the camera ray's hit, and the first look-up recorded while that shader ran (not while a ray it traced
+/// was being shaded).
+#[derive(Default)]
+struct Watch {
+    depth: u32,
+    shader: Option<&'static str>,
+    read: Option<((f32, f32), Color)>,
+}
+
+impl Recorder for Watch {
+    fn record(&mut self, topic: &Topic) {
+        if let (1, Some(_), None, Topic::Texels { u, v, texels }) = (self.depth, self.shader, self.read, topic) {
+            let color = texels.iter().fold(Color::BLACK, |sum, t| sum + t.color * t.weight);
+            self.read = Some(((*u, *v), color));
+        }
+    }
+}
+
+impl Observer for Watch {
+    fn ray_begins(&mut self, _ray: &Ray) {
+        self.depth += 1;
+    }
+
+    fn ray_hits(&mut self, _node: &str, shader: &'static str, _info: &IntersectionInfo) {
+        if self.depth == 1 {
+            self.shader = Some(shader);
+        }
+    }
+
+    fn ray_ends(&mut self, _color: Color, _stop: Option<Stop>) {
+        self.depth -= 1;
     }
 }
 
