@@ -29,7 +29,7 @@
 //! | [`files::input`], [`files::image_file`], [`files::error`] | not a slide: the files a scene is read from, refused unless regular and within their caps; the pixel budget of the images a run holds; the errors |
 //! | [`lesson::sampling`] | points in the unit disc for glossy reflections (random as on the slide, stratified per camera ray or over the whole pixel) |
 //! | [`instruments::ray_tree`] | the ray tree of one pixel (`--trace-pixel`): every ray behind it, and how their colours add up |
-//! | [`instruments::debug_view`] | false-colour views (`--view`): normals, u/v, depth, rays, shadow rays and depth reached per pixel |
+//! | [`instruments::debug_view`] | false-colour views (`--view`): normals, u/v, what a shader looked up and got, depth, rays, shadow rays and depth reached per pixel |
 //! | [`instruments::side_by_side`], [`instruments::compare`] | two renders and their difference in one captioned picture (`--side-by-side`); image differences (`--compare`) |
 //! | [`instruments::progressive`] | the picture building up: a coarse pass, then tiles; cancellable (the live viewer draws with it) |
 //! | [`instruments::study`] | run time versus error: renders at rising sample counts against a converged reference |

@@ -8,6 +8,12 @@
 //!   units shows one ramp per tile of its texture, not a moiré of one ramp per unit; where the shader names
 //!   no texture, the surface's own u/v. It is computed from the hit, not from what the shader did: a shader
 //!   that reads its texture elsewhere (u and v swapped, coordinates of its own) is not seen in it;
+//! - `lookup`, `lookup-value`: what the shader of the surface seen through each pixel's centre actually read
+//!   first: where it read its texture (u in red, v in green, wrapped to [0, 1) as in `uv`), and the colour
+//!   that read returned. The centre ray is traced as the render traces it, watched by an observer that keeps
+//!   the first bitmap look-up the shader of the camera ray's hit made (the view's scale says which reads
+//!   are seen), so a shader that swaps u and v shows its u in green; where it matches `uv`, the shader read
+//!   where the hit says it should;
 //! - `rays`, `shadow-rays`, `depth-reached`: what rendering the pixel cost, counted exactly as the real
 //!   render traces it (same samples, same random streams): a heat map of the rays per pixel shows where
 //!   the time goes, and what adaptive depth control (`--exhaustive` turns it off) and layer skipping
@@ -26,13 +32,17 @@ mod legend;
 
 pub use legend::Tick;
 
-use crate::lesson::color::Color;
+use crate::lesson::color::{Color, to_srgb8};
 use crate::lesson::error::Result;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::node::Node;
+use crate::lesson::observer::{Observer, Stop};
+use crate::lesson::ray::Ray;
 use crate::lesson::render::{RenderSettings, on_workers, render_row};
-use crate::lesson::scene::{Counters, Scene};
+use crate::lesson::rng::Rng;
+use crate::lesson::scene::{Counters, Scene, TraceContext};
 use crate::lesson::shader::Shader;
+use crate::lesson::topic::{Recorder, Topic};
 use legend::HeatScale;
 use rayon::prelude::*;
 use std::collections::BTreeSet;
@@ -44,8 +54,16 @@ pub enum DebugView {
     Normals,
     /// The hit's texture coordinates as the texture the surface's shader names would look them up (after
     /// its scaling; the surface's own u/v where the shader names no texture), wrapped to [0, 1): u in red, v
-    /// in green. Not what the shader read: one that swaps u and v before reading is not seen in it.
+    /// in green. Not what the shader read: one that swaps u and v before reading is not seen in it (`lookup`
+    /// shows that).
     Uv,
+    /// Where the shader of each pixel's first hit read its first bitmap (through `ColorSource::at`), wrapped
+    /// to [0, 1): u in red, v in green; grey where it read none (reads through `get_tex_color`, a checker's,
+    /// the Fresnel texture's and a texture of one's own are not seen).
+    Lookup,
+    /// The colour returned by the read `lookup` shows (the first texture read of each pixel's first hit), as
+    /// a picture shows a colour (sRGB); grey where it read none.
+    LookupValue,
     /// The distance from the camera to what each pixel sees: white near, black far.
     Depth,
     /// A heat map of all rays traced per pixel (camera, secondary and shadow rays), on a log scale.
@@ -73,7 +91,7 @@ pub struct DebugImage {
     /// picture is taller than the render by the strip); for the others, `image` alone.
     pub picture: image::RgbImage,
     /// The smallest and the largest value shown (over the pixels that hit something, for the geometric
-    /// views): normal components, u/v, distances, ray counts or depths.
+    /// views): normal components, u/v, colour channels read (linear), distances, ray counts or depths.
     pub range: (f32, f32),
     /// How to read the colours.
     pub scale: String,
@@ -102,32 +120,42 @@ impl Default for Legend {
 /// views on a log scale show it for a count of 0.
 const NO_HIT: [u8; 3] = [0, 0, 96];
 
-/// What one pixel of a view measured: a normal, texture coordinates and where they come from, a number (a
-/// distance, a count), or nothing hit.
+/// Where the first hit's shader read no texture seen, the `lookup` views show this mid grey (in `lookup`
+/// no coordinates map to it: their blue is 0).
+const NOTHING_READ: [u8; 3] = [128, 128, 128];
+
+/// What one pixel of a view measured: a normal, texture coordinates and where they come from, a colour read
+/// and who read it, a shader that read nothing seen, a number (a distance, a count), or nothing hit.
 #[derive(Clone, Copy)]
 enum Sample {
     Normal([f32; 3]),
-    TexCoords([f32; 2], UvSource),
+    TexCoords([f32; 2], Source),
+    Value(Color, Source),
+    NothingRead(Source),
     Number(f32),
     Nothing,
 }
 
-/// Where the u/v of a pixel of the `uv` view come from, named for its scale text.
+/// Where the u/v of a pixel of the `uv` or `lookup` views come from, named for their scale text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-enum UvSource {
-    /// The coordinates this texture (its type's name) looks up, after its scaling.
+enum Source {
+    /// `uv`: the coordinates this texture (its type's name) looks up, after its scaling.
     Texture(&'static str),
-    /// The surface's own u/v, under this shader (its type's name), which reads no texture it names.
+    /// `uv`: the surface's own u/v, under this shader (its type's name), which reads no texture it names.
     Surface(&'static str),
+    /// `lookup`: what this shader read.
+    ReadBy(&'static str),
+    /// `lookup`: this shader read no texture seen.
+    NothingReadBy(&'static str),
 }
 
 /// What the pixels of a view measured, all together: the range of their values, the smallest ray count of
-/// at least 1 (where a log scale starts) and where the `uv` view's coordinates come from.
+/// at least 1 (where a log scale starts) and where the `uv` and `lookup` views' coordinates come from.
 struct Summary {
     lo: f32,
     hi: f32,
     smallest_count: f32,
-    sources: BTreeSet<UvSource>,
+    sources: BTreeSet<Source>,
 }
 
 impl Summary {
@@ -146,6 +174,13 @@ impl Summary {
             Sample::Normal(n) => extend(&n),
             Sample::TexCoords(uv, source) => {
                 extend(&uv);
+                self.sources.insert(source);
+            }
+            Sample::Value(color, source) => {
+                extend(&color.to_array());
+                self.sources.insert(source);
+            }
+            Sample::NothingRead(source) => {
                 self.sources.insert(source);
             }
             Sample::Number(v) => {
@@ -170,8 +205,8 @@ impl Summary {
 
 /// Draws the view of the scene at the size `settings` gives, on `settings.threads` threads. Its memory is a
 /// few bytes a pixel, less than a render's frame: the geometric views measure each pixel twice (once for
-/// the range of the values, once for the colours) rather than keep what they measured, and the heat views
-/// keep one number a pixel of what the pixel's rays cost.
+/// the range of the values, once for the colours; the lookup views trace its centre ray twice) rather than
+/// keep what they measured, and the heat views keep one number a pixel of what the pixel's rays cost.
 pub fn render_view(scene: &Scene, settings: &RenderSettings, view: DebugView) -> Result<DebugImage> {
     render_view_with(scene, settings, view, Legend::default())
 }
@@ -188,6 +223,14 @@ pub fn render_view_with(
     let pixels = w as usize * h as usize;
     let camera = scene.camera.frame(w, h);
     let geometric = !view.is_heat();
+    let looked_up = matches!(view, DebugView::Lookup | DebugView::LookupValue);
+    // The lookup views trace the centre rays: in the scene as a render traces it.
+    let traced = if looked_up {
+        scene.check()?;
+        Some(scene.prepared())
+    } else {
+        None
+    };
     // On the run's worker threads when it is called on one (one pool for the run), else on a pool of its own.
     let (bytes, range, heat_scale, sources) = on_workers(settings.threads, |_| -> Result<_> {
         let costs: Vec<f32> = if geometric {
@@ -204,6 +247,9 @@ pub fn render_view_with(
             }
             let (x, y) = ((i % w as usize) as f32, (i / w as usize) as f32);
             let ray = camera.get_screen_ray(x + 0.5, y + 0.5);
+            if let Some(traced) = &traced {
+                return looked_up_sample(view, first_read(traced, &ray, &[settings.seed, x as u64, y as u64]));
+            }
             match scene.closest_hit(&ray) {
                 None => Sample::Nothing,
                 Some((info, node)) => match view {
@@ -224,6 +270,8 @@ pub fn render_view_with(
                 (_, Sample::Nothing) => NO_HIT,
                 (_, Sample::Normal(n)) => n.map(|c| unit_to_u8((c + 1.0) * 0.5)),
                 (_, Sample::TexCoords([u, v], _)) => [unit_to_u8(u), unit_to_u8(v), 0],
+                (_, Sample::Value(color, _)) => to_srgb8(color),
+                (_, Sample::NothingRead(_)) => NOTHING_READ,
                 (DebugView::Depth, Sample::Number(d)) => {
                     let near_to_far = if range.1 > range.0 { (d - range.0) / (range.1 - range.0) } else { 0.0 };
                     [unit_to_u8(1.0 - near_to_far); 3]
@@ -250,13 +298,110 @@ pub fn render_view_with(
     Ok(DebugImage { image, picture, range, scale, ticks })
 }
 
+/// What a `lookup` view shows for a pixel whose centre ray's shader read `read` first: where it read,
+/// wrapped to [0, 1), or the colour it got.
+fn looked_up_sample(view: DebugView, read: FirstRead) -> Sample {
+    match read {
+        FirstRead::Missed => Sample::Nothing,
+        FirstRead::Nothing { shader } => Sample::NothingRead(Source::NothingReadBy(shader)),
+        FirstRead::Read { shader, color, .. } if view == DebugView::LookupValue => {
+            Sample::Value(color, Source::ReadBy(shader))
+        }
+        FirstRead::Read { shader, uv: (u, v), .. } => {
+            Sample::TexCoords([u - u.floor(), v - v.floor()], Source::ReadBy(shader))
+        }
+    }
+}
+
+/// What the shader of a camera ray's hit read first.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum FirstRead {
+    /// The ray hit nothing.
+    Missed,
+    /// The hit's shader, called `shader`, read a bitmap first at (u, v) (after the texture's scaling, before
+    /// wrapping: one image per unit), which gave `color` (linear light).
+    Read {
+        /// The hit's shader's name.
+        shader: &'static str,
+        /// Where the read looked up.
+        uv: (f32, f32),
+        /// The colour the read returned: its texels' weighted sum.
+        color: Color,
+    },
+    /// The hit's shader, called `shader`, made no read the core records.
+    Nothing {
+        /// The hit's shader's name.
+        shader: &'static str,
+    },
+}
+
+/// Traces `ray` in the prepared `scene`, drawing its random numbers from a stream keyed by `keys`, and says
+/// what the shader of its hit read first: where it read (u and v) and what it got back, rather than where
+/// the hit says it should read (`--view uv`).
+///
+/// The ray is traced as the render traces a camera ray, with an observer ([`crate::lesson::observer`]) that
+/// keeps the first texture look-up the core records at the first hit: the texels a bitmap mixed, which a
+/// shader reads through `ColorSource::at` (every shader of the workbook, and a student's that reads its
+/// texture as `docs/homework-api.md` shows), and which a `Layered` shader's layers and blend textures read so
+/// too. Nothing of it runs in a render: the core records a look-up only for an observer. What the core does
+/// not record is not seen: a read through `Texture::get_tex_color` (or `ColorSource::get`) called directly,
+/// a checker's, a texture of a student's own, and the Fresnel texture (which reads no u/v); a surface whose
+/// shader read only such textures shows as one that read none.
+fn first_read(scene: &Scene, ray: &Ray, keys: &[u64]) -> FirstRead {
+    let mut watch = Watch::default();
+    let mut ctx = TraceContext::new(scene, Rng::for_keys(keys));
+    ctx.observer = Some(&mut watch);
+    ctx.raytrace(ray);
+    drop(ctx);
+    match (watch.shader, watch.read) {
+        (None, _) => FirstRead::Missed,
+        (Some(shader), Some((uv, color))) => FirstRead::Read { shader, uv, color },
+        (Some(shader), None) => FirstRead::Nothing { shader },
+    }
+}
+
+/// The observer of one camera ray's trace: how deep the ray being traced is (1: the camera ray), the shader
+/// of the camera ray's hit, and the first look-up recorded while that shader ran (not while a ray it traced
+/// was being shaded).
+#[derive(Default)]
+struct Watch {
+    depth: u32,
+    shader: Option<&'static str>,
+    read: Option<((f32, f32), Color)>,
+}
+
+impl Recorder for Watch {
+    fn record(&mut self, topic: &Topic) {
+        if let (1, Some(_), None, Topic::Texels { u, v, texels }) = (self.depth, self.shader, self.read, topic) {
+            let color = texels.iter().fold(Color::BLACK, |sum, t| sum + t.color * t.weight);
+            self.read = Some(((*u, *v), color));
+        }
+    }
+}
+
+impl Observer for Watch {
+    fn ray_begins(&mut self, _ray: &Ray) {
+        self.depth += 1;
+    }
+
+    fn ray_hits(&mut self, _node: &str, shader: &'static str, _info: &IntersectionInfo) {
+        if self.depth == 1 {
+            self.shader = Some(shader);
+        }
+    }
+
+    fn ray_ends(&mut self, _color: Color, _stop: Option<Stop>) {
+        self.depth -= 1;
+    }
+}
+
 /// What the `uv` view shows for a hit on `node`: the hit's coordinates as the texture its shader names
 /// would look them up (the shader's `texture()`, then the texture's `lookup_uv`), or, under a shader that
 /// names no texture, the surface's own u/v; wrapped to [0, 1).
 fn texture_uv(info: &IntersectionInfo, node: &Node) -> Sample {
     let ((u, v), source) = match node.shader.texture() {
-        Some(texture) => (texture.lookup_uv(info.uv()), UvSource::Texture(texture.name())),
-        None => (info.uv(), UvSource::Surface(node.shader.name())),
+        Some(texture) => (texture.lookup_uv(info.uv()), Source::Texture(texture.name())),
+        None => (info.uv(), Source::Surface(node.shader.name())),
     };
     Sample::TexCoords([u - u.floor(), v - v.floor()], source)
 }
@@ -277,7 +422,7 @@ fn cost(view: DebugView, counters: &Counters) -> f32 {
 fn heat_scale(view: DebugView, smallest_count: f32, (lo, hi): (f32, f32), max: Option<u32>) -> Option<HeatScale> {
     let max = max.map(|m| m as f32);
     match view {
-        DebugView::Normals | DebugView::Uv | DebugView::Depth => None,
+        DebugView::Normals | DebugView::Uv | DebugView::Depth | DebugView::Lookup | DebugView::LookupValue => None,
         DebugView::DepthReached => Some(match max {
             Some(hi) => HeatScale::Linear { lo: 0.0, hi },
             None => HeatScale::Linear { lo, hi },
@@ -304,7 +449,7 @@ fn describe(
     view: DebugView,
     (lo, hi): (f32, f32),
     heat_scale: Option<HeatScale>,
-    sources: &BTreeSet<UvSource>,
+    sources: &BTreeSet<Source>,
 ) -> String {
     let ramp = "black, purple, red, orange, yellow, white";
     let (heat_lo, heat_hi) = heat_scale.map_or((lo, hi), HeatScale::ends);
@@ -316,6 +461,7 @@ fn describe(
                 .to_string()
         }
         DebugView::Uv => describe_uv(sources),
+        DebugView::Lookup | DebugView::LookupValue => describe_lookup(view, (lo, hi), sources),
         DebugView::Depth => {
             format!("white = distance {lo:.3} (nearest), black = {hi:.3} (farthest); dark blue: nothing hit")
         }
@@ -332,26 +478,47 @@ fn describe(
     }
 }
 
+/// The names `pick` takes from `sources`, joined, or "none seen".
+fn names(sources: &BTreeSet<Source>, pick: impl Fn(Source) -> Option<&'static str>) -> String {
+    let names: Vec<&str> = sources.iter().filter_map(|&s| pick(s)).collect();
+    if names.is_empty() { "none seen".to_string() } else { names.join(", ") }
+}
+
 /// The `uv` view's scale: what the red and green are on the surfaces seen, naming the textures whose
 /// coordinates it shows and the shaders under which it shows the surface's own u/v.
-fn describe_uv(sources: &BTreeSet<UvSource>) -> String {
-    let names = |textures: bool| -> String {
-        let names: Vec<&str> = sources
-            .iter()
-            .filter_map(|s| match *s {
-                UvSource::Texture(name) if textures => Some(name),
-                UvSource::Surface(name) if !textures => Some(name),
-                _ => None,
-            })
-            .collect();
-        if names.is_empty() { "none seen".to_string() } else { names.join(", ") }
+fn describe_uv(sources: &BTreeSet<Source>) -> String {
+    let textures = names(sources, |s| if let Source::Texture(name) = s { Some(name) } else { None });
+    let surfaces = names(sources, |s| if let Source::Surface(name) = s { Some(name) } else { None });
+    format!(
+        "red = u, green = v, wrapped to [0, 1): the hit's coordinates, where the shader names a texture \
+         ({textures}) as that texture looks them up after its scaling (one ramp per tile of the texture), not what \
+         the shader itself read (--view lookup shows that); elsewhere ({surfaces}), the surface's own u/v; dark \
+         blue: nothing hit"
+    )
+}
+
+/// The `lookup` views' scale: what the colours are, naming the shaders whose reads are shown and those
+/// seen reading none, which reads count as first and which are not seen.
+fn describe_lookup(view: DebugView, (lo, hi): (f32, f32), sources: &BTreeSet<Source>) -> String {
+    let read = names(sources, |s| if let Source::ReadBy(name) = s { Some(name) } else { None });
+    let unread = names(sources, |s| if let Source::NothingReadBy(name) = s { Some(name) } else { None });
+    let what = match view {
+        DebugView::LookupValue => format!(
+            "the colour returned by the first texture read of the shader of the surface seen through the pixel's \
+             centre (read by: {read}), linear values from {lo:.3} to {hi:.3} shown as the render shows a colour \
+             (sRGB, clipped to [0, 1])"
+        ),
+        _ => format!(
+            "red = u, green = v, wrapped to [0, 1): where the shader of the surface seen through the pixel's centre \
+             made its first texture read (read by: {read}), after the texture's scaling (--view uv: where the hit \
+             says it should read)"
+        ),
     };
     format!(
-        "red = u, green = v, wrapped to [0, 1): the hit's coordinates, where the shader names a texture ({}) \
-         as that texture looks them up after its scaling (one ramp per tile of the texture), not what the shader \
-         itself read; elsewhere ({}), the surface's own u/v; dark blue: nothing hit",
-        names(true),
-        names(false)
+        "{what}; a Layered shader reads its layers, each one's blend texture first, from the bottom up under \
+         --slide and from the top down with layer pruning (the default); grey: no read seen (under: {unread}); seen are a bitmap's reads \
+         through ColorSource::at, not reads through get_tex_color, a checker's, the Fresnel texture's or a texture \
+         of one's own; dark blue: nothing hit"
     )
 }
 

@@ -33,6 +33,7 @@ mod house;
 mod inspect;
 mod layered_fresnel;
 mod layers;
+mod lookup;
 mod math;
 mod mesh;
 mod output;

@@ -199,8 +199,9 @@ pub struct CommonArgs {
     pub trace_format: TraceFormat,
     /// Write a false-colour debug view instead of the shaded picture (to --output, or out/EXAMPLE-VIEW.png)
     /// and print its scale: the normals, texture coordinates (after the texture's scaling) or distance of
-    /// what each pixel sees, or a heat map of the rays or shadow rays (log scale) or the deepest ray (linear)
-    /// traced per pixel, with its legend in a strip below the picture.
+    /// what each pixel sees, where its shader read its first texture and what that read returned, or a heat
+    /// map of the rays or shadow rays (log scale) or the deepest ray (linear) traced per pixel, with its
+    /// legend in a strip below the picture.
     #[arg(long, value_enum, help_heading = COMMON, conflicts_with_all = ["trace_pixel", "side_by_side"])]
     pub view: Option<DebugView>,
     /// The top of a heat view's legend (--view rays, shadow-rays, depth-reached): the count (or depth) shown
