@@ -539,9 +539,8 @@ impl Counters {
     }
     /// Adds `other`'s counts to these (the counters of rows rendered in parallel, summed).
     pub fn add(&mut self, other: &Counters) {
-        for (a, b) in self.rays_by_depth.iter_mut().zip(&other.rays_by_depth) {
-            *a += b;
-        }
+        let sum = |a: &mut [u64], b: &[u64]| a.iter_mut().zip(b).for_each(|(a, b)| *a += b);
+        sum(&mut self.rays_by_depth, &other.rays_by_depth);
         self.shadow_rays += other.shadow_rays;
         self.capped_rays += other.capped_rays;
         self.pruned_rays += other.pruned_rays;
@@ -549,9 +548,7 @@ impl Counters {
         self.over_budget_rays += other.over_budget_rays;
         self.non_finite_samples += other.non_finite_samples;
         self.problems.add(&other.problems);
-        for (a, b) in self.steps_reached.iter_mut().zip(&other.steps_reached) {
-            *a += b;
-        }
+        sum(&mut self.steps_reached, &other.steps_reached);
     }
 }
 
