@@ -50,6 +50,7 @@ mod scene_file;
 mod shader_kit;
 mod silent_mistakes;
 mod slide;
+mod smooth_mesh;
 mod stress;
 mod study;
 mod template;
