@@ -67,6 +67,7 @@
 
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::helper_ranges;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::{Node, UNIT_NORMAL_TOLERANCE};
 use crate::lesson::problems::{Gains, Problems, Source};
@@ -342,6 +343,11 @@ impl<'a> TraceContext<'a> {
     pub(crate) fn shade_hit(&mut self, i: usize, ray: &Ray, info: &IntersectionInfo, unit_normal: bool) -> Color {
         let scene = self.scene;
         let node = &scene.nodes[i];
+        // A helper given a parameter out of its range by the shader whose ray this is (none at the camera).
+        if helper_ranges::noted() {
+            let shader = self.shading.point.origin.node;
+            self.note_helpers(shader.and_then(|n| scene.nodes.iter().position(|m| std::ptr::eq(m, n))));
+        }
         if !unit_normal {
             self.note(i, |p| &mut p.bad_normals);
         }
@@ -366,6 +372,9 @@ impl<'a> TraceContext<'a> {
             },
         );
         let color = node.shader.shade(ray, info, self);
+        if helper_ranges::noted() {
+            self.note_helpers(Some(i));
+        }
         self.note_non_finite(i, color);
         if self.shading.rays >= 2 && color.is_finite() {
             self.weigh_energy(i, color);
@@ -432,6 +441,16 @@ impl<'a> TraceContext<'a> {
         if !self.shading.workbook && (dir.length_squared() - 1.0).abs() > 4.0 * UNIT_NORMAL_TOLERANCE {
             let node = self.shading.node().and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
             node.into_iter().for_each(|i| self.note(i, |p| &mut p.long_directions));
+        }
+    }
+
+    /// Moves what the course's helpers noted of parameters out of their range to node `i`'s count, or drops
+    /// it for `None` (noted outside a render's shaders: a photon's).
+    #[cold]
+    #[inline(never)]
+    fn note_helpers(&mut self, i: Option<usize>) {
+        for (helper, calls) in helper_ranges::take() {
+            i.into_iter().for_each(|i| self.counters.problems.note_helper(i, helper, calls));
         }
     }
 

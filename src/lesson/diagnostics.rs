@@ -14,6 +14,8 @@
 //! - a shader that returned more light than its rays and its light loop brought it (the energy check of
 //!   [`crate::lesson::branching`]: a sum of N rays not divided by N);
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`](crate::lesson::node::Node::surface));
+//! - a course helper's parameter a shader passed outside the range it takes (a glossiness outside (0, 1]
+//!   given to `GlossyCone::new`, see [`crate::lesson::helper_ranges`]), with the worst value;
 //! - a ray a shader traced in a direction that is not of unit length (its squared length off by more than
 //!   four times the normal check's tolerance, which a reflection about a normal that passes that check never
 //!   is; a NaN direction is left to the NaN check);
@@ -109,6 +111,12 @@ impl Problems {
                 ));
             }
         }
+        if !problems.helper_parameters.is_empty() {
+            let calls = problems.helper_parameters.iter().map(|(&(i, helper), calls)| {
+                format!("{} ({} calls, the worst {}): {}", node(i), calls.calls, calls.worst, helper.describe())
+            });
+            lines.push(format!("{HELPER_PARAMETERS}: {}", calls.collect::<Vec<_>>().join("; ")));
+        }
         if !problems.undeclared_dispersion.is_empty() {
             let nodes: Vec<String> = problems.undeclared_dispersion.iter().map(|&i| node(i)).collect();
             lines.push(format!(
@@ -155,6 +163,10 @@ const STARTED_ELSEWHERE: &str = "rays a shader started off the surface found it 
      and were not followed (black; self-intersection): the shape puts its hit point on its surface within its \
      error bound, so the shader started the ray elsewhere or turned it after starting it; make it with \
      ray.spawn(info, dir, attenuation) from this hit's info, in the direction it is traced";
+
+/// The report's line on course helpers given a parameter out of their range by a shader at run time.
+const HELPER_PARAMETERS: &str = "a shader passed a course helper a parameter outside the range it takes (a value \
+     computed at each hit, a texture's, unclamped): clamp it to the range before the call";
 
 /// The report's line on shaders that return more light than their rays and light loop brought them.
 const ENERGY_GAINS: &str = "a shader returned more light than its brightest ray and its light loop brought it, in \

@@ -1,6 +1,7 @@
 //! What `raytrace` counts going wrong while it traces, by node (beyond the slides): the counts behind the
 //! end-of-run report, which [`crate::lesson::diagnostics`] turns into its lines after the render.
 
+use crate::lesson::helper_ranges::{Helper, OutOfRange};
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Where a NaN or infinite colour came from.
@@ -33,6 +34,9 @@ pub struct Problems {
     /// Rays a shader traced with a depth below its own ray's (made with `Ray::new`, which starts at depth 0),
     /// by the node whose shader traced them: `raytrace` counts them at their real depth.
     pub restarted_depth: BTreeMap<Source, u64>,
+    /// Course helpers a shader passed a parameter outside its range at run time, by the node whose shader
+    /// called them and the helper ([`crate::lesson::helper_ranges`]).
+    pub helper_parameters: BTreeMap<(usize, Helper), OutOfRange>,
     /// The nodes whose shader gave rays of different wavelengths different colours though it says it does not
     /// depend on them (`diagnostics::undeclared_dispersion`, after the render).
     pub undeclared_dispersion: BTreeSet<usize>,
@@ -74,6 +78,15 @@ impl Problems {
         merge(&mut self.long_directions, &other.long_directions);
         merge(&mut self.restarted_depth, &other.restarted_depth);
         self.undeclared_dispersion.extend(&other.undeclared_dispersion);
+        for (&(node, helper), &calls) in &other.helper_parameters {
+            self.note_helper(node, helper, calls);
+        }
+    }
+
+    /// Adds `calls` of `helper` out of its range to `node`'s.
+    pub(crate) fn note_helper(&mut self, node: usize, helper: Helper, calls: OutOfRange) {
+        let entry = self.helper_parameters.entry((node, helper)).or_insert(OutOfRange { calls: 0, worst: calls.worst });
+        *entry = entry.merged(calls, helper);
     }
 
     /// Counts one more of `what` for `node`.

@@ -25,6 +25,7 @@ mod edge_cases;
 mod environment;
 mod fuzz_scene_file;
 mod glossy;
+mod helper_parameters;
 mod homework;
 mod hostile_files;
 mod hostile_input;
