@@ -67,7 +67,7 @@
 
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
-use crate::lesson::helper_ranges;
+use crate::lesson::helper_ranges::{self, OutOfRange};
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::{Node, UNIT_NORMAL_TOLERANCE};
 use crate::lesson::problems::{Gains, Problems, Source};
@@ -344,9 +344,8 @@ impl<'a> TraceContext<'a> {
         let scene = self.scene;
         let node = &scene.nodes[i];
         // A helper given a parameter out of its range by the shader whose ray this is (none at the camera).
-        if helper_ranges::noted() {
-            let shader = self.shading.point.origin.node;
-            self.note_helpers(shader.and_then(|n| scene.nodes.iter().position(|m| std::ptr::eq(m, n))));
+        if let Some(calls) = helper_ranges::take() {
+            self.note_helper(self.shading.point.origin.node, calls);
         }
         if !unit_normal {
             self.note(i, |p| &mut p.bad_normals);
@@ -372,8 +371,8 @@ impl<'a> TraceContext<'a> {
             },
         );
         let color = node.shader.shade(ray, info, self);
-        if helper_ranges::noted() {
-            self.note_helpers(Some(i));
+        if let Some(calls) = helper_ranges::take() {
+            self.note_helper(Some(node), calls);
         }
         self.note_non_finite(i, color);
         if self.shading.rays >= 2 && color.is_finite() {
@@ -444,14 +443,13 @@ impl<'a> TraceContext<'a> {
         }
     }
 
-    /// Moves what the course's helpers noted of parameters out of their range to node `i`'s count, or drops
-    /// it for `None` (noted outside a render's shaders: a photon's).
+    /// Counts `calls` of a course helper given a parameter out of its range against `node`, or drops them
+    /// for `None` (noted outside a render's shaders: a photon's).
     #[cold]
     #[inline(never)]
-    fn note_helpers(&mut self, i: Option<usize>) {
-        for (helper, calls) in helper_ranges::take() {
-            i.into_iter().for_each(|i| self.counters.problems.note_helper(i, helper, calls));
-        }
+    fn note_helper(&mut self, node: Option<&Node>, calls: OutOfRange) {
+        let i = node.and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
+        i.into_iter().for_each(|i| self.counters.problems.note_glossiness(i, calls));
     }
 
     /// Counts one more problem of the kind `what` picks for `node` (kept out of `raytrace`'s code: it is

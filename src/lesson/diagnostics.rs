@@ -111,11 +111,10 @@ impl Problems {
                 ));
             }
         }
-        if !problems.helper_parameters.is_empty() {
-            let calls = problems.helper_parameters.iter().map(|(&(i, helper), calls)| {
-                format!("{} ({} calls, the worst {}): {}", node(i), calls.calls, calls.worst, helper.describe())
-            });
-            lines.push(format!("{HELPER_PARAMETERS}: {}", calls.collect::<Vec<_>>().join("; ")));
+        if !problems.glossiness_out_of_range.is_empty() {
+            let calls = problems.glossiness_out_of_range.iter();
+            let calls = calls.map(|(&i, n)| format!("{} ({} calls, the worst {})", node(i), n.calls, n.worst));
+            lines.push(format!("{GLOSSINESS_OUT_OF_RANGE}: {}", calls.collect::<Vec<_>>().join(", ")));
         }
         if !problems.undeclared_dispersion.is_empty() {
             let nodes: Vec<String> = problems.undeclared_dispersion.iter().map(|&i| node(i)).collect();
@@ -164,9 +163,10 @@ const STARTED_ELSEWHERE: &str = "rays a shader started off the surface found it 
      error bound, so the shader started the ray elsewhere or turned it after starting it; make it with \
      ray.spawn(info, dir, attenuation) from this hit's info, in the direction it is traced";
 
-/// The report's line on course helpers given a parameter out of their range by a shader at run time.
-const HELPER_PARAMETERS: &str = "a shader passed a course helper a parameter outside the range it takes (a value \
-     computed at each hit, a texture's, unclamped): clamp it to the range before the call";
+/// The report's line on shaders that passed `GlossyCone::new` a glossiness out of its range at run time.
+const GLOSSINESS_OUT_OF_RANGE: &str = "a shader passed GlossyCone::new a glossiness outside its range, above 0 and \
+     at most 1 (a value computed at each hit, a texture's, unclamped): the cone, tan((1 - glossiness) * pi/2), is \
+     unbounded or turned inside out; clamp it to the range before the call";
 
 /// The report's line on shaders that return more light than their rays and light loop brought them.
 const ENERGY_GAINS: &str = "a shader returned more light than its brightest ray and its light loop brought it, in \

@@ -8,7 +8,7 @@
 //! to count it in (its signature is the course's), so it notes the value in a counter of its thread
 //! (`note`), and `raytrace` moves what is noted to the node whose shader called the helper: when that
 //! shader's ray reaches a hit, and when that shader returns (`TraceContext::shade_hit`). The workbook's own
-//! nodes keep no shading point and pay nothing: the course's glossy mirror builds its cone without the check
+//! nodes keep no shading point and pay nothing: the course's glossy mirror builds its cone without the note
 //! (`GlossyCone::from_scene`), its glossiness being checked from the scene.
 //!
 //! Covered: [`GlossyCone::new`]'s glossiness. The other helpers a shader calls take no parameter with a range
@@ -19,80 +19,40 @@
 
 use std::cell::Cell;
 
-/// A course helper that takes a parameter in a range.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Helper {
-    /// `GlossyCone::new(incoming, n, glossiness)`: glossiness above 0 and at most 1 (slide "Грапави (glossy)
-    /// отражения").
-    GlossyCone,
-}
-
-impl Helper {
-    /// What the report says of the helper: its call, its parameter and the range it takes.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Helper::GlossyCone => {
-                "GlossyCone::new's glossiness, above 0 and at most 1 (outside it the cone, tan((1 - glossiness) * \
-                 pi/2), is unbounded or turned inside out)"
-            }
-        }
-    }
-
-    /// How far `value` lies outside the helper's range: 0 at its edge, infinite for NaN.
-    fn distance(self, value: f32) -> f32 {
-        match self {
-            Helper::GlossyCone if value.is_nan() => f32::INFINITY,
-            Helper::GlossyCone => (-value).max(value - 1.0),
-        }
-    }
-}
-
-/// How often a helper was given a parameter outside its range, and the value furthest outside it.
+/// How often `GlossyCone::new` was given a glossiness outside (0, 1], and the value furthest outside it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OutOfRange {
     /// The calls.
     pub calls: u64,
-    /// The value furthest outside the range (NaN if one was NaN).
+    /// The value furthest from the range's middle, 1/2 (NaN if one was NaN); of two as far, the larger, so
+    /// that the report is the same in whatever order the threads' counts are added.
     pub worst: f32,
 }
 
 impl OutOfRange {
-    /// These calls and `other`'s, for `helper`.
-    pub(crate) fn merged(self, other: OutOfRange, helper: Helper) -> OutOfRange {
-        let worst = if helper.distance(other.worst) > helper.distance(self.worst) { other.worst } else { self.worst };
-        OutOfRange { calls: self.calls + other.calls, worst }
+    /// These calls and `other`'s.
+    pub(crate) fn merged(self, other: OutOfRange) -> OutOfRange {
+        let key = |v: f32| (v - 0.5).abs();
+        let further = key(other.worst).total_cmp(&key(self.worst)).then(other.worst.total_cmp(&self.worst));
+        OutOfRange { calls: self.calls + other.calls, worst: if further.is_gt() { other.worst } else { self.worst } }
     }
 }
 
 thread_local! {
-    /// Whether a helper noted a value since `raytrace` last moved the notes to a node: the one thing the
-    /// trace reads at each hit of a student's node.
-    static NOTED: Cell<bool> = const { Cell::new(false) };
-    /// What was noted (one helper so far).
-    static GLOSSY_CONE: Cell<Option<OutOfRange>> = const { Cell::new(None) };
+    /// What was noted since `raytrace` last moved it to a node.
+    static NOTED: Cell<Option<OutOfRange>> = const { Cell::new(None) };
 }
 
-/// `helper` was given `value`, outside its range: noted for the node whose shader called it.
+/// `GlossyCone::new` was given `glossiness`, outside (0, 1]: noted for the node whose shader called it.
 #[cold]
 #[inline(never)]
-pub(crate) fn note(helper: Helper, value: f32) {
-    let call = OutOfRange { calls: 1, worst: value };
-    match helper {
-        Helper::GlossyCone => GLOSSY_CONE.with(|c| c.set(Some(c.get().map_or(call, |n| n.merged(call, helper))))),
-    }
-    NOTED.with(|n| n.set(true));
+pub(crate) fn note(glossiness: f32) {
+    let call = OutOfRange { calls: 1, worst: glossiness };
+    NOTED.with(|n| n.set(Some(n.get().map_or(call, |noted| noted.merged(call)))));
 }
 
-/// Whether a helper noted a value since the last [`take`].
+/// What was noted since the last call, cleared: the one thing the trace reads at a hit of a student's node.
 #[inline(always)]
-pub(crate) fn noted() -> bool {
-    NOTED.with(Cell::get)
-}
-
-/// What the helpers noted since the last call, cleared.
-#[cold]
-#[inline(never)]
-pub(crate) fn take() -> Vec<(Helper, OutOfRange)> {
-    NOTED.with(|n| n.set(false));
-    GLOSSY_CONE.with(Cell::take).map(|n| (Helper::GlossyCone, n)).into_iter().collect()
+pub(crate) fn take() -> Option<OutOfRange> {
+    NOTED.with(Cell::take)
 }

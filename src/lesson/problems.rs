@@ -1,7 +1,7 @@
 //! What `raytrace` counts going wrong while it traces, by node (beyond the slides): the counts behind the
 //! end-of-run report, which [`crate::lesson::diagnostics`] turns into its lines after the render.
 
-use crate::lesson::helper_ranges::{Helper, OutOfRange};
+use crate::lesson::helper_ranges::OutOfRange;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Where a NaN or infinite colour came from.
@@ -34,9 +34,9 @@ pub struct Problems {
     /// Rays a shader traced with a depth below its own ray's (made with `Ray::new`, which starts at depth 0),
     /// by the node whose shader traced them: `raytrace` counts them at their real depth.
     pub restarted_depth: BTreeMap<Source, u64>,
-    /// Course helpers a shader passed a parameter outside its range at run time, by the node whose shader
-    /// called them and the helper ([`crate::lesson::helper_ranges`]).
-    pub helper_parameters: BTreeMap<(usize, Helper), OutOfRange>,
+    /// Calls of `GlossyCone::new` with a glossiness outside (0, 1], by the node whose shader made them
+    /// ([`crate::lesson::helper_ranges`]).
+    pub glossiness_out_of_range: BTreeMap<usize, OutOfRange>,
     /// The nodes whose shader gave rays of different wavelengths different colours though it says it does not
     /// depend on them (`diagnostics::undeclared_dispersion`, after the render).
     pub undeclared_dispersion: BTreeSet<usize>,
@@ -78,15 +78,12 @@ impl Problems {
         merge(&mut self.long_directions, &other.long_directions);
         merge(&mut self.restarted_depth, &other.restarted_depth);
         self.undeclared_dispersion.extend(&other.undeclared_dispersion);
-        for (&(node, helper), &calls) in &other.helper_parameters {
-            self.note_helper(node, helper, calls);
-        }
+        other.glossiness_out_of_range.iter().for_each(|(&i, &calls)| self.note_glossiness(i, calls));
     }
 
-    /// Adds `calls` of `helper` out of its range to `node`'s.
-    pub(crate) fn note_helper(&mut self, node: usize, helper: Helper, calls: OutOfRange) {
-        let entry = self.helper_parameters.entry((node, helper)).or_insert(OutOfRange { calls: 0, worst: calls.worst });
-        *entry = entry.merged(calls, helper);
+    /// Adds `calls` of `GlossyCone::new` with a glossiness out of range to node `i`'s.
+    pub(crate) fn note_glossiness(&mut self, i: usize, calls: OutOfRange) {
+        self.glossiness_out_of_range.entry(i).and_modify(|n| *n = n.merged(calls)).or_insert(calls);
     }
 
     /// Counts one more of `what` for `node`.

@@ -28,11 +28,40 @@ fn a_glossiness_out_of_range_given_at_run_time_is_named_with_the_worst_value_in_
             assert_eq!(stats.warnings.len(), 1, "{steps:?}, {glossiness}: {:?}", stats.warnings);
             let line = &stats.warnings[0];
             assert!(line.contains("ball (TintedGlossy) (") && line.contains(worst), "{line}");
-            assert!(line.contains("GlossyCone::new's glossiness, above 0 and at most 1"), "{line}");
+            assert!(line.contains("GlossyCone::new a glossiness outside its range, above 0 and at most 1"), "{line}");
             // The floor, which the ball's rays reach and whose own glossiness is in range, is not named.
             assert!(!line.contains("floor"), "{line}");
         }
         let right = rendered(0.9, steps);
         assert!(right.warnings.is_empty(), "{steps:?}: {:?}", right.warnings);
+    }
+}
+
+/// The API page's glossy mirror with its glossiness read per hit, as from a texture: -0.5 on the left half of
+/// the ball, which the rows of pixels meet first, 1.5 on the right, both 0.5 outside the range.
+struct TwoSided;
+
+impl Shader for TwoSided {
+    fn shade(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
+        let glossiness = if info.ip.x < 0.0 { -0.5 } else { 1.5 };
+        TintedGlossy { tint: Color::gray(0.9), glossiness, n: 2 }.shade(ray, info, ctx)
+    }
+}
+
+#[test]
+fn the_worst_value_is_the_same_whatever_the_thread_count() {
+    let mut scene = Scene::new(Camera::look_at(Vector::new(0.0, 10.0, -40.0), Vector::ZERO, 50.0));
+    scene.add(Node::new(Sphere::new(Vector::ZERO, 10.0), TwoSided).named("ball"));
+    scene.environment = Some(sky().unwrap());
+    let warnings = |threads| {
+        let settings = RenderSettings { width: 80, height: 60, spp: 1, threads: Some(threads), ..Default::default() };
+        render(&scene, &settings).unwrap().1.warnings
+    };
+    let one = warnings(1);
+    assert_eq!(one.len(), 1, "{one:?}");
+    // Of two values as far outside the range, the larger is the worst, in whatever order they were met.
+    assert!(one[0].contains("ball (TwoSided) (") && one[0].contains("the worst 1.5"), "{one:?}");
+    for threads in [2, 3] {
+        assert_eq!(warnings(threads), one, "{threads} threads");
     }
 }

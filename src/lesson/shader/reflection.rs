@@ -42,7 +42,7 @@ use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
-use crate::lesson::helper_ranges::{self, Helper};
+use crate::lesson::helper_ranges;
 use crate::lesson::math::{OrthonormalBasis, Vector, faceforward, reflect};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
@@ -221,7 +221,7 @@ impl GlossyCone {
     /// end-of-run report against the node whose shader passed it ([`crate::lesson::helper_ranges`]).
     pub fn new(incoming: Vector, n: Vector, glossiness: f32) -> GlossyCone {
         if !(glossiness > 0.0 && glossiness <= 1.0) {
-            helper_ranges::note(Helper::GlossyCone, glossiness);
+            helper_ranges::note(glossiness);
         }
         GlossyCone::from_scene(incoming, n, glossiness)
     }
