@@ -67,7 +67,7 @@
 
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
-use crate::lesson::helper_ranges::{self, OutOfRange};
+use crate::lesson::helper_ranges;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::{Node, UNIT_NORMAL_TOLERANCE};
 use crate::lesson::problems::{Gains, Problems, Source};
@@ -344,8 +344,8 @@ impl<'a> TraceContext<'a> {
         let scene = self.scene;
         let node = &scene.nodes[i];
         // A helper given a parameter out of its range by the shader whose ray this is (none at the camera).
-        if let Some(calls) = helper_ranges::take() {
-            self.note_helper(self.shading.point.origin.node, calls);
+        if helper_ranges::noted() {
+            self.note_helper(self.shading.point.origin.node);
         }
         if !unit_normal {
             self.note(i, |p| &mut p.bad_normals);
@@ -371,8 +371,8 @@ impl<'a> TraceContext<'a> {
             },
         );
         let color = node.shader.shade(ray, info, self);
-        if let Some(calls) = helper_ranges::take() {
-            self.note_helper(Some(node), calls);
+        if helper_ranges::noted() {
+            self.note_helper(Some(node));
         }
         self.note_non_finite(i, color);
         if self.shading.rays >= 2 && color.is_finite() {
@@ -443,13 +443,14 @@ impl<'a> TraceContext<'a> {
         }
     }
 
-    /// Counts `calls` of a course helper given a parameter out of its range against `node`, or drops them
-    /// for `None` (noted outside a render's shaders: a photon's).
+    /// Counts the calls of a course helper given a parameter out of its range that its thread noted against
+    /// `node`, or drops them for `None` (noted outside a render's shaders: a photon's).
     #[cold]
     #[inline(never)]
-    fn note_helper(&mut self, node: Option<&Node>, calls: OutOfRange) {
+    fn note_helper(&mut self, node: Option<&Node>) {
         let i = node.and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
-        i.into_iter().for_each(|i| self.counters.problems.note_glossiness(i, calls));
+        let calls = helper_ranges::take().zip(i);
+        calls.into_iter().for_each(|(calls, i)| self.counters.problems.note_glossiness(i, calls));
     }
 
     /// Counts one more problem of the kind `what` picks for `node` (kept out of `raytrace`'s code: it is

@@ -85,11 +85,9 @@ impl Problems {
         let directions: BTreeMap<usize, u64> = long.map(|(&i, &n)| (i, n)).collect();
         // A ray started off one of the workbook's shapes, which bound their hit points, that finds it again was
         // started elsewhere by its shader: the advice is the shader's, not the geometry's.
-        let (started_elsewhere, off_surface): (BTreeMap<usize, u64>, BTreeMap<usize, u64>) = problems
-            .self_hits
-            .iter()
-            .map(|(&i, &n)| (i, n))
-            .partition(|&(i, _)| scene.nodes.get(i).is_some_and(|node| node.geometry.bounds_its_hit_points()));
+        let workbooks = |&(i, _): &(usize, u64)| scene.nodes.get(i).is_some_and(|n| n.geometry.bounds_its_hit_points());
+        let (started_elsewhere, off_surface): (BTreeMap<_, _>, BTreeMap<_, _>) =
+            problems.self_hits.clone().into_iter().partition(workbooks);
         for (counts, what, energy) in [
             (&problems.unspawned_rays, UNSPAWNED_RAYS, false),
             (&started_elsewhere, STARTED_ELSEWHERE, false),

@@ -51,8 +51,16 @@ pub(crate) fn note(glossiness: f32) {
     NOTED.with(|n| n.set(Some(n.get().map_or(call, |noted| noted.merged(call)))));
 }
 
-/// What was noted since the last call, cleared: the one thing the trace reads at a hit of a student's node.
+/// Whether anything was noted since the last [`take`]: the one thing the trace reads at a hit of a
+/// student's node (read, not taken, on that path).
 #[inline(always)]
+pub(crate) fn noted() -> bool {
+    NOTED.with(|n| n.get().is_some())
+}
+
+/// What was noted since the last call, cleared.
+#[cold]
+#[inline(never)]
 pub(crate) fn take() -> Option<OutOfRange> {
     NOTED.with(Cell::take)
 }
