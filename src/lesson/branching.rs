@@ -67,6 +67,7 @@
 
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::helper_ranges;
 use crate::lesson::math::{Vector, max_abs};
 use crate::lesson::node::{Node, UNIT_NORMAL_TOLERANCE};
 use crate::lesson::problems::{Gains, Problems, Source};
@@ -284,18 +285,32 @@ impl<'a> ShadingPoint<'a> {
     /// Whether a ray of this point, `ray`, that hit `node` at `hit` found the surface it left again: the same
     /// node, closer to the point it left than the rounding error of a hit point computed by the textbook
     /// quadratic, which loses half the digits to cancellation (`sqrt(EPSILON)` times the point's
-    /// coordinates), and crossing it the way it left it (from the side opposite to the one it went to: it
-    /// started under the surface). A ray correctly started off the surface ([`crate::lesson::ray::Ray::spawn`])
-    /// leaves it by at least the hit's error bound, so only a hit point off the surface by more than its
-    /// error bound (a geometry returning `ray.at(t)` unrefined) lands here. A true second hit of the same
-    /// node is crossed the other way (a ray leaving a closed shape near an edge, after a short chord through
-    /// it, leaves through another face; a concave surface is met again from the side the ray went to).
+    /// coordinates), and the same surface there. A ray correctly started off the surface
+    /// ([`crate::lesson::ray::Ray::spawn`]) leaves it by at least the hit's error bound, so only a hit point
+    /// off the surface by more than its error bound (a geometry returning `ray.at(t)` unrefined), or a ray
+    /// a shader started elsewhere, lands here.
+    ///
+    /// The same surface: on a shape of flat faces (a mesh,
+    /// [`Shape::has_flat_faces`](crate::lesson::geometry::Shape::has_flat_faces)) the same face, told by its
+    /// geometric normal, which a ray started off it to the side it goes to can never meet again; another
+    /// triangle of the mesh met that close is real geometry (a ray reflected about a smooth shading normal
+    /// that dips under a low-resolution mesh's face near its edge and leaves through the next triangle) and
+    /// is shaded. On any other shape, a hit crossed the way the ray left the surface (from the side opposite
+    /// to the one it went to: it started under the surface). A true second hit of such a shape is crossed the
+    /// other way (a ray leaving a closed shape near an edge, after a short chord through it, leaves through
+    /// another face; a concave surface is met again from the side the ray went to). A mesh needs its own
+    /// rule because its geometric normals are turned to the side of its smooth shading normals, which on a
+    /// sharp rim lie on opposite sides of two neighbouring triangles: the crossing test then takes a ray
+    /// leaving one triangle and the solid through the next for one that never left.
     #[inline(always)]
     fn finds_its_own_surface(&self, node: &Node, ray: &Ray, hit: &IntersectionInfo) -> bool {
         let origin = &self.origin;
         origin.node.is_some_and(|n| std::ptr::eq(n, node))
             && hit.distance <= origin.near
-            && ray.dir.dot(origin.normal) * ray.dir.dot(hit.geometric_normal) > 0.0
+            && match node.geometry.has_flat_faces() {
+                true => hit.geometric_normal == origin.normal || hit.geometric_normal == -origin.normal,
+                false => ray.dir.dot(origin.normal) * ray.dir.dot(hit.geometric_normal) > 0.0,
+            }
     }
 }
 
@@ -328,6 +343,10 @@ impl<'a> TraceContext<'a> {
     pub(crate) fn shade_hit(&mut self, i: usize, ray: &Ray, info: &IntersectionInfo, unit_normal: bool) -> Color {
         let scene = self.scene;
         let node = &scene.nodes[i];
+        // A helper given a parameter out of its range by the shader whose ray this is (none at the camera).
+        if helper_ranges::noted() {
+            self.note_helper(self.shading.point.origin.node);
+        }
         if !unit_normal {
             self.note(i, |p| &mut p.bad_normals);
         }
@@ -352,6 +371,9 @@ impl<'a> TraceContext<'a> {
             },
         );
         let color = node.shader.shade(ray, info, self);
+        if helper_ranges::noted() {
+            self.note_helper(Some(node));
+        }
         self.note_non_finite(i, color);
         if self.shading.rays >= 2 && color.is_finite() {
             self.weigh_energy(i, color);
@@ -419,6 +441,16 @@ impl<'a> TraceContext<'a> {
             let node = self.shading.node().and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
             node.into_iter().for_each(|i| self.note(i, |p| &mut p.long_directions));
         }
+    }
+
+    /// Counts the calls of a course helper given a parameter out of its range that its thread noted against
+    /// `node`, or drops them for `None` (noted outside a render's shaders: a photon's).
+    #[cold]
+    #[inline(never)]
+    fn note_helper(&mut self, node: Option<&Node>) {
+        let i = node.and_then(|node| self.scene.nodes.iter().position(|n| std::ptr::eq(n, node)));
+        let calls = helper_ranges::take().zip(i);
+        calls.into_iter().for_each(|(calls, i)| self.counters.problems.note_glossiness(i, calls));
     }
 
     /// Counts one more problem of the kind `what` picks for `node` (kept out of `raytrace`'s code: it is

@@ -6,12 +6,16 @@
 //! - a colour that came back NaN or infinite, at the deepest shading point that made it (the first one
 //!   whose rays all came back finite), or from the environment;
 //! - a ray that found the surface it left again, right where it left it (the same node, closer than
-//!   `sqrt(EPSILON)` times the point's coordinates, and crossed from the side the ray left, see
-//!   [`crate::lesson::branching`]): the shader's mistake if the ray started on the hit point itself (not
-//!   made with `Ray::spawn`), else the geometry's (a hit point off its surface by more than its error bound);
+//!   `sqrt(EPSILON)` times the point's coordinates, and the same face of a mesh or, on another shape,
+//!   crossed from the side the ray left, see [`crate::lesson::branching`]): the shader's mistake if the ray
+//!   started on the hit point itself (not made with `Ray::spawn`) or if the shape is one of the workbook's
+//!   (which put their hit points on the surface), else the geometry's (a hit point off its surface by more
+//!   than its error bound);
 //! - a shader that returned more light than its rays and its light loop brought it (the energy check of
 //!   [`crate::lesson::branching`]: a sum of N rays not divided by N);
 //! - a normal that is not of unit length, or NaN, as the geometry returned it ([`Node::surface`](crate::lesson::node::Node::surface));
+//! - a course helper's parameter a shader passed outside the range it takes (a glossiness outside (0, 1]
+//!   given to `GlossyCone::new`, see [`crate::lesson::helper_ranges`]), with the worst value;
 //! - a ray a shader traced in a direction that is not of unit length (its squared length off by more than
 //!   four times the normal check's tolerance, which a reflection about a normal that passes that check never
 //!   is; a NaN direction is left to the NaN check);
@@ -79,9 +83,15 @@ impl Problems {
         // A direction made from a normal that is not of unit length is the normal's fault, named on its own line.
         let long = problems.long_directions.iter().filter(|(i, _)| !problems.bad_normals.contains_key(i));
         let directions: BTreeMap<usize, u64> = long.map(|(&i, &n)| (i, n)).collect();
+        // A ray started off one of the workbook's shapes, which bound their hit points, that finds it again was
+        // started elsewhere by its shader: the advice is the shader's, not the geometry's.
+        let workbooks = |&(i, _): &(usize, u64)| scene.nodes.get(i).is_some_and(|n| n.geometry.bounds_its_hit_points());
+        let (started_elsewhere, off_surface): (BTreeMap<_, _>, BTreeMap<_, _>) =
+            problems.self_hits.clone().into_iter().partition(workbooks);
         for (counts, what, energy) in [
             (&problems.unspawned_rays, UNSPAWNED_RAYS, false),
-            (&problems.self_hits, SELF_HITS, false),
+            (&started_elsewhere, STARTED_ELSEWHERE, false),
+            (&off_surface, SELF_HITS, false),
             (&gaining, ENERGY_GAINS, true),
             (&problems.bad_normals, BAD_NORMALS, false),
             (&directions, LONG_DIRECTIONS, false),
@@ -98,6 +108,11 @@ impl Problems {
                     })
                 ));
             }
+        }
+        if !problems.glossiness_out_of_range.is_empty() {
+            let calls = problems.glossiness_out_of_range.iter();
+            let calls = calls.map(|(&i, n)| format!("{} ({} calls, the worst {})", node(i), n.calls, n.worst));
+            lines.push(format!("{GLOSSINESS_OUT_OF_RANGE}: {}", calls.collect::<Vec<_>>().join(", ")));
         }
         if !problems.undeclared_dispersion.is_empty() {
             let nodes: Vec<String> = problems.undeclared_dispersion.iter().map(|&i| node(i)).collect();
@@ -139,6 +154,17 @@ const UNSPAWNED_RAYS: &str = "rays a shader started on the hit point itself foun
 const SELF_HITS: &str = "rays started off the surface found it again, right where they left it, and were not \
      followed (black; self-intersection): the geometry's hit point lies off its surface by more than its error \
      bound; put it back on the surface, or widen the bound with IntersectionInfo::with_error";
+
+/// The report's line on rays started off one of the workbook's shapes that found it again: the shader's ray.
+const STARTED_ELSEWHERE: &str = "rays a shader started off the surface found it again, right where they left it, \
+     and were not followed (black; self-intersection): the shape puts its hit point on its surface within its \
+     error bound, so the shader started the ray elsewhere or turned it after starting it; make it with \
+     ray.spawn(info, dir, attenuation) from this hit's info, in the direction it is traced";
+
+/// The report's line on shaders that passed `GlossyCone::new` a glossiness out of its range at run time.
+const GLOSSINESS_OUT_OF_RANGE: &str = "a shader passed GlossyCone::new a glossiness outside its range, above 0 and \
+     at most 1 (a value computed at each hit, a texture's, unclamped): the cone, tan((1 - glossiness) * pi/2), is \
+     unbounded or turned inside out; clamp it to the range before the call";
 
 /// The report's line on shaders that return more light than their rays and light loop brought them.
 const ENERGY_GAINS: &str = "a shader returned more light than its brightest ray and its light loop brought it, in \

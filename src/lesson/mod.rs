@@ -27,6 +27,7 @@ pub mod environment;
 pub mod exercise_hooks;
 pub mod frame;
 pub mod geometry;
+pub mod helper_ranges;
 pub mod light;
 pub mod math;
 pub mod node;

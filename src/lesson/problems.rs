@@ -1,6 +1,7 @@
 //! What `raytrace` counts going wrong while it traces, by node (beyond the slides): the counts behind the
 //! end-of-run report, which [`crate::lesson::diagnostics`] turns into its lines after the render.
 
+use crate::lesson::helper_ranges::OutOfRange;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Where a NaN or infinite colour came from.
@@ -33,6 +34,9 @@ pub struct Problems {
     /// Rays a shader traced with a depth below its own ray's (made with `Ray::new`, which starts at depth 0),
     /// by the node whose shader traced them: `raytrace` counts them at their real depth.
     pub restarted_depth: BTreeMap<Source, u64>,
+    /// Calls of `GlossyCone::new` with a glossiness outside (0, 1], by the node whose shader made them
+    /// ([`crate::lesson::helper_ranges`]).
+    pub glossiness_out_of_range: BTreeMap<usize, OutOfRange>,
     /// The nodes whose shader gave rays of different wavelengths different colours though it says it does not
     /// depend on them (`diagnostics::undeclared_dispersion`, after the render).
     pub undeclared_dispersion: BTreeSet<usize>,
@@ -74,6 +78,12 @@ impl Problems {
         merge(&mut self.long_directions, &other.long_directions);
         merge(&mut self.restarted_depth, &other.restarted_depth);
         self.undeclared_dispersion.extend(&other.undeclared_dispersion);
+        other.glossiness_out_of_range.iter().for_each(|(&i, &calls)| self.note_glossiness(i, calls));
+    }
+
+    /// Adds `calls` of `GlossyCone::new` with a glossiness out of range to node `i`'s.
+    pub(crate) fn note_glossiness(&mut self, i: usize, calls: OutOfRange) {
+        self.glossiness_out_of_range.entry(i).and_modify(|n| *n = n.merged(calls)).or_insert(calls);
     }
 
     /// Counts one more of `what` for `node`.

@@ -39,6 +39,22 @@ impl Shape {
         matches!(self, Shape::Sphere(_) | Shape::Plane(_))
     }
 
+    /// Whether the shape is made of flat faces that a hit tells apart by its geometric normal: a mesh's
+    /// triangles, each of whose normals is computed from its three corners alone, so two hits on one
+    /// triangle have the same geometric normal bit for bit (up to its sign, turned to the shading normal's
+    /// side), and two with different ones are on different triangles.
+    #[inline(always)]
+    pub(crate) fn has_flat_faces(&self) -> bool {
+        matches!(self, Shape::Mesh { .. })
+    }
+
+    /// Whether the shape is one of the workbook's that the enum lists (sphere, plane, mesh): each puts its
+    /// hit point on its surface within the error bound it gives it, so a ray started off that point by
+    /// [`Ray::spawn`](crate::lesson::ray::Ray::spawn) never finds the surface again where it left it.
+    pub(crate) fn bounds_its_hit_points(&self) -> bool {
+        !matches!(self, Shape::Own(_))
+    }
+
     /// The same shape as a scene with `bvh` for its meshes traces it.
     pub(crate) fn with_mesh_bvh(&self, bvh: bool) -> Shape {
         match self {

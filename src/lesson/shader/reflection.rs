@@ -42,6 +42,7 @@ use crate::lesson::beyond::Step;
 use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::IntersectionInfo;
+use crate::lesson::helper_ranges;
 use crate::lesson::math::{OrthonormalBasis, Vector, faceforward, reflect};
 use crate::lesson::ray::Ray;
 use crate::lesson::rng::Rng;
@@ -101,7 +102,7 @@ impl Reflection {
         let steps = ctx.scene.steps;
         let num_samples =
             if ray.depth == 0 { self.num_samples } else { self.num_samples.min(SECONDARY_GLOSSY_SAMPLES) };
-        let cone = GlossyCone::new(ray.dir, n, self.glossiness);
+        let cone = GlossyCone::from_scene(ray.dir, n, self.glossiness);
         // The slide's random points, or, with the step, the mirror's own sampler; the first bounce of a
         // camera ray may share its pixel's set of points (the joint sampler), deeper bounces take their own.
         ctx.counters.steps_reached[Step::DiscSamples as usize] += (self.sampler != DiscSampler::Random) as u64;
@@ -199,7 +200,7 @@ impl CausticCaster for Reflection {
         let dir = if self.glossiness >= 1.0 {
             mirror
         } else {
-            GlossyCone::new(ray.dir, n, self.glossiness).direction(random_unit_disc_point(rng)).unwrap_or(mirror)
+            GlossyCone::from_scene(ray.dir, n, self.glossiness).direction(random_unit_disc_point(rng)).unwrap_or(mirror)
         };
         PhotonScatter::Continue { dir, filter: self.multiplier.get(ray, info) }
     }
@@ -216,8 +217,20 @@ pub struct GlossyCone {
 }
 
 impl GlossyCone {
-    /// The cone for the unit incoming direction `incoming` at a surface whose unit normal `n` faces it.
+    /// The cone for the unit incoming direction `incoming` at a surface whose unit normal `n` faces it. A
+    /// `glossiness` outside (0, 1] (a value a shader reads from a texture, unclamped) is named in the
+    /// end-of-run report against the node whose shader passed it ([`crate::lesson::helper_ranges`]).
     pub fn new(incoming: Vector, n: Vector, glossiness: f32) -> GlossyCone {
+        if !(glossiness > 0.0 && glossiness <= 1.0) {
+            helper_ranges::note(glossiness);
+        }
+        GlossyCone::from_scene(incoming, n, glossiness)
+    }
+
+    /// [`GlossyCone::new`] for the course's glossy mirror, whose glossiness is checked from the scene
+    /// (`crate::app::parameter_ranges`), not at each hit.
+    #[inline(always)]
+    pub(crate) fn from_scene(incoming: Vector, n: Vector, glossiness: f32) -> GlossyCone {
         GlossyCone { incoming, basis: OrthonormalBasis::new(n), scaling: glossy_scaling(glossiness) }
     }
 
