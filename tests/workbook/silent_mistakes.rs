@@ -254,3 +254,25 @@ fn every_example_and_the_pages_homeworks_render_without_a_word() {
         quiet("homework_glossy", &scene, &settings);
     }
 }
+
+/// No false alarm at the sizes a student renders: the API page's homeworks at 640x480 and 1280x960, one
+/// sample per pixel, by default and with `--slide`, print no warning at all (the self-hit check's rim cases
+/// and the energy check's grazing ones come with more pixels; `tests/workbook/smooth_mesh.rs` has the
+/// low-resolution smooth mesh).
+#[test]
+fn the_pages_homeworks_render_without_a_word_at_full_size() {
+    use crate::branching::homework_glossy;
+    use crate::common::parse;
+    use crate::homework::homework_scene;
+    for reading in [&[][..], &["--slide"]] {
+        for (width, height) in [("640", "480"), ("1280", "960")] {
+            let args = [&["--width", width, "--height", height, "--spp", "1"][..], reading].concat();
+            let scene = parse::<homework_scene::Options>(&args).prepare().unwrap();
+            let glossy = parse::<homework_glossy::Options>(&args).prepare().unwrap();
+            for (what, (scene, settings)) in [("homework_scene", scene), ("homework_glossy", glossy)] {
+                let (_, stats) = render(&scene, &settings).unwrap();
+                assert!(stats.warnings.is_empty(), "{what} {args:?}: {:?}", stats.warnings);
+            }
+        }
+    }
+}
