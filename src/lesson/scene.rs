@@ -336,7 +336,7 @@ impl Scene {
 
     /// Whether the camera is farther from the origin than from every node's box, which is when
     /// [`Scene::relative_to_camera`] moves the scene (nearer, world coordinates are as precise).
-    pub fn is_far_from_the_origin(&self) -> bool {
+    pub(crate) fn is_far_from_the_origin(&self) -> bool {
         let camera = self.camera.position;
         let corners = self.nodes.iter().filter_map(Node::bounds).flat_map(|b| b.corners());
         max_abs(camera) > corners.map(|c| max_abs(c - camera)).fold(0.0, f32::max)

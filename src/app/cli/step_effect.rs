@@ -13,6 +13,7 @@ use crate::lesson::beyond::Step;
 use crate::lesson::bitmap::Filter;
 use crate::lesson::environment::Sky;
 use crate::lesson::geometry::Shape;
+use crate::lesson::math::Vector;
 use crate::lesson::node::LINEAR_NODES;
 use crate::lesson::render::RenderSettings;
 use crate::lesson::scene::{Counters, Scene};
@@ -52,8 +53,7 @@ impl Scope {
                 Some("this scene has no photon map (--photons N, in a scene with a mirror or a glass)".into())
             }
             Step::CameraRelative
-                if !scene.is_far_from_the_origin()
-                    && scene.world_position(Default::default()) == Default::default() =>
+                if !scene.is_far_from_the_origin() && scene.world_position(Vector::ZERO) == Vector::ZERO =>
             {
                 Some("the camera is nearer the scene than the origin is, where world coordinates are as precise".into())
             }
