@@ -2,12 +2,12 @@
 //!
 //! The slides' functions, for a student to write. Each module below is one exercise: the slide it comes
 //! from, what the function must do (in the slide's words and formula), its signature, and `todo!()` where
-//! the answer goes. Built for the exercises, the workbook's renderer calls these functions instead of its
-//! own, so every picture it draws is drawn with the student's code:
+//! the answer goes. The grader hands these functions to the workbook's renderer, built for the exercises,
+//! which calls them instead of its own, so every picture it draws is drawn with the student's code:
 //!
 //! ```sh
-//! cargo test --release -p exercises                               # grade every exercise
-//! cargo run --release --features exercises --example fresnel      # a picture drawn with your functions
+//! cargo test --release -p exercises                          # grade every exercise
+//! cargo run --release -p exercises --example draw -- fresnel # a picture drawn with your functions
 //! ```
 //!
 //! The grader checks each exercise against facts (values the slide's formula gives, invariants such as
@@ -34,18 +34,8 @@
 // A blank exercise does not use its arguments yet.
 #![allow(unused_variables, unused_mut)]
 
-/// The course's `Vector`: three `f32`s (glam's SIMD-aligned `Vec3A`, the workbook's own vector type).
-pub type Vector = glam::Vec3A;
-
-/// A colour in linear light: `x` is red, `y` green, `z` blue (the workbook's `Color` holds the same three
-/// numbers). Colours multiply channel by channel: `a * b`.
-pub type Color = glam::Vec3A;
-
-/// Mirror reflection of the incoming direction `i` about the normal `n` (slide "Reflect"):
-/// `i + 2 * dot(-i, n) * n`. Given, not an exercise: [`glossy_cone`] uses it.
-pub fn reflect(i: Vector, n: Vector) -> Vector {
-    i + 2.0 * (-i).dot(n) * n
-}
+// The types of the exercises' signatures, and `reflect`, are the grader's: it checks values of them.
+pub use exercise_grader::{CONE_FILTER_K, Color, Face, Photon, Vector, reflect};
 
 /// The exercises handed out, by name: **the one switch of a hand-out**. For an exercise listed, the renderer
 /// built for the exercises uses the function in this crate and the grader grades it; for one left out, the
@@ -108,7 +98,8 @@ const _: () = {
     }
 };
 
-pub mod hooks;
+pub mod answers;
+pub mod grading;
 
 /// Each exercise's switch, as the renderer and the grader read it: whether it is in [`HANDED_OUT`].
 pub mod handed_out {
@@ -150,28 +141,3 @@ pub mod photon_estimate;
 pub mod refract;
 #[cfg_attr(feature = "solutions", path = "solutions/transform_inverse.rs")]
 pub mod transform_inverse;
-
-/// The six faces of a cube map, in the order the workbook numbers them ([`cube_map`] returns one).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Face {
-    PosX,
-    NegX,
-    PosY,
-    NegY,
-    PosZ,
-    NegZ,
-}
-
-/// A photon found near a shaded point, as [`photon_estimate`] gets it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Photon {
-    /// The squared distance from the shaded point to where the photon landed.
-    pub distance_squared: f32,
-    /// The unit direction the photon travelled in when it landed.
-    pub dir: Vector,
-    /// The photon's power (flux), per channel.
-    pub power: Color,
-}
-
-// The cone filter's constant (see [`photon_estimate`]) is the workbook's own, read from its file.
-include!("../../src/lesson/photon_map/cone_filter_k.rs");

@@ -2,18 +2,13 @@
 //! facts; a blank is named and the others still grade; a wrong answer fails with a message that says what
 //! was expected, of what, and what came out; and every fact check can fail, on a plausible mistake.
 
-#[macro_use]
-#[path = "../../tests/workbook/common/examples.rs"]
-mod examples;
-mod grading;
-
-use exercises::hooks::drawing_and_listing_hooks;
+use exercise_grader::grading::{self, Exercise, Verdict, grade};
+use exercise_grader::hooks::{Hook, answer, drawing_and_listing_hooks, drawing_with_the_workbooks_own};
+use exercise_grader::{facts, report};
+use exercises::grading::workbook;
 use exercises::{Face, Vector};
 use glam::Affine3A;
-use grading::{Exercise, Verdict, facts, grade, workbook};
-use lecture6::app::cli::{Cli, Example};
 use lecture6::app::limits::Limits;
-use lecture6::lesson::exercise_hooks::{Hook, answer, drawing_with_the_workbooks_own};
 use lecture6::lesson::frame::Frame;
 use std::process::{Command, Stdio};
 use std::time::Duration;
@@ -34,6 +29,8 @@ fn with(name: &str, facts: impl Fn() -> facts::Facts + 'static) -> Vec<Exercise>
 /// The renderer's hooks keep one record of the blanks a picture meets, shared by the process: the tests that
 /// draw or answer through them run one at a time.
 fn serial() -> std::sync::MutexGuard<'static, ()> {
+    // The student's functions (here the solutions), as the grader's program registers them.
+    exercises::answers::register();
     static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
     SERIAL.lock().unwrap_or_else(|e| e.into_inner())
 }
@@ -56,7 +53,7 @@ fn fresnel_of_water(i: Vector, n: Vector, _eta1_over_eta2: f32) -> f32 {
 #[test]
 fn a_wrong_fresnel_fails_with_a_message_a_student_understands() {
     let _serial = serial();
-    let exercises = with("fresnel_schlick", || facts::fresnel_schlick(fresnel_of_water));
+    let exercises = with("fresnel_schlick", || facts::fresnel_schlick(&fresnel_of_water));
     let verdicts = grade(&exercises, &pictures_as_expected);
     for (exercise, verdict) in exercises.iter().zip(&verdicts) {
         if exercise.name == "fresnel_schlick" {
@@ -84,7 +81,7 @@ fn blank_refract(_i: Vector, _n: Vector, _eta1_over_eta2: f32) -> Option<Vector>
 #[test]
 fn a_blank_exercise_is_named_and_the_others_still_grade() {
     let _serial = serial();
-    let exercises = with("refract", || facts::refract(blank_refract));
+    let exercises = with("refract", || facts::refract(&blank_refract));
     let verdicts = grade(&exercises, &pictures_as_expected);
     for (exercise, verdict) in exercises.iter().zip(&verdicts) {
         if exercise.name == "refract" {
@@ -273,15 +270,14 @@ fn each_piece_of_the_graders_advice_changes_the_next_verdict_as_it_says() {
 #[test]
 fn the_pictures_table_lists_the_exercises_each_picture_is_drawn_with() {
     let _serial = serial();
-    // Each hook's function in the workbook's src/lesson/exercise_hooks.rs, and the exercise whose switch it
-    // reads.
-    let hooks = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../src/lesson/exercise_hooks.rs"))
-        .expect("the workbook's hooks");
+    // Each answer's method in exercises/src/answers.rs (named as the renderer's hook), and the exercise whose
+    // switch it reads.
+    let answers = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/src/answers.rs")).expect("the answers");
     let exercise_of_hook = |hook: &str| -> String {
-        let function =
-            hooks.split("\npub fn ").find(|f| f.strip_prefix(hook).is_some_and(|rest| rest.starts_with(['(', '<'])));
-        let function = function.unwrap_or_else(|| panic!("no hook function {hook}"));
-        let switch = function.split_once("handed_out::").expect("a switch").1;
+        let method =
+            answers.split("\n    fn ").find(|f| f.strip_prefix(hook).is_some_and(|rest| rest.starts_with(['(', '<'])));
+        let method = method.unwrap_or_else(|| panic!("no answer for the hook {hook}"));
+        let switch = method.split_once("handed_out::").expect("a switch").1;
         switch.chars().take_while(|c| c.is_ascii_uppercase() || *c == '_').collect::<String>().to_lowercase()
     };
     let order: Vec<&str> = workbook().iter().map(|e| e.name).collect();
@@ -292,8 +288,8 @@ fn the_pictures_table_lists_the_exercises_each_picture_is_drawn_with() {
         let mut used: Vec<String> = asked
             .iter()
             .map(|asker| {
-                // `lecture6::lesson::exercise_hooks::bilinear<..>::{{closure}}`: the hook's function's name.
-                let path = asker.split_once("exercise_hooks::").map_or(*asker, |(_, path)| path);
+                // `<exercises::answers::Students as lecture6::...::Answers>::bilinear::{{closure}}`: the hook's name.
+                let path = asker.split_once("Answers>::").map_or(*asker, |(_, path)| path);
                 exercise_of_hook(&path.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect::<String>())
             })
             .collect();
@@ -321,7 +317,7 @@ fn the_hand_out_is_one_list() {
 #[test]
 fn an_exercise_that_panics_fails_and_one_not_handed_out_is_skipped() {
     let _serial = serial();
-    let mut exercises = with("bilinear", || facts::bilinear(|_, _, texel| texel(i64::MAX, 0) * 0.0));
+    let mut exercises = with("bilinear", || facts::bilinear(&|_, _, texel| texel(i64::MAX, 0) * 0.0));
     exercises[1].handed_out = false;
     exercises[2].facts = Box::new(|| panic!("index out of bounds"));
     let verdicts = grade(&exercises, &pictures_as_expected);
@@ -339,14 +335,14 @@ fn with_a_loop_and_a_stack_overflow() -> Vec<Exercise> {
         std::hint::black_box(deeper(std::hint::black_box(depth + 1))) + 1
     }
     let mut exercises = with("refract", || {
-        facts::refract(|_, _, _| {
+        facts::refract(&|_, _, _| {
             loop {
                 std::hint::spin_loop();
             }
         })
     });
     let faceforward = exercises.iter_mut().find(|e| e.name == "faceforward").expect("an exercise of that name");
-    faceforward.facts = Box::new(|| facts::faceforward(|n, _| n * deeper(0) as f32));
+    faceforward.facts = Box::new(|| facts::faceforward(&|n, _| n * deeper(0) as f32));
     exercises
 }
 
@@ -439,20 +435,20 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
     let _serial = serial();
     use exercises::*;
     // Bilinear without the half-texel offset.
-    let message = fails(facts::bilinear(|x, y, texel| bilinear::bilinear(x + 0.5, y + 0.5, texel)));
+    let message = fails(facts::bilinear(&|x, y, texel| bilinear::bilinear(x + 0.5, y + 0.5, texel)));
     assert!(message.contains("centre of texel (2, 1)"), "{message}");
     // The inverse as the transpose: right for a rotation only.
     let message =
-        fails(facts::transform_inverse(|t| Affine3A { matrix3: t.matrix3.transpose(), translation: -t.translation }));
+        fails(facts::transform_inverse(&|t| Affine3A { matrix3: t.matrix3.transpose(), translation: -t.translation }));
     assert!(message.contains("scale by (2, 1.5, 0.9)"), "{message}");
     // The cube map with v growing upwards.
-    let message = fails(facts::cube_map(|d| {
+    let message = fails(facts::cube_map(&|d| {
         let (face, u, v) = cube_map::cube_face_uv(d);
         (face, u, 1.0 - v)
     }));
     assert!(message.contains("(0, 0.5, 1) should land on PosZ at (u, v) = (0.5, 0.25)"), "{message}");
     // The cube map choosing the face by the largest signed component.
-    let message = fails(facts::cube_map(|d| {
+    let message = fails(facts::cube_map(&|d| {
         let (_, u, v) = cube_map::cube_face_uv(d);
         let face = if d.x >= d.y && d.x >= d.z {
             Face::PosX
@@ -465,7 +461,7 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
     }));
     assert!(message.contains("should land in the middle of NegX"), "{message}");
     // The cube map letting x win over a z not much larger.
-    let message = fails(facts::cube_map(|d| {
+    let message = fails(facts::cube_map(&|d| {
         let (face, u, v) = cube_map::cube_face_uv(d);
         let a = d.abs();
         let x_wins = a.x >= a.y && a.x < a.z && a.x >= 0.6 * a.z;
@@ -473,25 +469,25 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
     }));
     assert!(message.contains("should land on the face of its largest component"), "{message}");
     // faceforward the wrong way round.
-    let message = fails(facts::faceforward(|n, i| -faceforward::faceforward(n, i)));
+    let message = fails(facts::faceforward(&|n, i| -faceforward::faceforward(n, i)));
     assert!(message.contains("sees its normal n = (0, 1, 0) as it is"), "{message}");
     // refract with the slide's comment's ratio (eta2 / eta1).
-    let message = fails(facts::refract(|i, n, eta| refract::refract(i, n, 1.0 / eta)));
+    let message = fails(facts::refract(&|i, n, eta| refract::refract(i, n, 1.0 / eta)));
     assert!(message.contains("entering glass of index 1.5 at 45 degrees refracts"), "{message}");
     // refract without total internal reflection.
-    let message = fails(facts::refract(|i, n, eta| refract::refract(i, n, eta).or(Some(Vector::ZERO))));
+    let message = fails(facts::refract(&|i, n, eta| refract::refract(i, n, eta).or(Some(Vector::ZERO))));
     assert!(message.contains("total internal reflection"), "{message}");
     // The layer weight forgetting the layers above.
-    let message = fails(facts::layered_blend(|_, blend| blend));
+    let message = fails(facts::layered_blend(&|_, blend| blend));
     assert!(message.contains("under an opaque one"), "{message}");
     // The slide's Schlick, without the workbook's rule for rays leaving the glass.
-    let message = fails(facts::fresnel_schlick(|i, n, eta| {
+    let message = fails(facts::fresnel_schlick(&|i, n, eta| {
         let f0 = ((1.0 - eta) / (1.0 + eta)).powi(2);
         f0 + (1.0 - f0) * (1.0 + n.dot(i)).powi(5)
     }));
     assert!(message.contains("past the critical angle"), "{message}");
     // The exact equations with rs only.
-    let message = fails(facts::fresnel_exact(|i, n, eta| {
+    let message = fails(facts::fresnel_exact(&|i, n, eta| {
         let cos_i = -n.dot(i);
         let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
         if sin2_t >= 1.0 {
@@ -503,31 +499,28 @@ fn every_fact_check_fails_on_a_plausible_mistake() {
     assert!(message.contains("Brewster"), "{message}");
     // A random radius and angle: points crowd at the centre.
     let message = fails(facts::glossy_disc(
-        |random| {
+        &|random| {
             let (r, phi) = (random(), 2.0 * std::f32::consts::PI * random());
             (r * phi.cos(), r * phi.sin())
         },
-        glossy_disc::concentric_disc,
+        &glossy_disc::concentric_disc,
     ));
     assert!(message.contains("From the random numbers 0.5, 0.75"), "{message}");
-    let message = fails(facts::glossy_disc(
-        |random| glossy_disc::random_unit_disc_point(random),
-        |u, v| {
-            let (r, phi) = (u.sqrt(), 2.0 * std::f32::consts::PI * v);
-            (r * phi.cos(), r * phi.sin())
-        },
-    ));
+    let message = fails(facts::glossy_disc(&|random| glossy_disc::random_unit_disc_point(random), &|u, v| {
+        let (r, phi) = (u.sqrt(), 2.0 * std::f32::consts::PI * v);
+        (r * phi.cos(), r * phi.sin())
+    }));
     assert!(message.contains("concentric mapping the centre of the square"), "{message}");
     // A glossy cone that lets rays go under the surface.
-    let message = fails(facts::glossy_cone(glossy_cone::glossy_scaling, |i, n, t, b, s, (x, y)| {
+    let message = fails(facts::glossy_cone(&glossy_cone::glossy_scaling, &|i, n, t, b, s, (x, y)| {
         Some(reflect(i, (n + x * s * t + y * s * b).normalize()))
     }));
     assert!(message.contains("goes under the surface"), "{message}");
     // A glossy scaling that is linear rather than the slide's tangent.
-    let message = fails(facts::glossy_cone(|g| 1.0 - g, glossy_cone::glossy_direction));
+    let message = fails(facts::glossy_cone(&|g| 1.0 - g, &glossy_cone::glossy_direction));
     assert!(message.contains("tan((1 - glossiness) * pi/2) at glossiness 0.95"), "{message}");
     // The photon estimate without the cone filter: a plain sum over the area.
-    let message = fails(facts::photon_estimate(|photons: &[Photon], r2, n| {
+    let message = fails(facts::photon_estimate(&|photons: &[Photon], r2, n| {
         photons.iter().filter(|p| p.dir.dot(n) < 0.0).map(|p| p.power).sum::<Color>() / (std::f32::consts::PI * r2)
     }));
     assert!(message.contains("counts fully"), "{message}");
@@ -544,21 +537,9 @@ fn the_exercises_types_agree_with_the_workbooks() {
     }
 }
 
-/// The example called `name`, rendered as its binary would with the options `args`.
+/// The example called `name` rendered with the options `args`, with the student's functions.
 fn render(name: &str, args: &[&str]) -> Frame {
-    fn render_as<E: Example>(name: &str, args: &[&str]) -> Frame {
-        let cli = Cli::<E>::parse_args(name, args.iter().copied()).expect("the options parse");
-        cli.render().expect("the example renders").0
-    }
-    macro_rules! by_name {
-        ($($example:ident),*) => {
-            match name {
-                $(stringify!($example) => render_as::<examples::$example::Options>(name, args),)*
-                _ => panic!("the workbook has no example `{name}`"),
-            }
-        };
-    }
-    every_example!(by_name)
+    report::render(name, args).expect("the example renders")
 }
 
 /// The example called `name`, rendered small (160x120, 4 samples a pixel).

@@ -77,7 +77,7 @@ impl Bitmap {
             }
             Filter::Bilinear => {
                 beyond!(TexelFilter);
-                exercise!(bilinear(x, y, |i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
+                exercise!(bilinear(x, y, &|i, j| at(wrap.0.texel(i, self.width), wrap.1.texel(j, self.height))));
                 // Texel centres sit at half-integer coordinates.
                 let (i0, i1, tx) = wrap.0.neighbours(x - 0.5, self.width);
                 let (j0, j1, ty) = wrap.1.neighbours(y - 0.5, self.height);

@@ -3,8 +3,8 @@
 //! Each slide function an exercise covers starts with the line `exercise!(hook(arguments));`
 //! (`src/lesson/exercise_hooks.rs`), and what follows it in its block is the workbook's own version: the
 //! answer. For an exercise handed out, that rest of the block becomes `todo!("<exercise>")`, so the function
-//! is the student's alone (the students' copy is built with the feature `exercises`, which routes it to
-//! `exercises/src/<exercise>.rs`). The statement and its block are found in the file's syntax tree, not by
+//! is the student's alone (the grader and `draw`, built for the exercises, route it to
+//! `exercises/src/<exercise>.rs` through `exercises/src/answers.rs`). The statement and its block are found in the file's syntax tree, not by
 //! searching its text, and only that stretch of text is replaced: the rest of the file, its comments
 //! included, is kept as it was. What only the workbook's own version used goes with it ([`prune`]): the
 //! file's private functions no one calls any more (the bilinear filter's neighbour finding) and the imports
@@ -14,14 +14,14 @@ use proc_macro2::LineColumn;
 use std::collections::BTreeMap;
 use syn::visit::Visit;
 
-/// Which exercise each hook of `src/lesson/exercise_hooks.rs` (the text `hooks`) belongs to: the hook
-/// function's name, and the exercise whose switch (`handed_out::REFRACT`) it reads, in lower case.
-pub fn hooks(hooks: &str) -> BTreeMap<String, String> {
+/// Which exercise each hook of the renderer belongs to, read from the exercises' `exercises/src/answers.rs`
+/// (the text `answers`): the name of each method (the hook's), and the exercise whose switch
+/// (`handed_out::REFRACT`) it reads, in lower case.
+pub fn hooks(answers: &str) -> BTreeMap<String, String> {
     let mut found = BTreeMap::new();
-    let mut functions = hooks.split("\npub fn ").skip(1);
-    for function in functions.by_ref() {
-        let name: String = function.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
-        if let Some((_, rest)) = function.split_once("handed_out::") {
+    for method in answers.split("\n    fn ").skip(1) {
+        let name: String = method.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+        if let Some((_, rest)) = method.split_once("handed_out::") {
             let switch: String = rest.chars().take_while(|c| c.is_ascii_uppercase() || *c == '_').collect();
             if !switch.is_empty() {
                 found.insert(name, switch.to_lowercase());
@@ -228,9 +228,11 @@ fn line_indent(source: &str, at: usize) -> &str {
 mod tests {
     use super::*;
 
-    const HOOKS: &str = "//! The hooks.\n\n/// [`refract`].\npub fn refract(i: Vector) -> Option<Vector> {\n    \
-        static HOOK: Hook = Hook::new();\n    answer(&HOOK, handed_out::REFRACT, || exercises::refract::refract(i))\n}\n\n\
-        /// Schlick.\npub fn fresnel(i: Vector) -> Option<f32> {\n    answer(&HOOK, handed_out::FRESNEL_SCHLICK, || 0.0)\n}\n";
+    const HOOKS: &str = "//! The answers.\n\nimpl Answers for Students {\n    /// [`refract`].\n    \
+        fn refract(&self, i: Vector) -> Option<Vector> {\n        static HOOK: Hook = Hook::new();\n        \
+        answer(&HOOK, handed_out::REFRACT, || crate::refract::refract(i))\n    }\n\n    /// Schlick.\n    \
+        fn fresnel(&self, i: Vector) -> Option<f32> {\n        answer(&HOOK, handed_out::FRESNEL_SCHLICK, || 0.0)\n    \
+        }\n}\n";
 
     #[test]
     fn each_hook_belongs_to_the_exercise_whose_switch_it_reads() {

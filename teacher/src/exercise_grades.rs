@@ -1,8 +1,9 @@
-//! A student's exercises graded as the student grades them (`cargo test -p exercises`), in a students' copy
-//! of the workbook ([`crate::hand_out`]) made once for the class: each student's files are put in place of
-//! the blanks, the grader runs with its per-exercise time limit, and the blanks are put back for the next
-//! student. The copy is built in the default (dev) profile, whose incremental builds take a few seconds
-//! after the first (docs/exercises.md).
+//! A student's exercises graded as the student grades them (`cargo test --release -p exercises`), in a
+//! students' copy of the workbook ([`crate::hand_out`]) made once for the class: each student's files are
+//! put in place of the blanks, the grader runs with its per-exercise time limit, and the blanks are put back
+//! for the next student. The copy is built in the release profile, against the workbook's built
+//! dependencies; the renderer does not depend on the students' crate, so each student's files compile only
+//! that crate and the grader's small program again, in about a second (docs/exercises.md).
 
 use crate::class_package::{cargo, first_error, run_logged};
 use crate::hand_out::hand_out;
@@ -120,7 +121,7 @@ impl GradingCopy {
     fn grader(&self, subcommand: &[&str]) -> Command {
         let mut command = cargo(subcommand);
         command
-            .args(["--message-format", "short", "-p", "exercises", "--test", "grade", "--manifest-path"])
+            .args(["--release", "--message-format", "short", "-p", "exercises", "--test", "grade", "--manifest-path"])
             .arg(self.dir.join("Cargo.toml"))
             .env("CARGO_TARGET_DIR", &self.target);
         command

@@ -34,8 +34,11 @@ pub fn readme(workbook_readme: &str, handed_out: &[String]) -> String {
          \n\
          {files}\n\
          \n\
-         The renderer draws every picture with your functions: `cargo run --release --example refract` renders\n\
-         with them (`out/refract.png`), and stops at the `todo!()` of one not written yet.\n\
+         The grader draws the workbook's pictures with your functions. To draw one yourself,\n\
+         `cargo run --release -p exercises --example draw -- refract` renders the example `refract` with them\n\
+         (`out/refract.png`, with any of the example's options after its name), and stops at the `todo!()` of one\n\
+         not written yet. The workbook's own `cargo run --release --example refract` does not use them: this copy\n\
+         does not hold the workbook's version of your exercises, so it stops at their `todo!()`.\n\
          \n\
          ## Reading a verdict\n\
          \n\

@@ -9,7 +9,7 @@
 //! A second test grades exercise files: a right answer, one that loops forever, one that does not compile.
 //!
 //! They build real submissions against the workbook (a few seconds each, after one build of the library for
-//! the class; the exercises' grader in a handed-out copy, once, in the dev profile) and wait out time
+//! the class; the exercises' grader in a handed-out copy, once, in the release profile) and wait out time
 //! limits, so they are run on their own: `cargo test --release -p teacher --test class -- --ignored`
 //! (`.ci/run` does). They run one at a time: they share the target folder.
 
@@ -168,9 +168,8 @@ fn exercise_files_are_graded_in_a_handed_out_copy_each_under_its_time_limit() {
     let class = dir.path().join("exercises");
     let workbook = teacher::workbook();
     let blank = std::fs::read_to_string(workbook.join("exercises/src/refract.rs")).expect("the blank");
-    let solution = std::fs::read_to_string(workbook.join("exercises/src/solutions/refract.rs")).expect("the answer");
     let submissions = [
-        ("judy/refract.rs", solution),
+        ("judy/refract.rs", submissions_solution(workbook)),
         ("kim/exercises/src/refract.rs", blank.replace("todo!(\"refract\")", "loop {}")),
         ("lee/src/refract.rs", blank.replace("todo!(\"refract\")", "i * eta1_over_eta2 +")),
     ];
@@ -191,6 +190,43 @@ fn exercise_files_are_graded_in_a_handed_out_copy_each_under_its_time_limit() {
     assert!(row("lee")["exercises_passed"].contains(": error"), "{:?}", row("lee"));
     // No example, nothing built or run for them.
     assert!(rows.values().all(|fields| fields["built"].is_empty() && fields["run"].is_empty()));
+    // Each student's files compiled the exercises' crate and the grader again, and never the library: it
+    // does not depend on the students' crate.
+    let logs: Vec<String> = std::fs::read_dir(out.join("logs"))
+        .expect("the logs")
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".exercises.txt"))
+        .map(|e| std::fs::read_to_string(e.path()).expect("a log"))
+        .collect();
+    assert_eq!(logs.len(), 3);
+    for log in &logs {
+        assert!(log.contains("Compiling exercises"), "{log}");
+        assert!(!log.contains("Compiling lecture6"), "{log}");
+    }
+    // In that copy, `draw` renders an example with the student's function, and stops at the blank.
+    let copy = out.join("grading");
+    let draw = |answer: &str| {
+        std::fs::write(copy.join("exercises/src/refract.rs"), answer).expect("the student's file");
+        Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+            .args(["run", "-q", "--release", "-p", "exercises", "--example", "draw", "--manifest-path"])
+            .arg(copy.join("Cargo.toml"))
+            .args(["--", "refract", "--width", "32", "--height", "24", "--spp", "1", "--output"])
+            .arg(dir.path().join("drawn.png"))
+            .env("CARGO_TARGET_DIR", teacher::target_folder(workbook))
+            .output()
+            .expect("cargo runs")
+    };
+    let drawn = draw(&submissions_solution(workbook));
+    assert!(drawn.status.success(), "{}", String::from_utf8_lossy(&drawn.stderr));
+    assert!(dir.path().join("drawn.png").exists());
+    let blank_drawn = draw(&blank);
+    assert!(!blank_drawn.status.success());
+    assert!(String::from_utf8_lossy(&blank_drawn.stderr).contains("not yet implemented: refract"));
+}
+
+/// The reference solution of `refract`, a right answer.
+fn submissions_solution(workbook: &Path) -> String {
+    std::fs::read_to_string(workbook.join("exercises/src/solutions/refract.rs")).expect("the answer")
 }
 
 /// The gradebook's rows by student, each as its fields by column.

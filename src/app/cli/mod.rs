@@ -30,4 +30,4 @@ pub use controls::controls;
 pub use defaults::{DEFAULTS_MARK, defaults_line};
 pub use example::{Cli, Example};
 pub use options::{CommonArgs, PhotonArgs, whole_number};
-pub use run::{one_line, render_and_report, render_for_test, run};
+pub use run::{one_line, render_and_report, render_for_test, run, run_as};

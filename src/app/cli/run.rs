@@ -31,9 +31,14 @@ fn program_name() -> String {
 /// with a reference if asked, print one summary line): the whole `main` of every example. The example's
 /// name, which names its default output `out/<name>.png`, is its binary's.
 pub fn run<E: Example>() -> ExitCode {
+    run_as::<E>(&program_name(), std::env::args_os().skip(1).collect())
+}
+
+/// [`run`] under the example's name `name`, with the options `argv`: a program that runs the workbook's
+/// examples by name (the exercises' `draw`) writes `out/<name>.png` as the example's own binary does.
+pub fn run_as<E: Example>(name: &str, argv: Vec<std::ffi::OsString>) -> ExitCode {
     remove_unfinished_on_signals();
-    let name = program_name();
-    let argv: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    let name = name.to_string();
     let args = match Cli::<E>::parse_args(&name, argv.iter().cloned()) {
         Ok(args) => args,
         // --help shows the defaults the example's scene sets; --help and --version print to stdout and succeed.

@@ -236,7 +236,7 @@ impl PhotonMap {
             let Some(r2) = self.nearest_disc(grid, p, found) else {
                 return Color::BLACK;
             };
-            exercise!(irradiance_estimate(found.iter().map(|f| (f.d2(), &self.photons[f.index()])), r2, n));
+            exercise!(irradiance_estimate(&mut found.iter().map(|f| (f.d2(), &self.photons[f.index()])), r2, n));
             self.cone_filtered(found, n, r2, recorder)
         })
     }

@@ -1,14 +1,10 @@
-//! The grader: each exercise's facts (see [`facts`]), then the picture of the workbook's example that uses
-//! it, and a verdict per exercise. Shared by the report (`exercises/tests/grade.rs`) and the grader's own tests
-//! (`exercises/tests/grader.rs`), which hand it wrong or blank functions and pretend pictures.
+//! The grading: each exercise's facts (see [`facts`](crate::facts)), then the picture of the workbook's example
+//! that uses it, and a verdict per exercise. Shared by the [`report`](crate::report) and the grader's own
+//! tests (`exercises/tests/grader.rs`), which hand it wrong or blank functions and pretend pictures.
 
-#![allow(dead_code)] // each test binary uses its own part of this module
-
-pub mod facts;
-
-use facts::Facts;
+use crate::facts::Facts;
+use crate::hooks::drawing_around_blanks;
 use lecture6::app::limits::{self, Ending, Limits};
-use lecture6::lesson::exercise_hooks::drawing_around_blanks;
 use std::any::Any;
 use std::collections::HashMap;
 use std::fmt;
@@ -18,7 +14,8 @@ use std::time::Duration;
 
 /// One exercise: its name (its file is `exercises/src/<name>.rs`), whether it is handed out, whether the
 /// workbook's own function for it is taken out of this copy (`exercises::TAKEN_OUT`), how its facts are
-/// checked, and the example whose default picture checks it.
+/// checked, and the example whose default picture checks it. The exercises' crate lists them
+/// (`exercises::grading::workbook`).
 pub struct Exercise {
     pub name: &'static str,
     pub handed_out: bool,
@@ -30,11 +27,10 @@ pub struct Exercise {
 impl Exercise {
     pub fn new(
         name: &'static str,
-        handed_out: bool,
+        (handed_out, taken_out): (bool, bool),
         facts: impl Fn() -> Facts + 'static,
         example: &'static str,
     ) -> Exercise {
-        let taken_out = exercises::listed(exercises::TAKEN_OUT, name);
         Exercise { name, handed_out, taken_out, facts: Box::new(facts), example }
     }
 }
@@ -73,69 +69,6 @@ pub const PICTURES: &[(&str, &[&str])] = &[
 /// The exercises the picture of `example` is drawn with ([`PICTURES`]; none for an example not in it).
 pub fn uses(example: &str) -> &'static [&'static str] {
     PICTURES.iter().find(|(name, _)| *name == example).map_or(&[], |(_, uses)| uses)
-}
-
-/// The workbook's exercises, in the order of the slides, checked with the functions in the `exercises` crate.
-pub fn workbook() -> Vec<Exercise> {
-    use exercises::*;
-    vec![
-        Exercise::new(
-            "bilinear",
-            handed_out::BILINEAR,
-            || facts::bilinear(|x, y, texel| bilinear::bilinear(x, y, texel)),
-            "bitmap_textures",
-        ),
-        Exercise::new(
-            "transform_inverse",
-            handed_out::TRANSFORM_INVERSE,
-            || facts::transform_inverse(transform_inverse::inverse),
-            "model_transform",
-        ),
-        Exercise::new("cube_map", handed_out::CUBE_MAP, || facts::cube_map(cube_map::cube_face_uv), "fresnel"),
-        Exercise::new(
-            "faceforward",
-            handed_out::FACEFORWARD,
-            || facts::faceforward(faceforward::faceforward),
-            "reflect_v02",
-        ),
-        Exercise::new("refract", handed_out::REFRACT, || facts::refract(refract::refract), "refract"),
-        Exercise::new(
-            "layered_blend",
-            handed_out::LAYERED_BLEND,
-            || facts::layered_blend(layered_blend::layer_weight),
-            "layered",
-        ),
-        Exercise::new(
-            "fresnel_schlick",
-            handed_out::FRESNEL_SCHLICK,
-            || facts::fresnel_schlick(fresnel_schlick::fresnel),
-            "fresnel",
-        ),
-        Exercise::new(
-            "fresnel_exact",
-            handed_out::FRESNEL_EXACT,
-            || facts::fresnel_exact(fresnel_exact::fresnel_exact),
-            "layered",
-        ),
-        Exercise::new(
-            "glossy_disc",
-            handed_out::GLOSSY_DISC,
-            || facts::glossy_disc(|random| glossy_disc::random_unit_disc_point(random), glossy_disc::concentric_disc),
-            "glossy",
-        ),
-        Exercise::new(
-            "glossy_cone",
-            handed_out::GLOSSY_CONE,
-            || facts::glossy_cone(glossy_cone::glossy_scaling, glossy_cone::glossy_direction),
-            "glossy",
-        ),
-        Exercise::new(
-            "photon_estimate",
-            handed_out::PHOTON_ESTIMATE,
-            || facts::photon_estimate(photon_estimate::irradiance_estimate),
-            "photon_map",
-        ),
-    ]
 }
 
 /// What the grader says of one exercise.

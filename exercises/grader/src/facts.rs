@@ -2,7 +2,7 @@
 //! of energy. Each check takes the function to check as an argument (so the grader's own tests can hand it a
 //! wrong one) and returns the first wrong value as a sentence a student can act on.
 
-use exercises::{CONE_FILTER_K, Color, Face, Photon, Vector};
+use crate::{CONE_FILTER_K, Color, Face, Photon, Vector};
 use glam::{Affine3A, EulerRot, Quat, Vec3};
 use std::f32::consts::{FRAC_PI_4, PI};
 use std::fmt::Display;
@@ -45,7 +45,8 @@ impl Stream {
     pub fn new(seed: u32) -> Stream {
         Stream(seed.max(1))
     }
-    pub fn next(&mut self) -> f32 {
+    /// The next number.
+    pub fn next_number(&mut self) -> f32 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 17;
         self.0 ^= self.0 << 5;
@@ -53,8 +54,8 @@ impl Stream {
     }
     /// A direction drawn evenly over the sphere.
     pub fn direction(&mut self) -> Vector {
-        let z = 1.0 - 2.0 * self.next();
-        let phi = 2.0 * PI * self.next();
+        let z = 1.0 - 2.0 * self.next_number();
+        let phi = 2.0 * PI * self.next_number();
         let s = (1.0 - z * z).max(0.0).sqrt();
         Vector::new(s * phi.cos(), s * phi.sin(), z)
     }
@@ -69,8 +70,11 @@ fn floor_ray(degrees: f32) -> (Vector, Vector) {
 // ---------------------------------------------------------------------------------------------------------
 // Bitmap textures
 
+/// A bilinear filter: `(x, y, texel)`, with `texel(i, j)` the wrapped texel.
+pub type Bilinear = dyn Fn(f32, f32, &dyn Fn(i64, i64) -> Color) -> Color;
+
 /// The bilinear filter.
-pub fn bilinear(bilinear: impl Fn(f32, f32, &dyn Fn(i64, i64) -> Color) -> Color) -> Facts {
+pub fn bilinear(bilinear: &Bilinear) -> Facts {
     // An image whose texels are (column, row, column * row): bilinear filtering reproduces it exactly
     // between the centres, so the colour at (x, y) is the one at (x - 0.5, y - 0.5).
     let ramp = |i: i64, j: i64| Color::new(i as f32, j as f32, (i * j) as f32);
@@ -101,7 +105,7 @@ pub fn bilinear(bilinear: impl Fn(f32, f32, &dyn Fn(i64, i64) -> Color) -> Color
     )?;
     let mut stream = Stream::new(7);
     for _ in 0..200 {
-        let (x, y) = (-3.0 + 13.0 * stream.next(), -3.0 + 13.0 * stream.next());
+        let (x, y) = (-3.0 + 13.0 * stream.next_number(), -3.0 + 13.0 * stream.next_number());
         expect_vector_near(
             format!(
                 "On the texels (column, row, column * row), which bilinear filtering reproduces exactly, the colour \
@@ -119,7 +123,7 @@ pub fn bilinear(bilinear: impl Fn(f32, f32, &dyn Fn(i64, i64) -> Color) -> Color
 // Model transform
 
 /// The inverse of an affine transform.
-pub fn transform_inverse(inverse: impl Fn(Affine3A) -> Affine3A) -> Facts {
+pub fn transform_inverse(inverse: &dyn Fn(Affine3A) -> Affine3A) -> Facts {
     let slide_scale = Vec3::new(2.0, 1.5, 0.9);
     let slide_rotation = Quat::from_euler(EulerRot::YXZ, 0.8, 0.1, 0.2);
     let slide_translation = Vec3::new(3.3, 0.0, 18.1);
@@ -204,7 +208,7 @@ fn face_axes(face: Face) -> (Vector, Vector, Vector) {
 }
 
 /// The cube map's face and texel choice.
-pub fn cube_map(cube_face_uv: impl Fn(Vector) -> (Face, f32, f32)) -> Facts {
+pub fn cube_map(cube_face_uv: &dyn Fn(Vector) -> (Face, f32, f32)) -> Facts {
     let faces = [Face::PosX, Face::NegX, Face::PosY, Face::NegY, Face::PosZ, Face::NegZ];
     for face in faces {
         let centre = face_axes(face).0;
@@ -275,7 +279,7 @@ pub fn cube_map(cube_face_uv: impl Fn(Vector) -> (Face, f32, f32)) -> Facts {
 // Reflection & refraction
 
 /// `faceforward`.
-pub fn faceforward(faceforward: impl Fn(Vector, Vector) -> Vector) -> Facts {
+pub fn faceforward(faceforward: &dyn Fn(Vector, Vector) -> Vector) -> Facts {
     let n = Vector::Y;
     expect_vector_near(
         "A ray coming down onto a floor (i = (0, -1, 0)) sees its normal n = (0, 1, 0) as it is: faceforward(n, i)",
@@ -315,7 +319,7 @@ pub fn faceforward(faceforward: impl Fn(Vector, Vector) -> Vector) -> Facts {
 }
 
 /// `refract`.
-pub fn refract(refract: impl Fn(Vector, Vector, f32) -> Option<Vector>) -> Facts {
+pub fn refract(refract: &dyn Fn(Vector, Vector, f32) -> Option<Vector>) -> Facts {
     let (n, i) = floor_ray(0.0);
     match refract(i, n, 1.0 / 1.5) {
         Some(t) => expect_vector_near(
@@ -408,7 +412,7 @@ pub fn refract(refract: impl Fn(Vector, Vector, f32) -> Option<Vector>) -> Facts
 // Layered shader
 
 /// The layer weight.
-pub fn layered_blend(layer_weight: impl Fn(Color, Color) -> Color) -> Facts {
+pub fn layered_blend(layer_weight: &dyn Fn(Color, Color) -> Color) -> Facts {
     expect_vector_near(
         "The top layer, opaque (blend 1), covers everything: its weight",
         layer_weight(Color::ONE, Color::ONE),
@@ -428,7 +432,7 @@ pub fn layered_blend(layer_weight: impl Fn(Color, Color) -> Color) -> Facts {
         1e-6,
     )?;
     let mut stream = Stream::new(9);
-    let color = |stream: &mut Stream| Color::new(stream.next(), stream.next(), stream.next());
+    let color = |stream: &mut Stream| Color::new(stream.next_number(), stream.next_number(), stream.next_number());
     for count in 1..=5 {
         for _ in 0..40 {
             // Bottom to top: (colour, blend).
@@ -497,7 +501,7 @@ pub const SCHLICK_ENTERING_GLASS: [f32; 90] = [
 pub const SCHLICK_LEAVING_GLASS_AT_30: f32 = 0.044270;
 
 /// Schlick's approximation.
-pub fn fresnel_schlick(fresnel: impl Fn(Vector, Vector, f32) -> f32) -> Facts {
+pub fn fresnel_schlick(fresnel: &dyn Fn(Vector, Vector, f32) -> f32) -> Facts {
     let entering = 1.0 / 1.5;
     let (n, i) = floor_ray(0.0);
     expect_near(
@@ -586,7 +590,7 @@ pub const EXACT_ENTERING_GLASS: [f32; 90] = [
 pub const EXACT_AT_BREWSTER: f32 = 0.073964;
 
 /// The exact Fresnel equations.
-pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Facts {
+pub fn fresnel_exact(fresnel_exact: &dyn Fn(Vector, Vector, f32) -> f32) -> Facts {
     let entering = 1.0 / 1.5;
     let (n, i) = floor_ray(0.0);
     expect_near(
@@ -652,10 +656,13 @@ pub fn fresnel_exact(fresnel_exact: impl Fn(Vector, Vector, f32) -> f32) -> Fact
 // ---------------------------------------------------------------------------------------------------------
 // Glossy reflections
 
+/// The slide's random point in the unit disc, drawing from `random()`.
+pub type RandomDiscPoint = dyn Fn(&mut dyn FnMut() -> f32) -> (f32, f32);
+
 /// Points in the unit disc: the slide's random one and the concentric mapping.
 pub fn glossy_disc(
-    random_unit_disc_point: impl Fn(&mut dyn FnMut() -> f32) -> (f32, f32),
-    concentric_disc: impl Fn(f32, f32) -> (f32, f32),
+    random_unit_disc_point: &RandomDiscPoint,
+    concentric_disc: &dyn Fn(f32, f32) -> (f32, f32),
 ) -> Facts {
     let from = |numbers: &[f32]| {
         let mut numbers = numbers.iter().copied();
@@ -684,7 +691,7 @@ pub fn glossy_disc(
     let count = 40_000;
     let (mut sum, mut sum_r2, mut inner, mut quadrants) = (Vector::ZERO, 0.0, 0, [0u32; 4]);
     for _ in 0..count {
-        let (x, y) = random_unit_disc_point(&mut || stream.next());
+        let (x, y) = random_unit_disc_point(&mut || stream.next_number());
         let r2 = x * x + y * y;
         if r2 > 1.0 + 1e-6 {
             return Err(format!("random_unit_disc_point gave ({x:.4}, {y:.4}), outside the unit disc"));
@@ -789,8 +796,8 @@ pub fn glossy_disc(
 
 /// The glossy cone: the scaling and the direction.
 pub fn glossy_cone(
-    glossy_scaling: impl Fn(f32) -> f32,
-    glossy_direction: impl Fn(Vector, Vector, Vector, Vector, f32, (f32, f32)) -> Option<Vector>,
+    glossy_scaling: &dyn Fn(f32) -> f32,
+    glossy_direction: &dyn Fn(Vector, Vector, Vector, Vector, f32, (f32, f32)) -> Option<Vector>,
 ) -> Facts {
     // tan((1 - glossiness) * pi/2) at the slides' glossinesses.
     for (glossiness, scaling) in [(1.0f32, 0.0), (0.95, 0.0787017), (0.8, 0.3249197), (0.5, 1.0)] {
@@ -854,12 +861,12 @@ pub fn glossy_cone(
     }
     let mut stream = Stream::new(17);
     for _ in 0..500 {
-        let (x, y) = (2.0 * stream.next() - 1.0, 2.0 * stream.next() - 1.0);
+        let (x, y) = (2.0 * stream.next_number() - 1.0, 2.0 * stream.next_number() - 1.0);
         let d = stream.direction();
         let incoming = if d.y < 0.0 { d } else { Vector::new(d.x, -d.y, d.z) };
-        let scaling = 2.0 * stream.next();
+        let scaling = 2.0 * stream.next_number();
         let tilted = (n + x * scaling * t + y * scaling * b).normalize();
-        let reflected = exercises::reflect(incoming, tilted);
+        let reflected = crate::reflect(incoming, tilted);
         let got = glossy_direction(incoming, n, t, b, scaling, (x, y));
         let case =
             format!("the incoming ray {}, scaling {scaling:.4}, the disc point ({x:.4}, {y:.4})", show(incoming));
@@ -894,7 +901,7 @@ pub fn glossy_cone(
 // Photon mapping
 
 /// The photon map's estimate.
-pub fn photon_estimate(irradiance_estimate: impl Fn(&[Photon], f32, Vector) -> Color) -> Facts {
+pub fn photon_estimate(irradiance_estimate: &dyn Fn(&[Photon], f32, Vector) -> Color) -> Facts {
     let n = Vector::Y;
     let down = -Vector::Y;
     let area_of_the_filter = (1.0 - 2.0 / (3.0 * CONE_FILTER_K)) * PI;

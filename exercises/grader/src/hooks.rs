@@ -1,10 +1,10 @@
-//! How the workbook's renderer asks for a student's answer: not an exercise. Built for the exercises (the
-//! workbook's feature `exercises`), each slide function an exercise covers starts by asking its [`Hook`]
-//! ([`answer`]); the grader draws a picture around the blanks ([`drawing_around_blanks`]) or with the
-//! workbook's own functions ([`drawing_with_the_workbooks_own`]), and its own tests list the functions a
-//! picture asks for ([`drawing_and_listing_hooks`]). It lives here, beside the exercises, so
-//! that the workbook's lesson holds the slides' code and nothing else (the workbook's
-//! `src/lesson/exercise_hooks.rs` turns its types into these and back).
+//! How the workbook's renderer asks for a student's answer. Built for the exercises (the workbook's feature
+//! `exercises`), each slide function an exercise covers asks the answers the program registered (the
+//! exercises' `src/answers.rs`), each of which asks its [`Hook`] ([`answer`]); the grader draws a picture
+//! around the blanks ([`drawing_around_blanks`]) or with the workbook's own functions
+//! ([`drawing_with_the_workbooks_own`]), and its own tests list the functions a picture asks for
+//! ([`drawing_and_listing_hooks`]). It lives here, beside the exercises, so that the workbook's lesson holds
+//! the slides' code and nothing else.
 
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
 use std::sync::Mutex;
@@ -57,7 +57,7 @@ static MET: Mutex<Vec<&'static Hook>> = Mutex::new(Vec::new());
 /// goes on and meets every other blank it needs.
 pub fn answer<T>(hook: &'static Hook, handed_out: bool, student: impl FnOnce() -> T) -> Option<T> {
     if LISTING.load(Relaxed) {
-        // The student's function is a closure defined in the hook's function: its type names that function.
+        // The student's function is a closure defined in the answer's method: its type names that method.
         let asker = std::any::type_name_of_val(&student);
         let mut asked = ASKED.lock().unwrap_or_else(|e| e.into_inner());
         if !asked.contains(&asker) {
@@ -126,8 +126,8 @@ pub fn drawing_with_the_workbooks_own<T>(draw: impl FnOnce() -> T) -> T {
 /// Runs `draw` (a render) with the workbook's own function for every exercise, as
 /// [`drawing_with_the_workbooks_own`] does, and returns what it returned with the type names of the student's
 /// functions the hooks were asked for, in the order first asked (each a closure in the workbook's hook
-/// function: `lecture6::lesson::exercise_hooks::refract::{{closure}}`): which exercises a picture uses. One
-/// drawing at a time.
+/// method: `<exercises::answers::Students as lecture6::lesson::exercise_hooks::Answers>::refract::{{closure}}`):
+/// which exercises a picture uses. One drawing at a time.
 pub fn drawing_and_listing_hooks<T>(draw: impl FnOnce() -> T) -> (T, Vec<&'static str>) {
     let result = while_set(&LISTING, draw);
     (result, std::mem::take(&mut *ASKED.lock().unwrap_or_else(|e| e.into_inner())))
