@@ -665,7 +665,15 @@ fn progressive_caustic(rows: &mut Vec<Row>) {
             Code::File("src/lesson/photon_map/progressive.rs"),
             Code::Items(
                 "src/lesson/render.rs",
-                &["fn render_photon_passes", "struct PassesProgress", "impl Progress for PassesProgress", "fn add_pass"],
+                &[
+                    "fn render_photon_passes",
+                    "fn photon_pass",
+                    "struct PassAverage",
+                    "impl PassAverage",
+                    "struct PassesProgress",
+                    "impl Progress for PassesProgress",
+                    "fn add_pass",
+                ],
             ),
         ],
     });

@@ -20,7 +20,7 @@
 use crate::lesson::color::Color;
 use crate::lesson::error::Result;
 use crate::lesson::frame::Frame;
-use crate::lesson::render::{RenderJob, RenderSettings, RenderStats};
+use crate::lesson::render::{PassAverage, RenderJob, RenderSettings, RenderStats, photon_pass};
 use crate::lesson::scene::{Counters, Scene};
 use rayon::prelude::*;
 use std::sync::Mutex;
@@ -55,8 +55,18 @@ pub struct Tile {
 pub enum Update<'a> {
     /// The coarse pass, complete: a small frame to be shown stretched over the picture.
     Coarse(&'a Frame),
-    /// One tile of the full picture, final.
+    /// One tile of the full picture, final (of a progressive caustic's later pass: averaged with the passes
+    /// before).
     Tile(&'a Tile),
+    /// A pass of a progressive caustic is done: the average of the passes so far.
+    Passes {
+        /// The pass done, counted from 1 (the first pass's end is not told: its tiles are the picture).
+        pass: u32,
+        /// The passes in all.
+        passes: u32,
+        /// The average of passes 1 to `pass`.
+        frame: &'a Frame,
+    },
 }
 
 /// How a progressive render ended.
@@ -149,6 +159,11 @@ fn quick_frame_of(job: &RenderJob, settings: &RenderSettings, cancel: &AtomicBoo
 /// Renders `scene` progressively: the coarse pass, then the tiles of the full picture, each given to
 /// `on_update` as soon as it is done (from the worker thread that drew it). Stops, with
 /// [`Outcome::Cancelled`], once `cancel` is set: every worker finishes at most the tile it is drawing.
+///
+/// A progressive caustic ([`RenderSettings::photon_passes`] above 1) goes on pass by pass, as
+/// [`crate::lesson::render::render`] renders it: each later pass's tiles are shown averaged with the passes
+/// before ([`PassAverage::with_next`]), and each finished pass's average as a whole picture
+/// ([`Update::Passes`]), so the caustic sharpens on the screen; the finished picture is `render`'s.
 pub fn render_progressive(
     scene: &Scene,
     settings: &RenderSettings,
@@ -157,6 +172,10 @@ pub fn render_progressive(
 ) -> Result<Outcome> {
     let job = RenderJob::for_scene(scene, settings)?;
     let scene = job.scene();
+    let passes = photon_passes(scene, settings);
+    if let (Some(first), true) = (&scene.photon_map, passes > 1) {
+        first.check_passes(passes)?;
+    }
     let coarse = coarse_settings(settings);
     let coarse_job = RenderJob::new(scene, &coarse, job.plan().clone())?;
     let start = Instant::now();
@@ -164,7 +183,56 @@ pub fn render_progressive(
         return Ok(Outcome::Cancelled);
     };
     on_update(Update::Coarse(&coarse));
+    let Some((mut frame, counters)) = draw_tiles(&job, settings, cancel, &|tile| on_update(Update::Tile(tile))) else {
+        return Ok(Outcome::Cancelled);
+    };
+    let mut stats = job.stats(start.elapsed(), rayon::current_num_threads(), counters);
+    let Some(first) = scene.photon_map.as_ref().filter(|_| passes > 1) else {
+        return Ok(Outcome::Finished(frame, Box::new(stats)));
+    };
+    let mut average = PassAverage::new(frame.pixels.len());
+    average.add(&frame);
+    for pass in 2..=passes {
+        if cancel.load(Ordering::Relaxed) {
+            return Ok(Outcome::Cancelled);
+        }
+        let (pass_scene, pass_settings) = photon_pass(scene, first, settings, pass)?;
+        let pass_job = RenderJob::for_scene(&pass_scene, &pass_settings)?;
+        let pass_start = Instant::now();
+        let averaged = |tile: &Tile| {
+            let mut shown = tile.clone();
+            for (i, c) in shown.pixels.iter_mut().enumerate() {
+                let (x, y) = (tile.x + i as u32 % tile.width, tile.y + i as u32 / tile.width);
+                *c = average.with_next((y * settings.width + x) as usize, *c);
+            }
+            on_update(Update::Tile(&shown));
+        };
+        let Some((pass_frame, counters)) = draw_tiles(&pass_job, &pass_settings, cancel, &averaged) else {
+            return Ok(Outcome::Cancelled);
+        };
+        stats.add_pass(pass_job.stats(pass_start.elapsed(), rayon::current_num_threads(), counters));
+        average.add(&pass_frame);
+        average.write_into(&mut frame);
+        on_update(Update::Passes { pass, passes, frame: &frame });
+    }
+    Ok(Outcome::Finished(frame, Box::new(stats)))
+}
 
+/// How many passes a render of `scene` with `settings` draws: [`RenderSettings::photon_passes`] for a scene
+/// with a photon map, else one.
+pub fn photon_passes(scene: &Scene, settings: &RenderSettings) -> u32 {
+    if scene.photon_map.is_some() { settings.photon_passes.max(1) } else { 1 }
+}
+
+/// Draws every tile of `job`'s picture, nearest the centre first, on every worker of the current pool, each
+/// given to `on_tile` once drawn; then the course's adaptive anti-aliasing, which looks at each pixel's
+/// neighbours. The picture (the same as the job's whole render) and its rays, or `None` once `cancel` is set.
+fn draw_tiles(
+    job: &RenderJob,
+    settings: &RenderSettings,
+    cancel: &AtomicBool,
+    on_tile: &(dyn Fn(&Tile) + Sync),
+) -> Option<(Frame, Counters)> {
     let tiles = tiles(settings.width, settings.height);
     let next = AtomicUsize::new(0);
     let frame = Mutex::new(Frame::new(settings.width, settings.height));
@@ -180,7 +248,7 @@ pub fn render_progressive(
             let tile_rays = job.render_rect(xs, ys, &mut tile.pixels);
             tile.rays = tile_rays.total();
             rays.add(&tile_rays);
-            on_update(Update::Tile(&tile));
+            on_tile(&tile);
             let mut frame = frame.lock().expect("no worker panics holding the frame");
             for (row, colors) in tile.pixels.chunks(tile.width as usize).enumerate() {
                 let start = ((tile.y + row as u32) * settings.width + tile.x) as usize;
@@ -190,7 +258,7 @@ pub fn render_progressive(
         counters.lock().expect("no worker panics holding the counters").add(&rays);
     });
     if next.load(Ordering::Relaxed) < tiles.len() || cancel.load(Ordering::Relaxed) {
-        return Ok(Outcome::Cancelled);
+        return None;
     }
     let mut frame = frame.into_inner().expect("no worker panicked");
     let mut counters = counters.into_inner().expect("no worker panicked");
@@ -198,6 +266,5 @@ pub fn render_progressive(
     if settings.adaptive_aa {
         counters.add(&job.refine(&mut frame));
     }
-    let stats = job.stats(start.elapsed(), rayon::current_num_threads(), counters);
-    Ok(Outcome::Finished(frame, Box::new(stats)))
+    Some((frame, counters))
 }

@@ -62,7 +62,7 @@ pub struct RenderStats {
 impl RenderStats {
     /// Adds a later pass of a progressive caustic: its render time, rays and photon map, and the warnings
     /// not yet given.
-    fn add_pass(&mut self, pass: RenderStats) {
+    pub fn add_pass(&mut self, pass: RenderStats) {
         self.elapsed += pass.elapsed;
         self.counters.add(&pass.counters);
         if let (Some(all), Some(map)) = (&mut self.photons, pass.photons) {
@@ -177,27 +177,72 @@ fn render_photon_passes(
     let bar = progress.map(|inner| PassesProgress { inner, passes: passes as u64, begun: AtomicBool::new(false) });
     let progress = bar.as_ref().map(|p| p as &dyn Progress);
     let (mut frame, mut stats) = RenderJob::for_scene(scene, settings)?.render(progress)?;
-    let mut sum: Vec<[f64; 3]> = frame.pixels.iter().map(|c| c.to_array().map(f64::from)).collect();
-    let mut pass_scene = scene.clone();
+    let mut average = PassAverage::new(frame.pixels.len());
+    average.add(&frame);
     for pass in 2..=passes {
-        let seed = pass_seed(settings.seed, pass);
-        let map = on_workers(settings.threads, |_| PhotonMap::build_pass(scene, first, settings.seed, pass))??;
-        pass_scene.photon_map = map.map(Arc::new);
-        let (pass_frame, pass_stats) =
-            RenderJob::for_scene(&pass_scene, &RenderSettings { seed, ..*settings })?.render(progress)?;
-        pass_scene.photon_map = None;
-        for (s, c) in sum.iter_mut().zip(&pass_frame.pixels) {
-            s.iter_mut().zip(c.to_array()).for_each(|(s, v)| *s += v as f64);
-        }
+        let (pass_scene, pass_settings) = on_workers(settings.threads, |_| photon_pass(scene, first, settings, pass))??;
+        let (pass_frame, pass_stats) = RenderJob::for_scene(&pass_scene, &pass_settings)?.render(progress)?;
+        average.add(&pass_frame);
         stats.add_pass(pass_stats);
     }
     if let Some(bar) = &bar {
         bar.inner.end();
     }
-    for (pixel, s) in frame.pixels.iter_mut().zip(&sum) {
-        *pixel = to_color(s.map(|v| v / passes as f64));
-    }
+    average.write_into(&mut frame);
     Ok((frame, stats))
+}
+
+/// Pass `pass` (from 2) of a progressive caustic whose first pass's map is `first`: the scene with the pass's
+/// own photon map ([`PhotonMap::build_pass`]) and the settings with the pass's own seed for the pixels too,
+/// so that the passes are independent renders. The map lives as long as the pass's scene.
+pub fn photon_pass(
+    scene: &Scene,
+    first: &Arc<PhotonMap>,
+    settings: &RenderSettings,
+    pass: u32,
+) -> Result<(Scene, RenderSettings)> {
+    let mut pass_scene = scene.clone();
+    pass_scene.photon_map = PhotonMap::build_pass(scene, first, settings.seed, pass)?.map(Arc::new);
+    Ok((pass_scene, RenderSettings { seed: pass_seed(settings.seed, pass), ..*settings }))
+}
+
+/// The average of the pictures of a progressive caustic's passes, kept as their sum (in `f64`, so that the
+/// order of the passes is the only order of the additions): memory does not grow with the passes.
+pub struct PassAverage {
+    sum: Vec<[f64; 3]>,
+    passes: u32,
+}
+
+impl PassAverage {
+    /// No pass yet, for pictures of `pixels` pixels.
+    pub fn new(pixels: usize) -> PassAverage {
+        PassAverage { sum: vec![[0.0; 3]; pixels], passes: 0 }
+    }
+
+    /// Adds the picture of the next pass.
+    pub fn add(&mut self, frame: &Frame) {
+        for (s, c) in self.sum.iter_mut().zip(&frame.pixels) {
+            s.iter_mut().zip(c.to_array()).for_each(|(s, v)| *s += v as f64);
+        }
+        self.passes += 1;
+    }
+
+    /// The average at pixel `index` were `color` the next pass's colour there: what is shown of a pass being
+    /// drawn.
+    pub fn with_next(&self, index: usize, color: Color) -> Color {
+        let n = (self.passes + 1) as f64;
+        let mut s = self.sum[index];
+        s.iter_mut().zip(color.to_array()).for_each(|(s, v)| *s = (*s + v as f64) / n);
+        to_color(s)
+    }
+
+    /// Writes the average of the passes added into `frame`'s pixels.
+    pub fn write_into(&self, frame: &mut Frame) {
+        let n = self.passes.max(1) as f64;
+        for (pixel, s) in frame.pixels.iter_mut().zip(&self.sum) {
+            *pixel = to_color(s.map(|v| v / n));
+        }
+    }
 }
 
 /// The progress of all the passes of a progressive caustic as one bar: begun once for every pass's samples,

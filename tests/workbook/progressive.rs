@@ -1,18 +1,21 @@
-//! The progressive renderer the live viewer draws with: its tiles add up to the plain render byte for byte,
-//! and a cancelled render stops within one tile per worker.
+//! The progressive renderer the live viewer draws with: its tiles add up to the plain render byte for byte
+//! (a progressive caustic's too, pass by pass), and a cancelled render stops within one tile per worker.
 
 use crate::common;
 
-use common::examples::{dispersion, fresnel, glossy};
+use common::examples::{dispersion, fresnel, glossy, photon_map};
 use lecture6::app::cli::{Cli, Example};
-use lecture6::instruments::progressive::{Outcome, TILE_SIZE, Update, coarse_settings, render_progressive, tiles};
+use lecture6::instruments::progressive::{
+    Outcome, TILE_SIZE, Update, coarse_settings, photon_passes, render_progressive, tiles,
+};
 use lecture6::lesson::render::{render, thread_pool};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
 /// Renders the example progressively on `threads` threads and plainly, and checks that the pictures are the
-/// same bit for bit, that the coarse pass came first, then every tile once, and that the tiles' rays (the
-/// viewer's rays per second) are the plain render's.
+/// same bit for bit, that the coarse pass came first, then every tile once (once per pass of a progressive
+/// caustic, each later pass ended by its average), and that the tiles' rays (the viewer's rays per second)
+/// are the plain render's.
 fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
     let cli: Cli<E> = common::parse(args);
     let (scene, settings) = cli.prepare().unwrap();
@@ -27,6 +30,10 @@ fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
                 tile_rays.fetch_add(tile.rays, Ordering::Relaxed);
                 (tile.x, tile.y, tile.width * tile.height)
             }
+            Update::Passes { pass, passes, frame } => {
+                assert!(frame.pixels.iter().all(|c| c.is_finite()));
+                (u32::MAX - passes, pass, frame.width * frame.height)
+            }
         })
     };
     let outcome =
@@ -40,12 +47,23 @@ fn same_as_plain_render<E: Example>(args: &[&str], threads: usize) {
     let seen = seen.into_inner().unwrap();
     let coarse = coarse_settings(&settings);
     assert_eq!(seen[0], (u32::MAX, coarse.width, coarse.height), "the coarse pass comes first");
-    let mut drawn: Vec<_> = seen[1..].to_vec();
-    drawn.sort();
-    let mut expected: Vec<_> =
-        tiles(settings.width, settings.height).iter().map(|t| (t.x, t.y, t.width * t.height)).collect();
-    expected.sort();
-    assert_eq!(drawn, expected, "every tile once");
+    let passes = photon_passes(&scene, &settings);
+    let all_tiles = tiles(settings.width, settings.height);
+    let mut rest = &seen[1..];
+    for pass in 1..=passes {
+        let (drawn, after) = rest.split_at(all_tiles.len());
+        let mut drawn = drawn.to_vec();
+        drawn.sort();
+        let mut expected: Vec<_> = all_tiles.iter().map(|t| (t.x, t.y, t.width * t.height)).collect();
+        expected.sort();
+        assert_eq!(drawn, expected, "{args:?}: every tile once in pass {pass}");
+        rest = after;
+        if pass > 1 {
+            assert_eq!(rest[0], (u32::MAX - passes, pass, settings.width * settings.height), "pass {pass}'s average");
+            rest = &rest[1..];
+        }
+    }
+    assert!(rest.is_empty(), "{args:?}: nothing after the last pass");
 }
 
 #[test]
@@ -63,6 +81,19 @@ fn tiles_add_up_to_the_plain_render() {
 fn dispersive_tiles_add_up_to_the_plain_render() {
     same_as_plain_render::<dispersion::Options>(&["--width", "70", "--height", "40", "--spp", "2"], 2);
     same_as_plain_render::<dispersion::Options>(&["--width", "70", "--height", "40", "--spectral", "sampled"], 2);
+}
+
+#[test]
+fn a_progressive_caustic_builds_up_pass_by_pass_to_the_plain_render() {
+    let passes = ["--photon-passes", "3", "--photons", "20000"];
+    same_as_plain_render::<photon_map::Options>(
+        &[&["--width", "50", "--height", "40", "--spp", "1"], &passes[..]].concat(),
+        2,
+    );
+    same_as_plain_render::<photon_map::Options>(
+        &[&["--width", "40", "--height", "30", "--spp", "1", "--adaptive-aa"], &passes[..]].concat(),
+        1,
+    );
 }
 
 #[test]

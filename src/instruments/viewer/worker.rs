@@ -2,7 +2,9 @@
 //! nothing itself (the window cancels the job in flight by setting its flag before sending the next), and
 //! paints what the progressive renderer draws into the picture the window shows.
 
-use crate::instruments::progressive::{Outcome, Update, preview_settings, quick_frame, render_progressive};
+use crate::instruments::progressive::{
+    Outcome, Update, photon_passes, preview_settings, quick_frame, render_progressive,
+};
 use crate::instruments::tone_mapping::Film;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::to_srgb8;
@@ -245,7 +247,9 @@ fn run_job(
         shown.settings = Some(settings);
         shown.film = job.film;
     }
-    let tiles_total = crate::instruments::progressive::tiles(settings.width, settings.height).len();
+    // A progressive caustic's passes each draw every tile again.
+    let tiles_total = crate::instruments::progressive::tiles(settings.width, settings.height).len()
+        * photon_passes(&scene, &settings) as usize;
     lock().start(&settings, tiles_total);
     if job.preview {
         if let Some((frame, counters)) = quick_frame(&scene, &preview_settings(&settings), &job.cancel)? {
@@ -269,6 +273,8 @@ fn run_job(
                 shown.paint_tile(tile);
                 shown.spp = settings.spp;
             }
+            // The average of a progressive caustic's passes so far, whole: its tiles were painted one by one.
+            Update::Passes { frame, .. } => shown.paint_stretched(frame),
         }
         shown.elapsed = shown.started.elapsed();
         repaint();
