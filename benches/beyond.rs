@@ -1200,8 +1200,14 @@ fn hero_wavelengths(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
         fixed: with(&di_base, &["--spectral", "hero"]),
         values: plan.pick(vec![1, 2, 4, 8, 16], vec![1, 4, 8]),
     };
-    let curves = sweep(plan, di, "--spp", &[passes, hero], &di_ref);
+    let sampled = Curve {
+        label: "sampled",
+        fixed: with(&di_base, &["--spectral", "sampled"]),
+        values: plan.pick(vec![1, 2, 4, 8, 16, 32], vec![1, 4, 8]),
+    };
+    let curves = sweep(plan, di, "--spp", &[passes, hero, sampled], &di_ref);
     let hero_versus = versus(&curves[0], &curves[1], 4);
+    let sampled_versus = versus(&curves[0], &curves[2], 4);
     rows.push(Row {
         step: title(Step::HeroWavelengths, "hero-wavelength sampling"),
         slide: "K = 8 wavelength passes",
@@ -1217,8 +1223,17 @@ fn hero_wavelengths(plan: &Plan, all: &[Ex], rows: &mut Vec<Row>, details: &mut 
             Code::Lines("src/lesson/scene.rs", "met_dispersion"),
         ],
     });
-    writeln!(details, "## 8. Hero wavelengths\n\ndispersion at 160x120 against hero sampling with 8 wavelengths per path at {} spp, another seed (the slide's 8 passes converge to their own 8-band picture, which is part of their error).\n", plan.pick(128, 32)).unwrap();
-    curve_table(details, "spp", &[("8 passes", &curves[0]), ("hero", &curves[1])]);
+    rows.push(Row {
+        step: "8b. `--spectral sampled`: one wavelength per sample (a choice of step 8, not the default)".into(),
+        slide: "K = 8 wavelength passes",
+        measured: "dispersion, `--spectral sampled|passes`, 160x120, `--spp` swept, against a converged hero render"
+            .into(),
+        buys: sampled_versus.describe("sampled", "8 passes", &modeled(&curves[2])),
+        verdict: noise_verdict(&sampled_versus, &modeled(&curves[2])),
+        code: vec![Code::Lines("src/lesson/render.rs", "SpectralPlan::Sampled")],
+    });
+    writeln!(details, "## 8. Hero wavelengths\n\ndispersion at 160x120 against hero sampling with 8 wavelengths per path at {} spp, another seed (the slide's 8 passes converge to their own 8-band picture, which is part of their error). `sampled` is the other choice of the step: each sample carries one wavelength of its own band (`--spectral sampled`).\n", plan.pick(128, 32)).unwrap();
+    curve_table(details, "spp", &[("8 passes", &curves[0]), ("hero", &curves[1]), ("sampled", &curves[2])]);
 }
 
 /// Step 9: the photon grid and aimed emission against all-direction emission and the k-d tree, the rest of
