@@ -34,6 +34,10 @@ pub fn readme(workbook_readme: &str, handed_out: &[String]) -> String {
          \n\
          {files}\n\
          \n\
+         The first grading builds the renderer and the grader, once (about two minutes on two cores); the\n\
+         renderer does not depend on your files, so after an edit only they are compiled again, and a verdict\n\
+         takes seconds.\n\
+         \n\
          The grader draws the workbook's pictures with your functions. To draw one yourself,\n\
          `cargo run --release -p exercises --example draw -- refract` renders the example `refract` with them\n\
          (`out/refract.png`, with any of the example's options after its name), and stops at the `todo!()` of one\n\
