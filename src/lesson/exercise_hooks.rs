@@ -13,8 +13,6 @@ use crate::lesson::color::Color;
 use crate::lesson::environment::CubeFace;
 use crate::lesson::math::{OrthonormalBasis, Vector};
 use crate::lesson::photon_map::StoredPhoton;
-#[cfg(doc)]
-use crate::lesson::photon_map::arriving_light;
 use crate::lesson::rng::Rng;
 use glam::Affine3A;
 use std::sync::OnceLock;
@@ -54,8 +52,8 @@ pub trait Answers: Sync {
         disc_point: (f32, f32),
     ) -> Option<Option<Vector>>;
     /// The photon map's estimate from the photons found, each with its squared distance, finished by
-    /// [`arriving_light`] as [`PhotonMap::irradiance`](crate::lesson::photon_map::PhotonMap::irradiance)
-    /// finishes its own.
+    /// [`arriving_light`](crate::lesson::photon_map::arriving_light) as
+    /// [`PhotonMap::irradiance`](crate::lesson::photon_map::PhotonMap::irradiance) finishes its own.
     fn irradiance_estimate(
         &self,
         found: &mut dyn Iterator<Item = (f32, &StoredPhoton)>,

@@ -20,9 +20,15 @@ use std::path::Path;
 use std::process::Command;
 use std::sync::Mutex;
 
-/// Held by each test while it runs the class command: cargo builds one package at a time in a target
-/// folder, and a build waiting for the other test's would count against its time limit.
+/// Held by each test from start to end: cargo builds one package at a time in a target folder, so a build
+/// waiting for the other test's would count against its time limit; and the exercises' test builds its
+/// handed-out copy's library in the target folder whose libraries the other test counts.
 static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+
+/// Takes [`ONE_AT_A_TIME`] for the rest of a test.
+fn alone() -> std::sync::MutexGuard<'static, ()> {
+    ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner())
+}
 
 /// The builds of the library in the workbook's target folder (one file per build: cargo names each by
 /// what it was built with).
@@ -39,7 +45,6 @@ fn libraries(workbook: &Path) -> Vec<String> {
 
 /// Runs the class command on the folder `class` with `options`, its output into `out`.
 fn run_class(class: &Path, out: &Path, options: &[&str]) {
-    let _alone = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     let status = Command::new(env!("CARGO_BIN_EXE_class"))
         .arg(class)
         .args(options)
@@ -53,6 +58,7 @@ fn run_class(class: &Path, out: &Path, options: &[&str]) {
 #[test]
 #[ignore = "builds and runs thirteen submissions (about two minutes): cargo test --release -p teacher --test class -- --ignored"]
 fn every_kind_of_submission_gets_its_own_row() {
+    let _alone = alone();
     let dir = tempfile::tempdir().expect("a temporary folder");
     let class = dir.path().join("hw");
     std::fs::create_dir(&class).expect("the class's folder");
@@ -164,6 +170,7 @@ fn every_kind_of_submission_gets_its_own_row() {
 #[test]
 #[ignore = "builds the exercises' grader in a handed-out copy (minutes, once): cargo test --release -p teacher --test class -- --ignored"]
 fn exercise_files_are_graded_in_a_handed_out_copy_each_under_its_time_limit() {
+    let _alone = alone();
     let dir = tempfile::tempdir().expect("a temporary folder");
     let class = dir.path().join("exercises");
     let workbook = teacher::workbook();
