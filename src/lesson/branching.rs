@@ -127,10 +127,10 @@ pub(crate) struct Shading<'a> {
     point: ShadingPoint<'a>,
     /// Whether the innermost running shader is the workbook's own on one of its shapes (or the camera):
     /// its rays skip the budget and the check for rays that find their own surface.
-    workbook: bool,
+    pub(crate) workbook: bool,
     /// Whether a ray traced since the innermost shading point began came back NaN or infinite (then that
     /// point did not make the first such colour).
-    non_finite_below: bool,
+    pub(crate) non_finite_below: bool,
     /// The least depth a ray of the innermost shading point may have: one more than the ray it shades (0 for
     /// the camera's). A ray made with `Ray::new` (depth 0) is traced at this depth instead.
     pub(crate) least_depth: u32,
@@ -404,23 +404,10 @@ impl<'a> TraceContext<'a> {
         }
     }
 
-    /// The colour of the hit `info` of `ray` on node `i`, one of the workbook's own shapes under the
-    /// workbook's own shaders ([`Node::is_workbook`]): shaded with no shading point of its own; a NaN or
-    /// infinite colour it makes is counted against it.
-    #[inline(always)]
-    pub(crate) fn shade_workbook_hit(&mut self, i: usize, ray: &Ray, info: &IntersectionInfo) -> Color {
-        let outer = (self.shading.workbook, self.shading.non_finite_below);
-        (self.shading.workbook, self.shading.non_finite_below) = (true, false);
-        let color = self.scene.nodes[i].shader.shade(ray, info, self);
-        self.note_non_finite(i, color);
-        (self.shading.workbook, self.shading.non_finite_below) = outer;
-        color
-    }
-
     /// The shader of node `i` gave `color`: a NaN or infinite colour is counted against the node if no ray
     /// it traced brought one back.
     #[inline(always)]
-    fn note_non_finite(&mut self, i: usize, color: Color) {
+    pub(crate) fn note_non_finite(&mut self, i: usize, color: Color) {
         if !color.is_finite() && !self.shading.non_finite_below {
             Problems::count(&mut self.counters.problems.non_finite, Source::Node(i));
         }

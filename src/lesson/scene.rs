@@ -179,6 +179,19 @@ impl<'a> TraceContext<'a> {
         (self.shade_hit(i, ray, info, unit_normal), None)
     }
 
+    /// The colour of the hit `info` of `ray` on node `i`, one of the workbook's own shapes under the
+    /// workbook's own shaders ([`Node::is_workbook`]): shaded with no shading point of its own; a NaN or
+    /// infinite colour it makes is counted against it.
+    #[inline(always)]
+    fn shade_workbook_hit(&mut self, i: usize, ray: &Ray, info: &IntersectionInfo) -> Color {
+        let outer = (self.shading.workbook, self.shading.non_finite_below);
+        (self.shading.workbook, self.shading.non_finite_below) = (true, false);
+        let color = self.scene.nodes[i].shader.shade(ray, info, self);
+        self.note_non_finite(i, color);
+        (self.shading.workbook, self.shading.non_finite_below) = outer;
+        color
+    }
+
     /// What a ray that hit nothing sees: the environment, or black.
     #[inline(always)]
     fn environment(&mut self, ray: &Ray) -> Color {

@@ -26,6 +26,7 @@ const PLAIN_PATH: &[(&str, &[Part])] = &[
                     "    fn trace<const WATCHED",
                     "    fn trace_by_loop<",
                     "    fn shade_found<",
+                    "    fn shade_workbook_hit(",
                     "    fn environment(",
                     "    fn stop<",
                     "    pub fn visible(",

@@ -19,8 +19,6 @@ pub use phong::Phong;
 pub use reflection::{GlossyCone, Reflection, SECONDARY_GLOSSY_SAMPLES};
 pub use refraction::Refraction;
 
-use crate::lesson::beyond::Step;
-use crate::lesson::bitmap::Filter;
 use crate::lesson::color::Color;
 use crate::lesson::geometry::IntersectionInfo;
 use crate::lesson::math::Vector;
@@ -170,22 +168,6 @@ impl ColorSource {
         match self {
             ColorSource::Color(c) => *c,
             ColorSource::Texture(t) => t.get_tex_color(ray, info),
-        }
-    }
-
-    /// The colour at the hit `info` as the render's reading reads it ([`TraceContext::raytrace`]'s scene's
-    /// steps: one texel of a bitmap under `--slide`, its filter otherwise), what the texture computed told to
-    /// the ray tree when one watches. The course's shaders read their colours so; a shader of a student's
-    /// may too.
-    #[inline(always)]
-    pub fn at(&self, ray: &Ray, info: &IntersectionInfo, ctx: &mut TraceContext) -> Color {
-        match self {
-            ColorSource::Color(c) => *c,
-            ColorSource::Texture(t) => {
-                let filters = matches!(t, Tex::Bitmap(bitmap) if bitmap.filter != Filter::Nearest);
-                ctx.counters.steps_reached[Step::TexelFilter as usize] += filters as u64;
-                t.color(ray, info, ctx.scene.steps, ctx.recorder())
-            }
         }
     }
 
