@@ -1,5 +1,6 @@
 //! The shape of the lesson (`src/lesson`): a layered house. Its files import one another (by every form a
-//! path takes in code: `use`, `super::`, `self::`, `crate::lesson::` written inline) only in the slides'
+//! path takes in code: `use`, `super::`, `self::`, `crate::lesson::` written inline, and a folder's
+//! `mod.rs` naming its children's items by their module, `grid::Found`) only in the slides'
 //! recursion (`raytrace` calls a shader, which calls `raytrace`, and the light loop): one circle of files
 //! that import each other, of at most 9 files, with no geometry, texture, image, environment, photon-map,
 //! camera, render-loop, observer or diagnostics file in it. And the lesson stays a size a student can read:
@@ -54,9 +55,11 @@ fn paths_of(tree: &str) -> Vec<Vec<String>> {
     out
 }
 
-/// The file of the lesson a path names, for a file whose module is `here`: `crate::lesson::shader::Lambert`
+/// The file of the lesson a path names, for a file whose own module is `here`: `crate::lesson::shader::Lambert`
 /// is `shader/mod.rs` (the longest prefix that is a module), `super::Aabb` in `geometry/sphere.rs` is
-/// `geometry/mod.rs`. `None` for a path outside the lesson or naming the lesson's own `mod.rs`.
+/// `geometry/mod.rs`, and a path that starts with a child module of `here` (`progressive::Pass` or
+/// `use grid::Found` in `photon_map/mod.rs`) is that child's file. `None` for a path outside the lesson or
+/// naming the lesson's own `mod.rs`.
 fn target<'a>(path: &[String], here: &[String], modules: &'a BTreeMap<Vec<String>, PathBuf>) -> Option<&'a PathBuf> {
     let absolute: Vec<String> = match path.first().map(String::as_str) {
         Some("crate") if path.get(1).is_some_and(|s| s == "lesson") => path[2..].to_vec(),
@@ -66,6 +69,9 @@ fn target<'a>(path: &[String], here: &[String], modules: &'a BTreeMap<Vec<String
             base.iter().chain(&path[supers..]).cloned().collect()
         }
         Some("self") => here.iter().chain(&path[1..]).cloned().collect(),
+        Some(child) if modules.contains_key(&[here, &[child.to_string()]].concat()) => {
+            here.iter().chain(path).cloned().collect()
+        }
         _ => return None,
     };
     (1..=absolute.len()).rev().find_map(|k| modules.get(&absolute[..k]))
@@ -83,7 +89,6 @@ fn imports() -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
     for file in &files {
         let text = std::fs::read_to_string(file).unwrap();
         let here = module_of(file);
-        let here: Vec<String> = if file.ends_with("mod.rs") { here } else { here[..here.len() - 1].to_vec() };
         let mut targets = BTreeSet::new();
         let mut statement: Option<(String, bool)> = None;
         for line in text.lines() {
@@ -115,21 +120,21 @@ fn imports() -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
     graph
 }
 
-/// The paths written inline in a line of code: every `crate::lesson::a::b` and `super::a` (each as its
-/// segments, up to the first character that cannot continue a path).
+/// The paths written inline in a line of code: every `a::b` that does not continue a path before it
+/// (`crate::lesson::a::b`, `super::a`, `grid::Found`), each as its segments, up to the first character that
+/// cannot continue a path. Which of them name a file of the lesson is [`target`]'s to say.
 fn inline_paths(code: &str) -> Vec<Vec<String>> {
     let mut paths = Vec::new();
-    for start in ["crate::lesson::", "super::"] {
-        let mut rest = code;
-        while let Some(at) = rest.find(start) {
-            let before = rest[..at].chars().last();
-            let tail = &rest[at..];
-            let end = tail.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).unwrap_or(tail.len());
-            if !before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
-                paths.push(tail[..end].split("::").filter(|s| !s.is_empty()).map(str::to_string).collect());
-            }
-            rest = &tail[end.max(1)..];
+    let mut rest = code;
+    while let Some(at) = rest.find("::") {
+        let start = rest[..at].rfind(|c: char| !(c.is_alphanumeric() || c == '_')).map_or(0, |i| i + 1);
+        let before = rest[..start].chars().last();
+        let tail = &rest[start..];
+        let end = tail.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).unwrap_or(tail.len());
+        if start < at && before != Some(':') {
+            paths.push(tail[..end].split("::").filter(|s| !s.is_empty()).map(str::to_string).collect());
         }
+        rest = &tail[end.max(at - start + 2)..];
     }
     paths
 }
@@ -227,8 +232,23 @@ fn a_circle_of_imports_is_found() {
     ]);
     assert_eq!(circles(&graph)[0].len(), 3);
     assert_eq!(paths_of("crate::lesson::{a::B, c::{d, e as f}}").len(), 3);
-    let inline = inline_paths("let x = crate::lesson::render::MAX_SPP + super::Texture::y(self::z);");
-    assert_eq!(inline, [vec!["crate", "lesson", "render", "MAX_SPP"], vec!["super", "Texture", "y"]]);
+    let inline = inline_paths("let x = crate::lesson::render::MAX_SPP + super::Texture::y(self::z) + grid::f();");
+    let expected = [
+        vec!["crate", "lesson", "render", "MAX_SPP"],
+        vec!["super", "Texture", "y"],
+        vec!["self", "z"],
+        vec!["grid", "f"],
+    ];
+    assert_eq!(inline, expected);
+    // A child module's path, in a folder's `mod.rs`, names the child's file.
+    let modules = BTreeMap::from([
+        (vec!["photon_map".to_string()], file("m")),
+        (vec!["photon_map".to_string(), "grid".to_string()], file("g")),
+    ]);
+    let path = |p: &str| p.split("::").map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(target(&path("grid::Found"), &path("photon_map"), &modules), Some(&file("g")));
+    assert_eq!(target(&path("super::Found"), &path("photon_map::grid"), &modules), Some(&file("m")));
+    assert_eq!(target(&path("std::f32"), &path("photon_map"), &modules), None);
 }
 
 #[test]

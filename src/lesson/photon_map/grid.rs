@@ -2,7 +2,6 @@
 //! grid of cubic cells, the photons sorted cell by cell (see the module documentation of
 //! [`crate::lesson::photon_map`]).
 
-use super::*;
 use crate::lesson::geometry::Aabb;
 use crate::lesson::math::{Vector, floor};
 
@@ -54,8 +53,9 @@ const CELLS_PER_PHOTON: f32 = 2.0;
 pub(super) const CELLS_PER_RADIUS: f32 = 4.0;
 
 impl PhotonGrid {
-    pub(super) fn new(photons: &[StoredPhoton], max_radius: f32) -> PhotonGrid {
-        let bounds = Aabb::from_points(photons.iter().map(|p| p.position));
+    /// The grid over `photons`, each where `position` says, for estimates within `max_radius`.
+    pub(super) fn new<P>(photons: &[P], position: impl Fn(&P) -> Vector, max_radius: f32) -> PhotonGrid {
+        let bounds = Aabb::from_points(photons.iter().map(&position));
         let extent = if photons.is_empty() { Vector::ZERO } else { bounds.max - bounds.min };
         let max_cells = (CELLS_PER_PHOTON * photons.len() as f32).max(1.0);
         // A zero radius finds only photons at the point itself, with cells of any width.
@@ -75,7 +75,7 @@ impl PhotonGrid {
         let cell_of: Vec<usize> = photons
             .iter()
             .map(|p| {
-                let [x, y, z] = grid.coords(p.position).map(|c| c.clamp(0, i64::MAX) as usize);
+                let [x, y, z] = grid.coords(position(p)).map(|c| c.clamp(0, i64::MAX) as usize);
                 grid.index(x.min(dims[0] - 1), y.min(dims[1] - 1), z.min(dims[2] - 1))
             })
             .collect();
@@ -89,7 +89,7 @@ impl PhotonGrid {
         let mut next = starts.clone();
         let mut entries = vec![([0.0; 3], 0); photons.len()];
         for (i, (photon, &c)) in photons.iter().zip(&cell_of).enumerate() {
-            entries[next[c] as usize] = (photon.position.to_array(), i as u32);
+            entries[next[c] as usize] = (position(photon).to_array(), i as u32);
             next[c] += 1;
         }
         grid.starts = starts;

@@ -81,6 +81,7 @@ use kd_tree::KdTree;
 use std::cell::RefCell;
 use std::f32::consts::PI;
 use std::num::NonZeroUsize;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// Most photons a map may be asked for: 16 M photons already take about a gigabyte.
@@ -168,6 +169,13 @@ enum Lookup {
     Grid(PhotonGrid),
 }
 
+/// What makes a map a later pass's of a progressive caustic ([`progressive`]): the first map, which gives each point its r_1, and the ratio
+/// r_i^2 / r_1^2 of this pass.
+struct Pass {
+    first: Arc<PhotonMap>,
+    area_scale: f32,
+}
+
 /// The caustic photon map: the stored photons in a k-d tree or a grid, and how estimates are made from them.
 pub struct PhotonMap {
     photons: Vec<StoredPhoton>,
@@ -176,7 +184,7 @@ pub struct PhotonMap {
     max_radius: f32,
     show: bool,
     /// A later pass of a progressive caustic: its estimate gathers within its pass's radius.
-    pass: Option<progressive::Pass>,
+    pass: Option<Pass>,
     /// What building the map took: photons emitted and stored, and the time spent.
     pub stats: PhotonStats,
 }
@@ -197,7 +205,7 @@ impl PhotonMap {
         let k = NonZeroUsize::new(k as usize).ok_or_else(|| Error::parameter("photon k", k, "must be at least 1"))?;
         let start = Instant::now();
         let lookup = match grid {
-            true => Lookup::Grid(PhotonGrid::new(&photons, max_radius)),
+            true => Lookup::Grid(PhotonGrid::new(&photons, |photon| photon.position, max_radius)),
             false => Lookup::KdTree(KdTree::new(photons.iter().map(|photon| photon.position))),
         };
         let stats = PhotonStats { stored: photons.len(), build_time: start.elapsed(), ..PhotonStats::default() };

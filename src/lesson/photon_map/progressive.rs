@@ -49,13 +49,6 @@ pub fn radius_scale(pass: u32) -> f32 {
     area.sqrt() as f32
 }
 
-/// What makes a map a later pass's: the first map, which gives each point its r_1, and the ratio
-/// r_i^2 / r_1^2 of this pass.
-pub(super) struct Pass {
-    first: Arc<PhotonMap>,
-    area_scale: f32,
-}
-
 impl PhotonMap {
     /// The photon map of pass `pass` (counted from 1) of a progressive caustic whose first pass's map is
     /// `first`, for a render seeded with `seed`: the scene's photons traced anew with [`pass_seed`], the
