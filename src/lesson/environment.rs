@@ -119,7 +119,7 @@ pub trait Environment: Any + Send + Sync + EnvironmentObject {
     /// The colour seen in the unit direction `dir`.
     fn get(&self, dir: Vector) -> Color;
 
-    /// The environment as a prepared scene stores it ([`Sky`]): for any environment but the workbook's own,
+    /// The environment as a trace reads it ([`Sky`]): for any environment but the workbook's own,
     /// the case that calls it through its trait object, [`Sky::Own`]. A new environment leaves it as it is.
     fn into_sky(self: Arc<Self>) -> Sky {
         Sky::Own(self.into_object())
@@ -139,7 +139,7 @@ impl<E: Environment> EnvironmentObject for E {
     }
 }
 
-/// An environment as a prepared scene stores it ([`crate::lesson::scene::Scene::prepared`]): one of the
+/// An environment as a trace reads it (the sky of a [`crate::lesson::scene::TraceContext`]): one of the
 /// workbook's, each image-based one with the filter the scene's steps read it with (one texel, the slide's,
 /// without [`Step::TexelFilter`](crate::lesson::beyond::Step::TexelFilter); its own filter with it), or any other through its trait object. The one
 /// place that lists the workbook's environments.
@@ -157,18 +157,13 @@ pub enum Sky {
 
 impl Sky {
     /// The same environment as a render that takes `steps` reads it.
-    pub fn under(self, steps: Steps) -> Sky {
-        match self {
-            Sky::Spherical(spherical, _) => {
-                let filter = spherical.filter.under(steps);
-                Sky::Spherical(spherical, filter)
-            }
-            Sky::Cubemap(cubemap, _) => {
-                let filter = cubemap.filter.under(steps);
-                Sky::Cubemap(cubemap, filter)
-            }
-            other => other,
+    pub fn under(mut self, steps: Steps) -> Sky {
+        if let Sky::Spherical(SphericalEnvironment { filter: own, .. }, filter)
+        | Sky::Cubemap(CubemapEnvironment { filter: own, .. }, filter) = &mut self
+        {
+            *filter = own.under(steps);
         }
+        self
     }
 }
 

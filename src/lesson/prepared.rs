@@ -4,8 +4,9 @@
 //! - the BVH over the nodes ([`NodeTree`]), for scenes with more than a few of them, when they take that
 //!   step ([`Step::NodeTree`]);
 //! - the steps that belong to a value, resolved in the value: each mesh tested through its BVH or its
-//!   triangles one by one ([`Step::MeshBvh`]), the environment's images read through their filter or one
-//!   texel at a time ([`Step::TexelFilter`], [`crate::lesson::environment::Sky`]).
+//!   triangles one by one ([`Step::MeshBvh`]). (The environment's images, read through their filter or one
+//!   texel at a time under [`Step::TexelFilter`], are resolved the same way when a trace starts:
+//!   [`crate::lesson::environment::Sky`].)
 //!
 //! Nothing else is copied: the nodes' shapes and shaders are the scene's own values. A preparation belongs
 //! to the nodes it was made for: `Preparation::describes` checks that the scene still has the same steps

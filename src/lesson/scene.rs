@@ -17,7 +17,7 @@ use crate::lesson::beyond::{Step, Steps};
 use crate::lesson::branching::Shading;
 use crate::lesson::camera::Camera;
 use crate::lesson::color::{Color, srgb_to_linear};
-use crate::lesson::environment::Environment;
+use crate::lesson::environment::{ConstantEnvironment, Environment, Sky};
 use crate::lesson::error::{Error, Result};
 use crate::lesson::geometry::{Geometry, Hit, IntersectionInfo};
 use crate::lesson::light::PointLight;
@@ -195,8 +195,7 @@ impl<'a> TraceContext<'a> {
     /// What a ray that hit nothing sees: the environment, or black.
     #[inline(always)]
     fn environment(&mut self, ray: &Ray) -> Color {
-        let scene = self.scene;
-        let color = scene.environment.as_ref().map_or(Color::BLACK, |env| env.get(ray.dir));
+        let color = self.sky.get(ray.dir);
         if !color.is_finite() {
             self.note_environment_non_finite();
         }
@@ -417,7 +416,7 @@ impl Scene {
 
     /// The scene ready to be traced: itself if it was prepared already and its nodes and steps have not
     /// changed since, else a copy prepared for them ([`crate::lesson::prepared`]: the BVH over its nodes, if
-    /// it has enough of them and takes that step; its meshes and environment read as its steps say). The
+    /// it has enough of them and takes that step; its meshes tested as its steps say). The
     /// renderer and the photon tracer trace the prepared scene; preparing it once before both saves the
     /// second preparation.
     pub fn prepared(&self) -> Cow<'_, Scene> {
@@ -425,12 +424,17 @@ impl Scene {
             Some(p) if p.describes(&self.nodes, self.steps) => Cow::Borrowed(self),
             _ => {
                 let mut scene = self.clone();
-                scene.environment =
-                    scene.environment.map(|e| Arc::new(e.into_sky().under(self.steps)) as Arc<dyn Environment>);
                 scene.preparation = Some(Arc::new(Preparation::new(&mut scene.nodes, self.steps)));
                 Cow::Owned(scene)
             }
         }
+    }
+
+    /// The environment as a ray that hits nothing reads it: its case of [`Sky`], its images read as the
+    /// scene's steps say ([`Sky::under`]); black when the scene has none.
+    pub(crate) fn sky(&self) -> Sky {
+        let black = || Sky::Constant(ConstantEnvironment(Color::BLACK));
+        self.environment.as_ref().map_or_else(black, |environment| Arc::clone(environment).into_sky().under(self.steps))
     }
 
     /// The BVH over the nodes, if the scene was prepared with one ([`Scene::prepared`]).
@@ -587,6 +591,9 @@ pub struct TraceContext<'a> {
     pub(crate) shading: Shading<'a>,
     /// The rays the current branch of the ray tree has traced ([`crate::lesson::branching::RAYS_PER_BRANCH`]).
     pub(crate) branch_rays: u32,
+    /// The scene's environment as a ray that hits nothing reads it ([`Scene::sky`]), held here so that its
+    /// look-up is a match over the workbook's environments, not a call through a trait object.
+    sky: Sky,
 }
 
 impl<'a> TraceContext<'a> {
@@ -601,6 +608,7 @@ impl<'a> TraceContext<'a> {
             met_dispersion: false,
             shading: Shading::camera(),
             branch_rays: 0,
+            sky: scene.sky(),
         }
     }
 
