@@ -138,6 +138,9 @@ fn the_interface_scale_reaches_the_ray_tree_at_1600_by_1000() {
         // The tree shows once the scene is built and the pixel traced: wait for its lines.
         let shot_path = dir.join(format!("ui-scale-{scale}.png"));
         let start = std::time::Instant::now();
+        // A busy machine may show the window before its layout settles (a frame at another scale, the tree
+        // half drawn): the measure is taken once two screenshots in a row agree.
+        let mut previous = None;
         let (pitch, lines, right) = loop {
             std::thread::sleep(std::time::Duration::from_millis(500));
             let shot = screen.screenshot(&shot_path);
@@ -150,9 +153,11 @@ fn the_interface_scale_reaches_the_ray_tree_at_1600_by_1000() {
             let beside = line_pitch(&shot, right.saturating_sub(380)..right.saturating_sub(20), 0..1000);
             let under = line_pitch(&shot, 8..right / 5, bottom / 2..bottom * 7 / 8);
             let (pitch, lines) = if under.1 > beside.1 { under } else { beside };
-            if lines >= 12 || start.elapsed().as_secs() > 90 {
+            let settled = previous == Some((pitch, lines, right));
+            if (lines >= 12 && settled) || start.elapsed().as_secs() > 90 {
                 break (pitch, lines, right);
             }
+            previous = Some((pitch, lines, right));
         };
         let _ = example.kill();
         let _ = example.wait();
