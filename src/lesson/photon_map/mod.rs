@@ -169,8 +169,8 @@ enum Lookup {
     Grid(PhotonGrid),
 }
 
-/// What makes a map a later pass's of a progressive caustic ([`progressive`]): the first map, which gives each point its r_1, and the ratio
-/// r_i^2 / r_1^2 of this pass.
+/// What makes a map the map of a later pass of a progressive caustic ([`progressive`]): the first pass's
+/// map, which gives each point its r_1, and this pass's ratio r_i^2 / r_1^2.
 struct Pass {
     first: Arc<PhotonMap>,
     area_scale: f32,
