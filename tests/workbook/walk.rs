@@ -1,8 +1,11 @@
 //! docs/a-rays-trip.md, the walk of a camera ray from `raytrace` to the bitmap_textures floor, is the code's:
 //! every function it lists exists in the file it names; every one but the first is called by another one
 //! it lists; and no function it lists calls a function of another file of `src/lesson` that is neither in
-//! the walk nor in its list of calls off the path. The files and the calls between files of the default
-//! reading's walk are printed (`cargo test --release --test workbook walk:: -- --nocapture`).
+//! the walk nor in its list of calls off the path. In each reading the walk passes at most 8 files and 13
+//! calls between files, a family's dispatch (the `match` over the course's types in `Shape`, `Material`,
+//! `Tex`) counted as one call, as the course's virtual call is. The figures, and those that count each
+//! dispatch's file as a stop of its own, are printed
+//! (`cargo test --release --test workbook walk:: -- --nocapture`).
 
 use crate::common::{root, rust_files};
 use std::collections::{BTreeMap, BTreeSet};
@@ -16,7 +19,8 @@ const SHARED_NAMES: [&str; 3] = ["iter", "dot", "length"];
 struct Row {
     file: String,
     function: String,
-    slide_only: bool,
+    /// The reading the row belongs to alone (`--slide` or `default`), or `None` for a row of both.
+    only: Option<&'static str>,
 }
 
 impl Row {
@@ -40,8 +44,8 @@ fn table(page: &str, heading: &str) -> Vec<Row> {
     for line in section.lines().filter(|l| l.starts_with('|')) {
         let quoted: Vec<&str> = line.split('`').skip(1).step_by(2).collect();
         if quoted.len() >= 2 && quoted[0].starts_with("src/lesson/") {
-            let slide_only = line.contains("| `--slide`");
-            rows.push(Row { file: quoted[0].to_string(), function: quoted[1].to_string(), slide_only });
+            let only = ["--slide", "default"].into_iter().find(|r| line.contains(&format!("| `{r}`")));
+            rows.push(Row { file: quoted[0].to_string(), function: quoted[1].to_string(), only });
         }
     }
     assert!(!rows.is_empty(), "no rows under {heading:?}");
@@ -170,10 +174,28 @@ fn the_walk_from_raytrace_to_the_floor_is_the_codes() {
     for row in &walk[1..] {
         assert!(callers.contains_key(row.name()), "nothing the walk lists calls step {} {}", row.file, row.function);
     }
-    // The default reading's walk: its files, and its calls between files (a step in another file than the
-    // one before it).
-    let default: Vec<&Row> = walk.iter().filter(|r| !r.slide_only).collect();
-    let files: BTreeSet<&str> = default.iter().map(|r| r.file.as_str()).collect();
-    let hops = default.windows(2).filter(|w| w[0].file != w[1].file).count();
-    println!("the walk: {} files, {hops} calls between files, {} steps", files.len(), default.len());
+    // Each reading's walk: its files, and its calls between files (a step in another file than the one
+    // before it), a family's dispatch counted as one call, as the course's virtual call is: the dispatch's
+    // steps are left out, so the call goes from the step before them to the course's type after them.
+    let is_dispatch = |row: &Row| {
+        let source = &sources[&row.file];
+        row.owner().is_some_and(|t| source.contains(&format!("pub enum {t} {{")) && source.contains("Own(Arc<dyn"))
+    };
+    for reading in ["default", "--slide"] {
+        let steps: Vec<&Row> = walk.iter().filter(|r| r.only.is_none_or(|only| only == reading)).collect();
+        let stops: Vec<&Row> = steps.iter().copied().filter(|r| !is_dispatch(r)).collect();
+        let files: BTreeSet<&str> = stops.iter().map(|r| r.file.as_str()).collect();
+        let hops = stops.windows(2).filter(|w| w[0].file != w[1].file).count();
+        let dispatch_files: BTreeSet<&str> = steps.iter().filter(|r| is_dispatch(r)).map(|r| r.file.as_str()).collect();
+        let every_file_hops = steps.windows(2).filter(|w| w[0].file != w[1].file).count();
+        println!(
+            "the walk, {reading}: {} files, {hops} calls between files, {} steps (with the {} dispatch files as \
+             stops of their own: {} files, {every_file_hops} calls)",
+            files.len(),
+            steps.len(),
+            dispatch_files.len(),
+            files.len() + dispatch_files.len(),
+        );
+        assert!(files.len() <= 8 && hops <= 13, "{reading}: {} files and {hops} calls, over 8 and 13", files.len());
+    }
 }
