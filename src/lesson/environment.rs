@@ -345,6 +345,22 @@ pub struct CubemapEnvironment {
 }
 
 impl CubemapEnvironment {
+    /// The colour seen in the direction `dir`, the faces read with `filter`.
+    #[inline(always)]
+    fn look_up(&self, dir: Vector, filter: Filter) -> Color {
+        let (face, u, v) = cube_face_uv(dir);
+        let bitmap = &self.faces[face as usize];
+        if self.course_lookup && filter == Filter::Nearest {
+            // The course's program takes texel floor(u (W - 1)): its face a texel narrower than the image.
+            let span = |n: usize, t: f32| (t * (n - 1) as f32) as usize;
+            return bitmap.get_pixel(span(bitmap.width(), u), span(bitmap.height(), v));
+        }
+        // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.
+        bitmap.sample(u, v, filter, (Wrap::Clamp, Wrap::Clamp))
+    }
+}
+
+impl CubemapEnvironment {
     /// A bilinearly filtered cube map from six images in linear light, in the order of [`CubeFace::ALL`].
     pub fn new(faces: [Arc<Bitmap>; 6]) -> CubemapEnvironment {
         CubemapEnvironment { faces, filter: Filter::Bilinear, course_lookup: false }
@@ -413,21 +429,5 @@ impl CubemapEnvironment {
     /// The same cube map read with `filter`.
     pub fn with_filter(self, filter: Filter) -> CubemapEnvironment {
         CubemapEnvironment { filter, ..self }
-    }
-}
-
-impl CubemapEnvironment {
-    /// The colour seen in the direction `dir`, the faces read with `filter`.
-    #[inline(always)]
-    fn look_up(&self, dir: Vector, filter: Filter) -> Color {
-        let (face, u, v) = cube_face_uv(dir);
-        let bitmap = &self.faces[face as usize];
-        if self.course_lookup && filter == Filter::Nearest {
-            // The course's program takes texel floor(u (W - 1)): its face a texel narrower than the image.
-            let span = |n: usize, t: f32| (t * (n - 1) as f32) as usize;
-            return bitmap.get_pixel(span(bitmap.width(), u), span(bitmap.height(), v));
-        }
-        // Bilinear filtering stops at the face's edge rather than reading the neighbouring face.
-        bitmap.sample(u, v, filter, (Wrap::Clamp, Wrap::Clamp))
     }
 }

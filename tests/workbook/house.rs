@@ -311,10 +311,10 @@ fn imported_from_outside() -> BTreeSet<PathBuf> {
                 _ => continue,
             };
             let found = (1..=absolute.len()).rev().find_map(|k| modules.get(&absolute[..k]));
-            if let Some(found) = found.filter(|f| !f.starts_with(&lesson)) {
-                if outside.insert(found.clone()) {
-                    queue.push(found.clone());
-                }
+            if let Some(found) = found.filter(|f| !f.starts_with(&lesson))
+                && outside.insert(found.clone())
+            {
+                queue.push(found.clone());
             }
         }
     }
