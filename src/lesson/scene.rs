@@ -112,7 +112,7 @@ impl<'a> TraceContext<'a> {
             self.trace_by_loop::<WATCHED>(ray)
         } else {
             beyond!(TwoPhaseHit);
-            match scene.nearest_hit_index(ray) {
+            match scene.nearest_hit_index(self.node_tree, ray) {
                 Some((hit, i)) => self.shade_any_hit::<WATCHED>(i, ray, &hit),
                 None => (self.environment(ray), Some(Stop::Missed)),
             }
@@ -135,12 +135,12 @@ impl<'a> TraceContext<'a> {
     }
 
     /// The colour of the hit `hit` of `ray` on node `i`, any node, with its surface described as its shape
-    /// does ([`Scene::surface`]), told to the observer, if there is one: what the shader makes of it, or what
+    /// does ([`Node::checked_surface`]), told to the observer, if there is one: what the shader makes of it, or what
     /// the environment shows if the shape cannot find the hit again.
     #[inline(always)]
     fn shade_any_hit<const WATCHED: bool>(&mut self, i: usize, ray: &Ray, hit: &Hit) -> (Color, Option<Stop>) {
         let scene = self.scene;
-        let Some((info, i, unit_normal)) = scene.surface(i, ray, hit) else {
+        let Some((info, unit_normal)) = scene.nodes[i].checked_surface(ray, hit) else {
             return (self.environment(ray), Some(Stop::Missed));
         };
         self.shade_found::<WATCHED>(i, ray, &info, unit_normal)
@@ -224,7 +224,7 @@ impl<'a> TraceContext<'a> {
         let to_light = to - start;
         let t_max = to_light.length();
         let ray = Ray::new(start, to_light / t_max);
-        !self.scene.intersects(&ray, t_max)
+        !self.scene.intersects_through(self.node_tree, &ray, t_max)
     }
 }
 
@@ -439,7 +439,7 @@ impl Scene {
 
     /// The BVH over the nodes, if the scene was prepared with one ([`Scene::prepared`]).
     #[inline(always)]
-    fn tree(&self) -> Option<&NodeTree> {
+    pub(crate) fn tree(&self) -> Option<&NodeTree> {
         self.preparation.as_ref().and_then(|p| p.node_tree.as_ref())
     }
 
@@ -457,13 +457,14 @@ impl Scene {
     /// [`Node::hit`] on every node, or on the nodes the node tree leads the ray to).
     #[inline(always)]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<(Hit, &Node)> {
-        self.nearest_hit_index(ray).map(|(hit, i)| (hit, &self.nodes[i]))
+        self.nearest_hit_index(self.tree(), ray).map(|(hit, i)| (hit, &self.nodes[i]))
     }
 
-    /// [`Scene::nearest_hit`], the node given by its index.
+    /// [`Scene::nearest_hit`], the node given by its index, through the scene's node tree `tree`
+    /// ([`Scene::tree`], which a trace context looks up once, not for every ray).
     #[inline(always)]
-    fn nearest_hit_index(&self, ray: &Ray) -> Option<(Hit, usize)> {
-        match self.tree() {
+    fn nearest_hit_index(&self, tree: Option<&NodeTree>, ray: &Ray) -> Option<(Hit, usize)> {
+        match tree {
             Some(tree) => tree.nearest_of(&self.nodes, ray),
             None => nearest_of(&self.nodes, ray),
         }
@@ -485,8 +486,8 @@ impl Scene {
             return self.closest_by_loop(ray);
         }
         beyond!(TwoPhaseHit);
-        let (hit, i) = self.nearest_hit_index(ray)?;
-        self.surface(i, ray, &hit)
+        let (hit, i) = self.nearest_hit_index(self.tree(), ray)?;
+        self.nodes[i].checked_surface(ray, &hit).map(|(info, unit_normal)| (info, i, unit_normal))
     }
 
     /// The slide's closest hit ("Model трансформация"): every node in turn intersected in full
@@ -496,23 +497,21 @@ impl Scene {
         closest_of(self.nodes.len(), |i, t_max| self.nodes[i].checked_intersect(ray, t_max))
     }
 
-    /// The surface of node `i` where the ray hit it ([`Node::checked_surface`]), the index, and whether the
-    /// geometry gave a unit normal.
-    #[inline(always)]
-    fn surface(&self, i: usize, ray: &Ray, hit: &Hit) -> Option<(IntersectionInfo, usize, bool)> {
-        let (info, unit_normal) = self.nodes[i].checked_surface(ray, hit)?;
-        Some((info, i, unit_normal))
-    }
-
     /// Whether anything is hit by the ray before `t_max`: the slide's loop over the nodes, each intersected
     /// in full, or, with the step [`Step::TwoPhaseHit`], each node's cheaper any-hit test (through the node
     /// tree, with that step).
     #[inline(always)]
     pub fn intersects(&self, ray: &Ray, t_max: f32) -> bool {
+        self.intersects_through(self.tree(), ray, t_max)
+    }
+
+    /// [`Scene::intersects`], through the scene's node tree `tree` ([`Scene::tree`]).
+    #[inline(always)]
+    pub(crate) fn intersects_through(&self, tree: Option<&NodeTree>, ray: &Ray, t_max: f32) -> bool {
         if !self.steps.has(Step::TwoPhaseHit) {
             return self.nodes.iter().any(|node| node.intersect(ray, t_max).is_some());
         }
-        match self.tree() {
+        match tree {
             Some(tree) => tree.intersects(&self.nodes, ray, t_max),
             None => any_of(&self.nodes, ray, t_max),
         }
@@ -594,6 +593,8 @@ pub struct TraceContext<'a> {
     /// The scene's environment as a ray that hits nothing reads it ([`Scene::sky`]), held here so that its
     /// look-up is a match over the workbook's environments, not a call through a trait object.
     sky: Sky,
+    /// The scene's node tree, if it has one ([`Scene::tree`]), found once for every ray the context traces.
+    node_tree: Option<&'a NodeTree>,
 }
 
 impl<'a> TraceContext<'a> {
@@ -609,6 +610,7 @@ impl<'a> TraceContext<'a> {
             shading: Shading::camera(),
             branch_rays: 0,
             sky: scene.sky(),
+            node_tree: scene.tree(),
         }
     }
 

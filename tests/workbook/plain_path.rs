@@ -1,5 +1,5 @@
 //! The size of the slides' reading (`--slide`): the lines of code of the lesson layer that it executes,
-//! topic by topic, at most 3,173 in all (the course's own lecture-6 program is 1,486). Comments, blank
+//! topic by topic, at most 3,175 in all (the course's own lecture-6 program is 1,486). Comments, blank
 //! lines, file loading, input checks, the steps' gates and the end-of-run report are not counted
 //! ([`NOT_COUNTED`] names each item); nor is the code of the steps beyond the slides, which `--slide` never
 //! reaches (tests/slide_audit.rs). The guards that hold in both readings (the branching bound) and the enums
@@ -86,7 +86,7 @@ const PLAIN_PATH: &[(&str, &[Part])] = &[
                     "    pub fn prepared(",
                     "    pub(crate) fn checked_closest_hit(",
                     "    pub(crate) fn closest_by_loop(",
-                    "    pub fn intersects(",
+                    "    pub(crate) fn intersects_through(",
                     "pub struct TraceContext",
                     "    pub fn new(scene",
                     "    pub(crate) fn restart_pixel(",
@@ -392,7 +392,7 @@ fn count((file, items): &Part) -> usize {
 }
 
 #[test]
-fn the_plain_path_is_at_most_3173_lines_and_each_topics_core_about_150() {
+fn the_plain_path_is_at_most_3175_lines_and_each_topics_core_about_150() {
     let mut total = 0;
     println!("{:<48} {:>6} {:>6}", "topic", "core", "lines");
     for (topic, parts) in PLAIN_PATH {
@@ -406,7 +406,7 @@ fn the_plain_path_is_at_most_3173_lines_and_each_topics_core_about_150() {
     for (what, parts) in ENGINE {
         println!("{what:<48} {:>6} {:>6}", "", parts.iter().map(count).sum::<usize>());
     }
-    assert!(total <= 3173, "the slides' reading is {total} lines of code, more than 3,173");
+    assert!(total <= 3175, "the slides' reading is {total} lines of code, more than 3,175");
 }
 
 /// Each topic's core (the slide's version of the technique, the first part of its topic) is the first thing
