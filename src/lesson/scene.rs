@@ -439,7 +439,7 @@ impl Scene {
 
     /// The BVH over the nodes, if the scene was prepared with one ([`Scene::prepared`]).
     #[inline(always)]
-    pub(crate) fn tree(&self) -> Option<&NodeTree> {
+    fn tree(&self) -> Option<&NodeTree> {
         self.preparation.as_ref().and_then(|p| p.node_tree.as_ref())
     }
 

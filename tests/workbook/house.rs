@@ -13,10 +13,10 @@ use crate::common::{root, rust_files};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-/// The module path of a file of the lesson: `shader/mod.rs` is `["shader"]`, `shader/layered.rs`
-/// `["shader", "layered"]`.
-fn module_of(file: &Path) -> Vec<String> {
-    let relative = file.strip_prefix(root().join("src/lesson")).unwrap().with_extension("");
+/// The module path of a file under the folder `base` (`src/lesson`, or `src` for the whole crate): in the
+/// lesson, `shader/mod.rs` is `["shader"]`, `shader/layered.rs` `["shader", "layered"]`.
+fn module_of(file: &Path, base: &Path) -> Vec<String> {
+    let relative = file.strip_prefix(base).unwrap().with_extension("");
     let mut parts: Vec<String> = relative.iter().map(|p| p.to_string_lossy().into_owned()).collect();
     if parts.last().is_some_and(|p| p == "mod") {
         parts.pop();
@@ -56,14 +56,21 @@ fn paths_of(tree: &str) -> Vec<Vec<String>> {
     out
 }
 
-/// The file of the lesson a path names, for a file whose own module is `here`: `crate::lesson::shader::Lambert`
-/// is `shader/mod.rs` (the longest prefix that is a module), `super::Aabb` in `geometry/sphere.rs` is
-/// `geometry/mod.rs`, and a path that starts with a child module of `here` (`progressive::Pass` or
-/// `use grid::Found` in `photon_map/mod.rs`) is that child's file. `None` for a path outside the lesson or
-/// naming the lesson's own `mod.rs`.
-fn target<'a>(path: &[String], here: &[String], modules: &'a BTreeMap<Vec<String>, PathBuf>) -> Option<&'a PathBuf> {
+/// The file a path names among `modules`, which are keyed by their path below the crate's module `base`
+/// (`["lesson"]` for the lesson's files, `[]` for the whole crate's), for a file whose own module is `here`:
+/// `crate::lesson::shader::Lambert` is `shader/mod.rs` (the longest prefix that is a module), `super::Aabb`
+/// in `geometry/sphere.rs` is `geometry/mod.rs`, and a path that starts with a child module of `here`
+/// (`progressive::Pass` or `use grid::Found` in `photon_map/mod.rs`) is that child's file. `None` for a path
+/// outside `base` or naming its own `mod.rs`.
+fn target<'a>(
+    path: &[String],
+    here: &[String],
+    modules: &'a BTreeMap<Vec<String>, PathBuf>,
+    base: &[&str],
+) -> Option<&'a PathBuf> {
+    let below_base = path.len() > base.len() && path[1..=base.len()].iter().zip(base).all(|(a, b)| a == b);
     let absolute: Vec<String> = match path.first().map(String::as_str) {
-        Some("crate") if path.get(1).is_some_and(|s| s == "lesson") => path[2..].to_vec(),
+        Some("crate") if below_base => path[1 + base.len()..].to_vec(),
         Some("super") => {
             let supers = path.iter().take_while(|s| *s == "super").count();
             let base = &here[..here.len().saturating_sub(supers)];
@@ -78,43 +85,50 @@ fn target<'a>(path: &[String], here: &[String], modules: &'a BTreeMap<Vec<String
     (1..=absolute.len()).rev().find_map(|k| modules.get(&absolute[..k]))
 }
 
+/// The paths a file's code names (comments are not read), each as its segments: those of its `use`
+/// statements, over as many lines as they take, and those written inline ([`inline_paths`]). Re-exports
+/// (`pub use`) only when `reexports` is true.
+fn paths_in(text: &str, reexports: bool) -> Vec<Vec<String>> {
+    let mut paths = Vec::new();
+    let mut statement: Option<(String, bool)> = None;
+    for line in text.lines() {
+        let code = line.split("//").next().unwrap_or("").trim();
+        let reexport = code.starts_with("pub use ") || code.starts_with("pub(crate) use ");
+        let code_use = code.strip_prefix("pub(crate) ").or_else(|| code.strip_prefix("pub ")).unwrap_or(code);
+        if statement.is_none() && code_use.starts_with("use ") {
+            statement = Some((String::new(), reexport));
+        }
+        if let Some((so_far, reexport)) = statement.as_mut() {
+            so_far.push_str(code_use);
+            if let Some(whole) = so_far.strip_suffix(';') {
+                if reexports || !*reexport {
+                    paths.extend(paths_of(whole.trim_start_matches("use ")));
+                }
+                statement = None;
+            }
+            continue;
+        }
+        paths.extend(inline_paths(code));
+    }
+    paths
+}
+
 /// For every file of the lesson, the files of the lesson it imports, by every form a path can take in its
-/// code (comments are not read): `use crate::lesson::...`, `use super::...` and `use self::...` statements,
-/// and paths written inline (`crate::lesson::render::MAX_SPP`, `super::Texture`). A folder's `mod.rs` that
-/// re-exports its children's items (`pub use`) hands their names on without using them: not an import.
+/// code: `use crate::lesson::...`, `use super::...` and `use self::...` statements, and paths written inline
+/// (`crate::lesson::render::MAX_SPP`, `super::Texture`). A folder's `mod.rs` that re-exports its children's
+/// items (`pub use`) hands their names on without using them: not an import.
 fn imports() -> BTreeMap<PathBuf, BTreeSet<PathBuf>> {
-    let files = rust_files(&root().join("src/lesson"));
+    let lesson = root().join("src/lesson");
+    let files = rust_files(&lesson);
     let modules: BTreeMap<Vec<String>, PathBuf> =
-        files.iter().map(|f| (module_of(f), f.clone())).filter(|(m, _)| !m.is_empty()).collect();
+        files.iter().map(|f| (module_of(f, &lesson), f.clone())).filter(|(m, _)| !m.is_empty()).collect();
     let mut graph = BTreeMap::new();
     for file in &files {
         let text = std::fs::read_to_string(file).unwrap();
-        let here = module_of(file);
-        let mut targets = BTreeSet::new();
-        let mut statement: Option<(String, bool)> = None;
-        for line in text.lines() {
-            let code = line.split("//").next().unwrap_or("").trim();
-            let reexport = code.starts_with("pub use ") || code.starts_with("pub(crate) use ");
-            let code_use = code.strip_prefix("pub(crate) ").or_else(|| code.strip_prefix("pub ")).unwrap_or(code);
-            if statement.is_none() && code_use.starts_with("use ") {
-                statement = Some((String::new(), reexport && file.ends_with("mod.rs")));
-            }
-            if let Some((so_far, face)) = statement.as_mut() {
-                so_far.push_str(code_use);
-                if let Some(whole) = so_far.strip_suffix(';') {
-                    if !*face {
-                        for path in paths_of(whole.trim_start_matches("use ")) {
-                            targets.extend(target(&path, &here, &modules).cloned());
-                        }
-                    }
-                    statement = None;
-                }
-                continue;
-            }
-            for path in inline_paths(code) {
-                targets.extend(target(&path, &here, &modules).cloned());
-            }
-        }
+        let here = module_of(file, &lesson);
+        let paths = paths_in(&text, !file.ends_with("mod.rs"));
+        let mut targets: BTreeSet<PathBuf> =
+            paths.iter().filter_map(|path| target(path, &here, &modules, &["lesson"]).cloned()).collect();
         targets.remove(file);
         graph.insert(file.clone(), targets);
     }
@@ -247,9 +261,11 @@ fn a_circle_of_imports_is_found() {
         (vec!["photon_map".to_string(), "grid".to_string()], file("g")),
     ]);
     let path = |p: &str| p.split("::").map(str::to_string).collect::<Vec<_>>();
-    assert_eq!(target(&path("grid::Found"), &path("photon_map"), &modules), Some(&file("g")));
-    assert_eq!(target(&path("super::Found"), &path("photon_map::grid"), &modules), Some(&file("m")));
-    assert_eq!(target(&path("std::f32"), &path("photon_map"), &modules), None);
+    let target = |p: &str, here: &str| target(&path(p), &path(here), &modules, &["lesson"]);
+    assert_eq!(target("grid::Found", "photon_map"), Some(&file("g")));
+    assert_eq!(target("super::Found", "photon_map::grid"), Some(&file("m")));
+    assert_eq!(target("crate::lesson::photon_map::grid::f", "camera"), Some(&file("g")));
+    assert_eq!(target("std::f32", "photon_map"), None);
 }
 
 /// The files outside `src/lesson` that the lesson imports (`crate::files::obj`, `crate::app::parameter_ranges`),
@@ -258,60 +274,19 @@ fn a_circle_of_imports_is_found() {
 fn imported_from_outside() -> BTreeSet<PathBuf> {
     let src = root().join("src");
     let lesson = src.join("lesson");
-    let module = |file: &Path| {
-        let relative = file.strip_prefix(&src).unwrap().with_extension("");
-        let mut parts: Vec<String> = relative.iter().map(|p| p.to_string_lossy().into_owned()).collect();
-        if parts.last().is_some_and(|p| p == "mod") {
-            parts.pop();
-        }
-        parts
-    };
-    // The library's modules (not the binaries' own files).
+    // The library's modules (not the binaries' own files), keyed by their path in the crate.
     let modules: BTreeMap<Vec<String>, PathBuf> = rust_files(&src)
         .into_iter()
         .filter(|f| !f.ends_with("main.rs") && !f.starts_with(src.join("bin")))
-        .map(|f| (module(&f), f))
+        .map(|f| (module_of(&f, &src), f))
         .filter(|(m, _)| !m.is_empty() && m[0] != "lib")
         .collect();
     let mut outside = BTreeSet::new();
     let mut queue = rust_files(&lesson);
     while let Some(file) = queue.pop() {
-        let here = module(&file);
-        let text = std::fs::read_to_string(&file).unwrap();
-        let mut paths = Vec::new();
-        let mut statement: Option<String> = None;
-        for line in text.lines() {
-            let code = line.split("//").next().unwrap_or("").trim();
-            let code = code.strip_prefix("pub(crate) ").or_else(|| code.strip_prefix("pub ")).unwrap_or(code);
-            if statement.is_none() && code.starts_with("use ") {
-                statement = Some(String::new());
-            }
-            match statement.as_mut() {
-                Some(so_far) => {
-                    so_far.push_str(code);
-                    if let Some(whole) = so_far.strip_suffix(';') {
-                        paths.extend(paths_of(whole.trim_start_matches("use ")));
-                        statement = None;
-                    }
-                }
-                None => paths.extend(inline_paths(code)),
-            }
-        }
-        for path in paths {
-            let absolute: Vec<String> = match path.first().map(String::as_str) {
-                Some("crate") => path[1..].to_vec(),
-                Some("super") => {
-                    let supers = path.iter().take_while(|s| *s == "super").count();
-                    here[..here.len().saturating_sub(supers)].iter().chain(&path[supers..]).cloned().collect()
-                }
-                Some("self") => here.iter().chain(&path[1..]).cloned().collect(),
-                Some(child) if modules.contains_key(&[&here[..], &[child.to_string()]].concat()) => {
-                    here.iter().chain(&path).cloned().collect()
-                }
-                _ => continue,
-            };
-            let found = (1..=absolute.len()).rev().find_map(|k| modules.get(&absolute[..k]));
-            if let Some(found) = found.filter(|f| !f.starts_with(&lesson))
+        let here = module_of(&file, &src);
+        for path in paths_in(&std::fs::read_to_string(&file).unwrap(), true) {
+            if let Some(found) = target(&path, &here, &modules, &[]).filter(|f| !f.starts_with(&lesson))
                 && outside.insert(found.clone())
             {
                 queue.push(found.clone());

@@ -539,7 +539,8 @@ fn spans((file, items): &Part) -> Vec<(usize, usize)> {
 /// The lines of `src/lesson` that ran, by file, in callgrind's record of a run (`--dump-instr=no
 /// --compress-strings=no --compress-pos=no`): each cost line's number, in the file that the last `fl=`, `fi=`
 /// or `fe=` line named (the `fi=`/`fe=` ones are code inlined from another file, with its own lines).
-fn lines_run(record: &str, ran: &mut BTreeMap<String, BTreeSet<usize>>) {
+fn lines_run(record: &str) -> BTreeMap<String, BTreeSet<usize>> {
+    let mut ran: BTreeMap<String, BTreeSet<usize>> = BTreeMap::new();
     let mut file = String::new();
     let mut function_file = String::new();
     for line in record.lines() {
@@ -557,11 +558,12 @@ fn lines_run(record: &str, ran: &mut BTreeMap<String, BTreeSet<usize>>) {
             ran.entry(file.clone()).or_default().insert(number);
         }
     }
+    ran
 }
 
 /// Every line of the lesson that `--slide` runs is in an item the tables count (the slides' code, the
-/// engine) or in one they name as not counted ([`NOT_COUNTED`]): each example renders with `--slide` at
-/// 16x12 under callgrind, whose record of the lines that ran comes from the release profile's line tables
+/// engine) or in one they name as not counted ([`NOT_COUNTED`]): each of the workbook's examples (not a
+/// student's own in `examples/`) renders with `--slide` at 16x12 under callgrind, whose record of the lines that ran comes from the release profile's line tables
 /// (inlined code keeps its own file and line). A `use` line or a constant that a record names (the compiler
 /// files some instructions there) is not code that ran. Needs valgrind: where it is not installed the test
 /// says it is skipped.
@@ -575,21 +577,19 @@ fn every_line_slide_runs_is_in_the_tables() {
     }
     let dir = root().join("target").join("plain_path");
     std::fs::create_dir_all(&dir).unwrap();
-    let mut ran: BTreeMap<String, BTreeSet<usize>> = BTreeMap::new();
-    let mut by_example: BTreeMap<(String, usize), BTreeSet<String>> = BTreeMap::new();
-    let mut examples: Vec<String> = std::fs::read_dir(root().join("examples"))
-        .unwrap()
-        .filter_map(|e| e.ok()?.file_name().to_str()?.strip_suffix(".rs").map(str::to_string))
-        .collect();
-    examples.sort();
-    for example in &examples {
+    // Each line that ran, by its file and number, and the examples that ran it.
+    let mut ran: BTreeMap<(String, usize), BTreeSet<&str>> = BTreeMap::new();
+    macro_rules! names {
+        ($($name:ident),*) => { [$(stringify!($name)),*] };
+    }
+    for example in every_example!(names) {
         let record = dir.join(format!("{example}.callgrind"));
         let mut args = vec!["--slide", "--width", "16", "--height", "12", "--threads", "1"];
         if example == "photon_map" {
             args.extend(["--photons", "20000"]);
         }
         let picture = dir.join(format!("{example}.png"));
-        let status = std::process::Command::new("valgrind")
+        let run = std::process::Command::new("valgrind")
             .args(["--tool=callgrind", "--dump-instr=no", "--compress-strings=no", "--compress-pos=no"])
             .arg(format!("--callgrind-out-file={}", record.display()))
             .arg(crate::common::example_binary(example))
@@ -599,18 +599,11 @@ fn every_line_slide_runs_is_in_the_tables() {
             .current_dir(root())
             .output()
             .expect("run valgrind");
-        assert!(
-            status.status.success(),
-            "{example} --slide under callgrind: {}",
-            String::from_utf8_lossy(&status.stderr)
-        );
-        let mut this = BTreeMap::new();
-        lines_run(&std::fs::read_to_string(&record).unwrap(), &mut this);
-        for (file, lines) in this {
-            for &line in &lines {
-                by_example.entry((file.clone(), line)).or_default().insert(example.clone());
+        assert!(run.status.success(), "{example} --slide under callgrind: {}", String::from_utf8_lossy(&run.stderr));
+        for (file, lines) in lines_run(&std::fs::read_to_string(&record).unwrap()) {
+            for line in lines {
+                ran.entry((file.clone(), line)).or_default().insert(example);
             }
-            ran.entry(file).or_default().extend(lines);
         }
     }
     let mut covered: BTreeMap<&str, Vec<(usize, usize)>> = BTreeMap::new();
@@ -619,21 +612,21 @@ fn every_line_slide_runs_is_in_the_tables() {
             covered.entry(part.0).or_default().extend(spans(part));
         }
     }
+    let not_run = ["use ", "pub use ", "const ", "pub const ", "pub(crate) const "];
+    let mut sources: BTreeMap<&str, String> = BTreeMap::new();
     let mut missing = Vec::new();
-    for (file, lines) in &ran {
-        let text = std::fs::read_to_string(root().join("src/lesson").join(file)).unwrap();
-        let source: Vec<&str> = text.lines().collect();
+    for ((file, line), examples) in &ran {
+        let source = sources
+            .entry(file)
+            .or_insert_with(|| std::fs::read_to_string(root().join("src/lesson").join(file)).unwrap());
+        let code = source.lines().nth(line - 1).map_or("", str::trim);
+        if !is_code(code) || not_run.iter().any(|p| code.starts_with(p)) {
+            continue;
+        }
         let spans = covered.get(file.as_str()).map(Vec::as_slice).unwrap_or(&[]);
-        for &line in lines {
-            let code = source.get(line - 1).map_or("", |l| l.trim());
-            let not_run = ["use ", "pub use ", "const ", "pub const ", "pub(crate) const "];
-            if !is_code(code) || not_run.iter().any(|p| code.starts_with(p)) {
-                continue;
-            }
-            if !spans.iter().any(|&(first, last)| (first..=last).contains(&line)) {
-                let examples: Vec<&str> = by_example[&(file.clone(), line)].iter().map(String::as_str).collect();
-                missing.push(format!("src/lesson/{file}:{line}: {code}  ({})", examples.join(", ")));
-            }
+        if !spans.iter().any(|&(first, last)| (first..=last).contains(line)) {
+            let examples: Vec<&str> = examples.iter().copied().collect();
+            missing.push(format!("src/lesson/{file}:{line}: {code}  ({})", examples.join(", ")));
         }
     }
     assert!(missing.is_empty(), "lines that --slide runs outside the tables:\n{}", missing.join("\n"));
