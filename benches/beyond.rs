@@ -667,6 +667,7 @@ fn progressive_caustic(rows: &mut Vec<Row>) {
                 "src/lesson/render.rs",
                 &[
                     "fn render_photon_passes",
+                    "fn photon_passes_pixel",
                     "fn photon_pass",
                     "struct PassAverage",
                     "impl PassAverage",

@@ -221,10 +221,20 @@ impl PassAverage {
 
     /// Adds the picture of the next pass.
     pub fn add(&mut self, frame: &Frame) {
-        for (s, c) in self.sum.iter_mut().zip(&frame.pixels) {
+        self.add_pixels(&frame.pixels);
+    }
+
+    /// Adds the pixels of the next pass (all of them, or the one pixel of [`render_pixel`]).
+    pub fn add_pixels(&mut self, pixels: &[Color]) {
+        for (s, c) in self.sum.iter_mut().zip(pixels) {
             s.iter_mut().zip(c.to_array()).for_each(|(s, v)| *s += v as f64);
         }
         self.passes += 1;
+    }
+
+    /// The average of the passes added at pixel `index`.
+    pub fn at(&self, index: usize) -> Color {
+        to_color(self.sum[index].map(|v| v / self.passes.max(1) as f64))
     }
 
     /// The average at pixel `index` were `color` the next pass's colour there: what is shown of a pass being
@@ -238,9 +248,8 @@ impl PassAverage {
 
     /// Writes the average of the passes added into `frame`'s pixels.
     pub fn write_into(&self, frame: &mut Frame) {
-        let n = self.passes.max(1) as f64;
-        for (pixel, s) in frame.pixels.iter_mut().zip(&self.sum) {
-            *pixel = to_color(s.map(|v| v / n));
+        for (index, pixel) in frame.pixels.iter_mut().enumerate() {
+            *pixel = self.at(index);
         }
     }
 }
@@ -469,7 +478,8 @@ pub struct PixelTrace {
 }
 
 /// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would (the course's adaptive
-/// anti-aliasing included: a pixel it refines gets its five samples), counting its rays and telling
+/// anti-aliasing included: a pixel it refines gets its five samples; a progressive caustic's pixel once per
+/// pass, each with the pass's own photon map, averaged as the passes' pictures are), counting its rays and telling
 /// `observer`, if given, what the recursion does (see [`crate::lesson::observer`]; `--trace-pixel` records the
 /// ray tree so).
 pub fn render_pixel(
@@ -486,8 +496,44 @@ pub fn render_pixel(
             format!("is outside the {}x{} picture", settings.width, settings.height),
         ));
     }
-    let job = RenderJob::for_scene(scene, settings)?;
-    Ok(job.render_pixels(y, x..x + 1, observer.map(|o| o as &mut dyn Observer)).remove(0))
+    match &scene.photon_map {
+        Some(first) if settings.photon_passes > 1 => photon_passes_pixel(scene, first, settings, (x, y), observer),
+        _ => {
+            let job = RenderJob::for_scene(scene, settings)?;
+            Ok(job.render_pixels(y, x..x + 1, observer.map(|o| o as &mut dyn Observer)).remove(0))
+        }
+    }
+}
+
+/// [`render_pixel`] of a progressive caustic whose first pass's map is `first`: the pixel of each pass, with
+/// the pass's own photon map and seed ([`photon_pass`]), averaged as [`render_photon_passes`] averages the
+/// passes' pictures; `observer` is told where each pass begins.
+fn photon_passes_pixel(
+    scene: &Scene,
+    first: &Arc<PhotonMap>,
+    settings: &RenderSettings,
+    (x, y): (u32, u32),
+    mut observer: Option<&mut dyn Observer>,
+) -> Result<PixelTrace> {
+    let passes = settings.photon_passes;
+    first.check_passes(passes)?;
+    let (mut average, mut counters) = (PassAverage::new(1), Counters::default());
+    for pass in 1..=passes {
+        if let Some(o) = observer.as_deref_mut() {
+            o.photon_pass_begins(pass, passes);
+        }
+        let watching = observer.as_deref_mut().map(|o| o as &mut dyn Observer);
+        let traced = if pass == 1 {
+            RenderJob::for_scene(scene, settings)?.render_pixels(y, x..x + 1, watching).remove(0)
+        } else {
+            let (pass_scene, pass_settings) =
+                on_workers(settings.threads, |_| photon_pass(scene, first, settings, pass))??;
+            RenderJob::for_scene(&pass_scene, &pass_settings)?.render_pixels(y, x..x + 1, watching).remove(0)
+        };
+        average.add_pixels(&[traced.color]);
+        counters.add(&traced.counters);
+    }
+    Ok(PixelTrace { color: average.at(0), counters })
 }
 
 /// Renders the pixels `xs` of row `y` as [`render`] would (adaptive anti-aliasing included), each with its

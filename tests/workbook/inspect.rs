@@ -40,8 +40,10 @@ fn check_scene_trees(scene: &Scene, settings: &RenderSettings, pixels: &[(u32, u
         let traced = ray_tree::trace(scene, settings, PixelPos { x, y }).unwrap();
         assert_eq!(traced.color, frame.get(x, y), "{what} pixel ({x}, {y}) alone differs from the frame's");
         let tree = traced.tree;
-        // One camera ray per sample; a pixel that adaptive anti-aliasing refines has five.
-        let samples = if settings.adaptive_aa { vec![1, 5] } else { vec![settings.spp as usize] };
+        // One camera ray per sample (of each pass of a progressive caustic); a pixel that adaptive
+        // anti-aliasing refines has five.
+        let passes = tree.photon_passes.len().max(1);
+        let samples = if settings.adaptive_aa { vec![1, 5] } else { vec![settings.spp as usize * passes] };
         assert!(samples.contains(&tree.roots.len()), "{what} ({x}, {y}): {} camera rays", tree.roots.len());
         let mut mean = Color::BLACK;
         for &root in &tree.roots {
@@ -704,6 +706,49 @@ fn the_tree_prints_the_photon_estimate() {
         assert!(text.contains(&format!("the disc of radius {radius:.4}")), "{text}");
         let nearest = photons.iter().min_by(|a, b| a.distance.total_cmp(&b.distance)).unwrap();
         assert!(text.contains(&format!("photon {} at distance {:.4}", nearest.index, nearest.distance)), "{text}");
+    }
+}
+
+/// The ray tree of a progressive caustic's pixel is the picture's: the pixel rendered once per pass, each
+/// with its pass's photon map, the passes' colours averaged as the render averages their pictures; the tree
+/// says which pass each camera ray is of, and each later pass's estimate gathers within its own radius r_i.
+#[test]
+fn the_ray_tree_of_a_progressive_caustic_shows_its_passes() {
+    let args = ["--width", "80", "--height", "60", "--photons", "20000", "--photon-passes", "3"];
+    let cli = common::parse::<photon_map::Options>(&args);
+    let (scene, settings) = cli.prepare().unwrap();
+    let pixels: Vec<(u32, u32)> = (0..8).map(|i| (10 * i, 50)).chain([CAUSTIC_PIXEL]).collect();
+    let trees = check_scene_trees(&scene, &settings, &pixels, &format!("{args:?}"));
+    let spp = settings.spp as usize;
+    for tree in &trees {
+        assert_eq!(tree.photon_passes, vec![0, spp, 2 * spp], "each pass's camera rays, one pass after another");
+    }
+    // At the caustic pixel, each pass's estimate: pass 1's k nearest, every later pass's photons within r_i.
+    let tree = trees.last().unwrap();
+    let estimates: Vec<Option<(u32, u32)>> = tree
+        .rays
+        .iter()
+        .flat_map(|r| &r.notes)
+        .filter(|note| matches!(note.what, NoteKind::Topic(Topic::Photons { .. })))
+        .map(|note| note.photon_pass)
+        .collect();
+    for pass in 1..=3 {
+        assert!(estimates.contains(&Some((pass, 3))), "no photon estimate of pass {pass}: {estimates:?}");
+    }
+    let traced = ray_tree::trace(&scene, &settings, PixelPos { x: CAUSTIC_PIXEL.0, y: CAUSTIC_PIXEL.1 }).unwrap();
+    let (x, y) = CAUSTIC_PIXEL;
+    let text = ray_tree::describe("photon_map", PixelPos { x, y }, &traced, 2 * spp, TraceFormat::Text).unwrap();
+    assert!(text.contains("the mean of 3 passes of a progressive caustic"), "{text}");
+    assert!(text.contains("of photon pass 3 of 3"), "{text}");
+    assert!(text.contains("photon estimate, photon pass 3 of 3: every photon within r_3 = "), "{text}");
+    // Every pixel of a small render, bit for bit.
+    let args = ["--width", "16", "--height", "12", "--photons", "20000", "--photon-passes", "2"];
+    let (scene, settings) = common::parse::<photon_map::Options>(&args).prepare().unwrap();
+    let (frame, _) = render(&scene, &settings).unwrap();
+    for (x, y) in (0..12).flat_map(|y| (0..16).map(move |x| (x, y))) {
+        let traced = ray_tree::trace(&scene, &settings, PixelPos { x, y }).unwrap();
+        let (tree, picture) = (traced.color.to_array(), frame.get(x, y).to_array());
+        assert!(tree.map(f32::to_bits) == picture.map(f32::to_bits), "({x}, {y}): {tree:?} against {picture:?}");
     }
 }
 

@@ -23,13 +23,17 @@ pub fn trace_pixel<E: Example>(name: &str, args: &Cli<E>, pixel: PixelPos) -> Re
     let trace = ray_tree::trace(&scene, &settings, pixel)?;
     let mut text =
         ray_tree::describe(name, pixel, &trace, args.common.trace_sample as usize, args.common.trace_format)?;
-    let passes = settings.photon_passes;
-    if passes > 1 && scene.photon_map.is_some() && args.common.trace_format == TraceFormat::Text {
+    let starts = &trace.tree.photon_passes;
+    if !starts.is_empty() && args.common.trace_format == TraceFormat::Text {
+        let ends = starts.iter().skip(1).copied().chain([trace.tree.roots.len()]);
+        let ranges: Vec<String> = starts.iter().zip(ends).map(|(a, b)| format!("{a}-{}", b.max(a + 1) - 1)).collect();
+        let passes = starts.len() as u32;
         text.push_str(&format!(
-            "{name}: progressive caustic: {passes} photon passes, each with a photon map of its own; the tree above \
-             is pass 1's. Pass i >= 2 gathers every photon within r_i of the point, r_(i+1)^2 = r_i^2 (i + 2/3) / \
-             (i + 1), from r_1 = the radius of pass 1's disc there (each photon estimate above): the last pass's \
-             r_{passes} = {:.4} r_1\n",
+            "{name}: progressive caustic: {passes} photon passes, each with a photon map of its own, the pixel \
+             rendered in each; their camera rays are numbered {} (pass by pass; --trace-sample picks one). Pass \
+             i >= 2 gathers every photon within r_i of the point, r_(i+1)^2 = r_i^2 (i + 2/3) / (i + 1), from r_1 = \
+             the radius of pass 1's disc there: the last pass's r_{passes} = {:.4} r_1\n",
+            ranges.join(", "),
             radius_scale(passes)
         ));
     }

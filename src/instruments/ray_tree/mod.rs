@@ -109,6 +109,9 @@ pub struct Note {
     depth: usize,
     /// What it says.
     pub what: NoteKind,
+    /// The pass of a progressive caustic it was made in, and how many passes there are; `None` for a render
+    /// of one photon map.
+    pub photon_pass: Option<(u32, u32)>,
 }
 
 /// What a [`Note`] says.
@@ -200,8 +203,14 @@ pub struct RayTree {
     /// Every ray traced for the pixel, in the order traced; [`TermKind::Ray`] and `roots` index it.
     pub rays: Vec<RayRecord>,
     /// The camera rays: sample s of the pixel is `roots[s]` (for a dispersive scene traced in K passes,
-    /// sample s of pass k is `roots[k * spp + s]`).
+    /// sample s of pass k is `roots[k * spp + s]`; for a progressive caustic, the passes' camera rays one
+    /// pass after another, see `photon_passes`).
     pub roots: Vec<usize>,
+    /// For a progressive caustic, where each pass's camera rays begin in `roots` (pass p, from 1, at
+    /// `photon_passes[p - 1]`); empty for a render of one photon map.
+    pub photon_passes: Vec<usize>,
+    /// The pass of a progressive caustic being traced, and how many passes there are.
+    photon_pass: Option<(u32, u32)>,
     /// The rays being traced, innermost last, each with the shaders (and layers) running at its hit.
     open: Vec<(usize, Vec<Scope>)>,
     /// Which terms of each open ray already have their factor: `fixed[i]` for the ray `open[i]`.
@@ -212,6 +221,14 @@ impl RayTree {
     /// An empty tree, to be filled by the render of one pixel as its [`Observer`].
     pub fn new() -> RayTree {
         RayTree::default()
+    }
+
+    /// The pass of a progressive caustic that camera ray `sample` belongs to, and how many passes there are;
+    /// `None` for a render of one photon map.
+    pub fn photon_pass_of(&self, sample: usize) -> Option<(u32, u32)> {
+        let passes = self.photon_passes.len() as u32;
+        let pass = self.photon_passes.iter().filter(|&&first| first <= sample).count() as u32;
+        (passes > 0).then_some((pass, passes))
     }
 
     /// The labels of the layers being shaded at the innermost open ray's hit.
@@ -232,7 +249,7 @@ impl RayTree {
     /// Adds a note, labelled `layer`, to the innermost open ray.
     fn push_note(&mut self, layer: String, what: NoteKind) {
         if let Some((id, scopes)) = self.open.last() {
-            self.rays[*id].notes.push(Note { layer, depth: scopes.len(), what });
+            self.rays[*id].notes.push(Note { layer, depth: scopes.len(), what, photon_pass: self.photon_pass });
         }
     }
 
@@ -331,6 +348,11 @@ impl RayTree {
 }
 
 impl Observer for RayTree {
+    fn photon_pass_begins(&mut self, pass: u32, passes: u32) {
+        self.photon_passes.push(self.roots.len());
+        self.photon_pass = Some((pass, passes));
+    }
+
     fn ray_begins(&mut self, ray: &Ray) {
         let id = self.rays.len();
         let layer = self.layer_label();
@@ -471,7 +493,8 @@ pub enum TraceFormat {
 #[derive(Clone, Debug)]
 pub struct TracedPixel {
     /// The pixel's linear colour, as the render gives it: the mean of its camera samples' colours (for a
-    /// dispersive scene traced in passes, the passes' colour-weighted sum).
+    /// dispersive scene traced in passes, the passes' colour-weighted sum; for a progressive caustic, the
+    /// mean of its passes' colours).
     pub color: Color,
     /// The rays traced for the pixel.
     pub counters: Counters,

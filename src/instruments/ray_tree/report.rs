@@ -5,6 +5,7 @@ use crate::lesson::color::Color;
 use crate::lesson::error::{Error, Result};
 use crate::lesson::math::Vector;
 use crate::lesson::observer::LightTerm;
+use crate::lesson::photon_map::radius_scale;
 use crate::lesson::topic::Topic;
 use std::fmt::Write;
 
@@ -189,27 +190,41 @@ pub fn describe(
     };
     Ok(match format {
         TraceFormat::Json => format!(
-            "{{\"example\":{},\"pixel\":[{},{}],\"sample\":{sample},\"samples\":{},\"pixel_color\":{},\"tree\":{}}}\n",
+            "{{\"example\":{},\"pixel\":[{},{}],\"sample\":{sample},\"samples\":{},{}\"pixel_color\":{},\"tree\":{}}}\n",
             json_str(name),
             pixel.x,
             pixel.y,
             tree.roots.len(),
+            tree.photon_pass_of(sample)
+                .map_or(String::new(), |(pass, passes)| format!("\"photon_pass\":{pass},\"photon_passes\":{passes},")),
             json_vec(traced.color.to_array()),
             tree.to_json(sample)
         ),
-        TraceFormat::Text => format!(
-            "{name}: pixel ({}, {}) is {}, the mean of {} camera rays ({} rays and shadow rays in all)\n\
-             camera ray {sample} (numbered from 0) returns {}; the shares of the light found on its tree add up \
-             to {}:\n{}",
-            pixel.x,
-            pixel.y,
-            rgb(traced.color),
-            tree.roots.len(),
-            traced.counters.total(),
-            rgb(tree.rays[root].color),
-            rgb(tree.explained(root, Color::WHITE)),
-            tree.to_text(sample)
-        ),
+        TraceFormat::Text => {
+            let (mean, which) = match tree.photon_pass_of(sample) {
+                None => (format!("the mean of {} camera rays", tree.roots.len()), String::new()),
+                Some((pass, passes)) => (
+                    format!(
+                        "the mean of {passes} passes of a progressive caustic, each with a photon map of its own, \
+                         of {} camera rays in all",
+                        tree.roots.len()
+                    ),
+                    format!(", of photon pass {pass} of {passes}"),
+                ),
+            };
+            format!(
+                "{name}: pixel ({}, {}) is {}, {mean} ({} rays and shadow rays in all)\n\
+                 camera ray {sample} (numbered from 0{which}) returns {}; the shares of the light found on its tree \
+                 add up to {}:\n{}",
+                pixel.x,
+                pixel.y,
+                rgb(traced.color),
+                traced.counters.total(),
+                rgb(tree.rays[root].color),
+                rgb(tree.explained(root, Color::WHITE)),
+                tree.to_text(sample)
+            )
+        }
     })
 }
 
@@ -279,12 +294,24 @@ fn write_note(out: &mut String, pad: &str, note: &Note) {
         }
         Topic::Photons { k, radius, max_radius, photons } => {
             let counted = photons.iter().filter(|p| p.weight > 0.0).count();
-            let _ = writeln!(
-                out,
-                "{pad}{layer}photon estimate: k {k}, {} found within the largest radius {max_radius:.4}, their power \
-                 spread over the disc of radius {radius:.4}; {counted} arrived on this side and count",
-                photons.len()
-            );
+            let found = photons.len();
+            let _ = match note.photon_pass {
+                Some((pass, passes)) if pass > 1 => writeln!(
+                    out,
+                    "{pad}{layer}photon estimate, photon pass {pass} of {passes}: every photon within r_{pass} = \
+                     {radius:.4} (r_1, the first map's disc here, times {:.4}); {found} found, {counted} arrived \
+                     on this side and count",
+                    radius_scale(pass)
+                ),
+                pass => writeln!(
+                    out,
+                    "{pad}{layer}photon estimate{}: k {k}, {found} found within the largest radius {max_radius:.4}, \
+                     their power spread over the disc of radius {radius:.4}; {counted} arrived on this side and count",
+                    pass.map_or(String::new(), |(_, passes)| format!(
+                        ", photon pass 1 of {passes} (its disc is r_1, where the later passes' radii start)"
+                    ))
+                ),
+            };
             let mut nearest = photons.clone();
             nearest.sort_by(|a, b| a.distance.total_cmp(&b.distance).then(a.index.cmp(&b.index)));
             for photon in nearest {
