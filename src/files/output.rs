@@ -4,7 +4,6 @@
 
 use crate::files::error::{Error, Result};
 use crate::files::input;
-use crate::lesson::frame::Frame;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -31,19 +30,6 @@ pub fn output_format(path: &Path) -> Result<image::ImageFormat> {
         Some("exr") => Ok(image::ImageFormat::OpenExr),
         Some("hdr") => Ok(image::ImageFormat::Hdr),
         _ => refuse("the name must end in .png, .exr or .hdr"),
-    }
-}
-
-impl Frame {
-    /// Writes the frame: `.png` as 8-bit sRGB, `.exr` and `.hdr` as linear floats. The image goes to a
-    /// temporary file beside the target first and is renamed over it only when complete, so a failure never
-    /// destroys an earlier picture (see [`save_atomically`]).
-    pub fn save(&self, path: &Path) -> Result<()> {
-        let format = output_format(path)?;
-        save_atomically(path, |file| match format {
-            image::ImageFormat::Png => self.to_rgb8().write_to(file, format),
-            _ => self.to_rgb32f().write_to(file, format),
-        })
     }
 }
 

@@ -1,9 +1,11 @@
-//! The picture a render makes: a frame of linear colours, and its encodings (8-bit sRGB, linear floats). The
-//! renderer ([`crate::lesson::render`]) fills it; [`Frame::save`], which writes it to a file, is the output's
-//! ([`crate::files::output`]), not the lesson's.
+//! The picture a render makes: a frame of linear colours, and how it is written to a file (8-bit sRGB for
+//! PNG, linear floats for EXR and HDR). The renderer ([`crate::lesson::render`]) fills it.
 
+use crate::files::output::{output_format, save_atomically};
 use crate::lesson::color::{Color, to_srgb8};
+use crate::lesson::error::Result;
 use rayon::prelude::*;
+use std::path::Path;
 
 /// The most anti-aliasing samples per pixel the renderer accepts: far beyond what a picture needs (the
 /// examples use 1 to 16; a reference for an error study a few thousand), low enough that a mistyped count
@@ -49,5 +51,16 @@ impl Frame {
     pub fn to_rgb32f(&self) -> image::Rgb32FImage {
         let values = self.pixels.iter().flat_map(|c| c.to_array()).collect();
         image::Rgb32FImage::from_raw(self.width, self.height, values).expect("frame size matches its pixels")
+    }
+
+    /// Writes the frame: `.png` as 8-bit sRGB, `.exr` and `.hdr` as linear floats. The image goes to a
+    /// temporary file beside the target first and is renamed over it only when complete, so a failure never
+    /// destroys an earlier picture (see [`crate::files::output::save_atomically`]).
+    pub fn save(&self, path: &Path) -> Result<()> {
+        let format = output_format(path)?;
+        save_atomically(path, |file| match format {
+            image::ImageFormat::Png => self.to_rgb8().write_to(file, format),
+            _ => self.to_rgb32f().write_to(file, format),
+        })
     }
 }

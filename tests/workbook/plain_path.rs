@@ -497,7 +497,7 @@ const NOT_COUNTED: &[(&str, &[Part])] = &[
             ("scene.rs", &["    pub fn relative_to_camera("]),
         ],
     ),
-    ("writing the picture", &[("frame.rs", &["    pub fn to_rgb8(", "    pub fn to_rgb32f("])]),
+    ("writing the picture", &[("frame.rs", &["    pub fn save(", "    pub fn to_rgb8("])]),
     (
         "the summary line and the end-of-run report",
         &[
