@@ -110,8 +110,8 @@ pub trait Observer: Recorder {
     /// The ray being traced is finished: it brought back `color`, and was not followed for `stop`, if given.
     fn ray_ends(&mut self, _color: Color, _stop: Option<Stop>) {}
     /// A pass of a progressive caustic begins: the pixel is rendered once per pass, each with a photon map of
-    /// its own (the render setting
-    /// [`photon_passes`](crate::lesson::render::RenderSettings::photon_passes)), and the camera rays traced after this are
-    /// pass `pass`'s (from 1) of `passes`. Not told for a render of one photon map.
+    /// its own (the render setting [`photon_passes`](crate::lesson::render::RenderSettings::photon_passes)),
+    /// and the camera rays traced after this are pass `pass`'s (from 1) of `passes`. Not told for a render of
+    /// one photon map.
     fn photon_pass_begins(&mut self, _pass: u32, _passes: u32) {}
 }

@@ -479,9 +479,9 @@ pub struct PixelTrace {
 
 /// Renders pixel (x, y) of the frame `settings` describe, as [`render`] would (the course's adaptive
 /// anti-aliasing included: a pixel it refines gets its five samples; a progressive caustic's pixel once per
-/// pass, each with the pass's own photon map, averaged as the passes' pictures are), counting its rays and telling
-/// `observer`, if given, what the recursion does (see [`crate::lesson::observer`]; `--trace-pixel` records the
-/// ray tree so).
+/// pass, each with the pass's own photon map, averaged as the passes' pictures are), counting its rays and
+/// telling `observer`, if given, what the recursion does (see [`crate::lesson::observer`]; `--trace-pixel`
+/// records the ray tree so).
 pub fn render_pixel(
     scene: &Scene,
     settings: &RenderSettings,

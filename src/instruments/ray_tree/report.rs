@@ -190,7 +190,8 @@ pub fn describe(
     };
     Ok(match format {
         TraceFormat::Json => format!(
-            "{{\"example\":{},\"pixel\":[{},{}],\"sample\":{sample},\"samples\":{},{}\"pixel_color\":{},\"tree\":{}}}\n",
+            "{{\"example\":{},\"pixel\":[{},{}],\"sample\":{sample},\"samples\":{},{}\
+             \"pixel_color\":{},\"tree\":{}}}\n",
             json_str(name),
             pixel.x,
             pixel.y,
